@@ -1,0 +1,152 @@
+#include "adaptors/occt_convert.hpp"
+
+#include <TColStd_Array1OfInteger.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <TColStd_Array2OfReal.hxx>
+#include <TColgp_Array1OfPnt.hxx>
+#include <TColgp_Array1OfPnt2d.hxx>
+#include <TColgp_Array2OfPnt.hxx>
+
+#include "src/core/error.hpp"
+
+namespace cg::occt {
+namespace {
+
+// OCCT knot data (distinct values + multiplicities) of one direction. For a periodic direction only
+// one period is passed: knots U[p .. p+n-1] and the closing knot t_0 + T with the seam multiplicity.
+struct OcctKnots {
+  TColStd_Array1OfReal values;
+  TColStd_Array1OfInteger mults;
+};
+
+OcctKnots knots_to_occt(const std::vector<double>& U, int p, int num_poles, bool periodic) {
+  DistinctKnots d;
+  if (periodic) {
+    const int n = num_poles - p;
+    const std::vector<double> period(U.begin() + p, U.begin() + p + n);
+    d = distinct_knots(period);
+    d.values.push_back(U[static_cast<std::size_t>(p + n)]);
+    d.mults.push_back(d.mults.front());
+  } else {
+    d = distinct_knots(U);
+  }
+  const int k = static_cast<int>(d.values.size());
+  OcctKnots o{TColStd_Array1OfReal(1, k), TColStd_Array1OfInteger(1, k)};
+  for (int i = 0; i < k; ++i) {
+    o.values.SetValue(i + 1, d.values[static_cast<std::size_t>(i)]);
+    o.mults.SetValue(i + 1, d.mults[static_cast<std::size_t>(i)]);
+  }
+  return o;
+}
+
+// Our flat (unwrapped for periodic) knot vector from OCCT knots and multiplicities.
+std::vector<double> knots_from_occt(const TColStd_Array1OfReal& K, const TColStd_Array1OfInteger& M, int p,
+                                    bool periodic) {
+  std::vector<double> values(K.begin(), K.end());
+  std::vector<int> mults(M.begin(), M.end());
+  if (!periodic) return flat_knots(values, mults);
+  const double T = values.back() - values.front();
+  values.pop_back();
+  mults.pop_back();
+  return unwrap_periodic_knots(p, flat_knots(values, mults), T);
+}
+
+template <int Dim, class Curve, class PoleArray>
+BSplineCurve<Dim> curve_from_occt(const Curve& c) {
+  const int p = c.Degree();
+  const bool periodic = c.IsPeriodic();
+  const int n = c.NbPoles();
+  const int total = periodic ? n + p : n;
+  typename BSplineCurve<Dim>::HPoles h(Dim + 1, total);
+  const PoleArray& P = c.Poles();
+  const TColStd_Array1OfReal* W = c.Weights();
+  for (int i = 0; i < total; ++i) {
+    const int k = (i % n) + 1;
+    const double w = W ? W->Value(k) : 1.0;
+    for (int d = 0; d < Dim; ++d) h(d, i) = w * P.Value(k).Coord(d + 1);
+    h(Dim, i) = w;
+  }
+  return BSplineCurve<Dim>::from_homogeneous(p, knots_from_occt(c.Knots(), c.Multiplicities(), p, periodic),
+                                             std::move(h), periodic);
+}
+
+template <class CurveHandle, class PoleArray, class Pnt, int Dim>
+CurveHandle curve_to_occt(const BSplineCurve<Dim>& c) {
+  require(c.num_poles() > 0, "cannot convert an empty curve to OCCT");
+  const int p = c.degree();
+  const bool periodic = c.is_periodic();
+  const int n = c.num_period_poles();
+  PoleArray P(1, n);
+  TColStd_Array1OfReal W(1, n);
+  for (int i = 0; i < n; ++i) {
+    const auto q = c.pole(i);
+    Pnt pnt;
+    for (int d = 0; d < Dim; ++d) pnt.SetCoord(d + 1, q[d]);
+    P.SetValue(i + 1, pnt);
+    W.SetValue(i + 1, c.weight(i));
+  }
+  OcctKnots k = knots_to_occt(c.knots(), p, c.num_poles(), periodic);
+  if (c.is_rational()) return new typename CurveHandle::element_type(P, W, k.values, k.mults, p, periodic);
+  return new typename CurveHandle::element_type(P, k.values, k.mults, p, periodic);
+}
+
+}  // namespace
+
+Handle(Geom_BSplineCurve) to_occt(const BSplineCurve<3>& c) {
+  return curve_to_occt<Handle(Geom_BSplineCurve), TColgp_Array1OfPnt, gp_Pnt>(c);
+}
+Handle(Geom2d_BSplineCurve) to_occt(const BSplineCurve<2>& c) {
+  return curve_to_occt<Handle(Geom2d_BSplineCurve), TColgp_Array1OfPnt2d, gp_Pnt2d>(c);
+}
+BSplineCurve<3> from_occt(const Geom_BSplineCurve& c) { return curve_from_occt<3, Geom_BSplineCurve, TColgp_Array1OfPnt>(c); }
+BSplineCurve<2> from_occt(const Geom2d_BSplineCurve& c) {
+  return curve_from_occt<2, Geom2d_BSplineCurve, TColgp_Array1OfPnt2d>(c);
+}
+
+Handle(Geom_BSplineSurface) to_occt(const BSplineSurface<3>& s) {
+  require(s.num_poles_u() > 0, "cannot convert an empty surface to OCCT");
+  const int nu = s.is_periodic_u() ? s.num_poles_u() - s.degree_u() : s.num_poles_u();
+  const int nv = s.is_periodic_v() ? s.num_poles_v() - s.degree_v() : s.num_poles_v();
+  TColgp_Array2OfPnt P(1, nu, 1, nv);
+  TColStd_Array2OfReal W(1, nu, 1, nv);
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < nv; ++j) {
+      const auto q = s.pole(i, j);
+      P.SetValue(i + 1, j + 1, gp_Pnt(q.x(), q.y(), q.z()));
+      W.SetValue(i + 1, j + 1, s.weight(i, j));
+    }
+  OcctKnots ku = knots_to_occt(s.knots_u(), s.degree_u(), s.num_poles_u(), s.is_periodic_u());
+  OcctKnots kv = knots_to_occt(s.knots_v(), s.degree_v(), s.num_poles_v(), s.is_periodic_v());
+  if (s.is_rational())
+    return new Geom_BSplineSurface(P, W, ku.values, kv.values, ku.mults, kv.mults, s.degree_u(), s.degree_v(),
+                                   s.is_periodic_u(), s.is_periodic_v());
+  return new Geom_BSplineSurface(P, ku.values, kv.values, ku.mults, kv.mults, s.degree_u(), s.degree_v(),
+                                 s.is_periodic_u(), s.is_periodic_v());
+}
+
+BSplineSurface<3> from_occt(const Geom_BSplineSurface& s) {
+  const int pu = s.UDegree(), pv = s.VDegree();
+  const bool peru = s.IsUPeriodic(), perv = s.IsVPeriodic();
+  const int nu = s.NbUPoles(), nv = s.NbVPoles();
+  const int tu = peru ? nu + pu : nu, tv = perv ? nv + pv : nv;
+  const TColgp_Array2OfPnt& P = s.Poles();
+  const TColStd_Array2OfReal* W = s.Weights();
+  BSplineSurface<3>::HPoles h(4, static_cast<Eigen::Index>(tu) * tv);
+  for (int i = 0; i < tu; ++i)
+    for (int j = 0; j < tv; ++j) {
+      const int a = (i % nu) + 1, b = (j % nv) + 1;
+      const double w = W ? W->Value(a, b) : 1.0;
+      const gp_Pnt& q = P.Value(a, b);
+      h.col(i * tv + j) << w * q.X(), w * q.Y(), w * q.Z(), w;
+    }
+  TColStd_Array1OfReal UK(1, s.NbUKnots()), VK(1, s.NbVKnots());
+  TColStd_Array1OfInteger UM(1, s.NbUKnots()), VM(1, s.NbVKnots());
+  s.UKnots(UK);
+  s.VKnots(VK);
+  s.UMultiplicities(UM);
+  s.VMultiplicities(VM);
+  return BSplineSurface<3>::from_homogeneous(pu, pv, knots_from_occt(UK, UM, pu, peru),
+                                             knots_from_occt(VK, VM, pv, perv), tu, tv, std::move(h), peru, perv);
+}
+
+}  // namespace cg::occt

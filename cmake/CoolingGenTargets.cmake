@@ -1,0 +1,38 @@
+# Libraries, one per pipeline stage. Sources are globbed per folder so that adding a file needs no
+# CMake edit; CONFIGURE_DEPENDS re-globs on every build.
+include(GNUInstallDirs)
+
+function(cg_add_library name)
+  cmake_parse_arguments(A "" "" "DIRS;DEPS" ${ARGN})
+  set(srcs)
+  foreach(d IN LISTS A_DIRS)
+    file(GLOB_RECURSE s CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/${d}/*.cpp)
+    list(APPEND srcs ${s})
+  endforeach()
+  list(FILTER srcs EXCLUDE REGEX "/src/cli/")
+  add_library(${name} STATIC ${srcs})
+  add_library(coolinggen::${name} ALIAS ${name})
+  target_include_directories(${name} PUBLIC
+    $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}>
+    $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}/coolinggen>)
+  target_link_libraries(${name} PUBLIC ${A_DEPS})
+endfunction()
+
+# NURBS kernel and geometric algorithms: Eigen only, no OCCT.
+cg_add_library(coolinggen_kernel DIRS src/core src/modify src/analyze src/fit src/algo DEPS Eigen3::Eigen)
+# Exact conversion to and from OCCT geometry.
+cg_add_library(coolinggen_adaptors DIRS adaptors DEPS coolinggen_kernel coolinggen_occt_deps)
+
+install(TARGETS coolinggen_kernel coolinggen_adaptors coolinggen_occt_deps
+  EXPORT CoolingGenTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
+foreach(d src adaptors features export)
+  install(DIRECTORY ${d}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/coolinggen/${d}
+    FILES_MATCHING PATTERN "*.hpp")
+endforeach()
+install(EXPORT CoolingGenTargets NAMESPACE coolinggen:: DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/CoolingGen)
+include(CMakePackageConfigHelpers)
+configure_package_config_file(cmake/CoolingGenConfig.cmake.in
+  ${CMAKE_CURRENT_BINARY_DIR}/CoolingGenConfig.cmake INSTALL_DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/CoolingGen)
+write_basic_package_version_file(${CMAKE_CURRENT_BINARY_DIR}/CoolingGenConfigVersion.cmake COMPATIBILITY SameMinorVersion)
+install(FILES ${CMAKE_CURRENT_BINARY_DIR}/CoolingGenConfig.cmake ${CMAKE_CURRENT_BINARY_DIR}/CoolingGenConfigVersion.cmake
+  DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/CoolingGen)

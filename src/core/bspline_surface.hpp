@@ -1,0 +1,72 @@
+#pragma once
+// Tensor-product B-spline / NURBS surfaces, poles stored homogeneous (w*P, w).
+// Pole (i, j), i along u (0..nu-1), j along v (0..nv-1), is column i * nv + j of homogeneous_poles().
+// Periodic directions are stored unwrapped, as for curves (see bspline_curve.hpp).
+#include <Eigen/Core>
+#include <vector>
+
+#include "src/core/knots.hpp"
+
+namespace cg {
+
+template <int Dim>
+class BSplineSurface {
+  static_assert(Dim >= 1 && Dim <= 3, "BSplineSurface is instantiated for dimensions 1, 2, 3");
+
+ public:
+  using Point = Eigen::Matrix<double, Dim, 1>;
+  using HPoint = Eigen::Matrix<double, Dim + 1, 1>;
+  using HPoles = Eigen::Matrix<double, Dim + 1, Eigen::Dynamic>;
+
+  BSplineSurface() = default;
+  /// poles[i][j]: nu rows of nv poles; weights likewise (empty = polynomial).
+  BSplineSurface(int degree_u, int degree_v, std::vector<double> knots_u, std::vector<double> knots_v,
+                 const std::vector<std::vector<Point>>& poles, const std::vector<std::vector<double>>& weights = {});
+  /// From homogeneous poles (nu * nv columns, index i * nv + j); periodic directions must be unwrapped.
+  static BSplineSurface from_homogeneous(int degree_u, int degree_v, std::vector<double> knots_u,
+                                         std::vector<double> knots_v, int nu, int nv, HPoles hpoles,
+                                         bool periodic_u = false, bool periodic_v = false);
+
+  int degree_u() const { return pu_; }
+  int degree_v() const { return pv_; }
+  const std::vector<double>& knots_u() const { return U_; }
+  const std::vector<double>& knots_v() const { return V_; }
+  int num_poles_u() const { return nu_; }
+  int num_poles_v() const { return nv_; }
+  const HPoles& homogeneous_poles() const { return hpoles_; }
+  HPoint homogeneous_pole(int i, int j) const { return hpoles_.col(i * nv_ + j); }
+  Point pole(int i, int j) const { return hpoles_.col(i * nv_ + j).template head<Dim>() / weight(i, j); }
+  double weight(int i, int j) const { return hpoles_(Dim, i * nv_ + j); }
+  bool is_rational() const { return rational_; }
+  bool is_periodic_u() const { return periodic_u_; }
+  bool is_periodic_v() const { return periodic_v_; }
+  double first_u() const { return U_[static_cast<std::size_t>(pu_)]; }
+  double last_u() const { return U_[static_cast<std::size_t>(nu_)]; }
+  double first_v() const { return V_[static_cast<std::size_t>(pv_)]; }
+  double last_v() const { return V_[static_cast<std::size_t>(nv_)]; }
+
+  /// Maps (u, v) into the domain (wrapping periodic directions); throws when outside by more than 1e-12.
+  void check_params(double& u, double& v) const;
+
+  Point point(double u, double v) const;
+  /// Mixed partial derivatives S^(k,l), 0 <= k + l <= order, into out[k * (order + 1) + l]
+  /// ((order+1)^2 entries; entries with k + l > order are set to zero). The NURBS Book A3.6 + A4.4.
+  void derivatives(double u, double v, int order, Point* out) const;
+  /// Unit normal S_u x S_v / |S_u x S_v| (3D only).
+  Point normal(double u, double v) const;
+
+ private:
+  void init(int pu, int pv, std::vector<double> U, std::vector<double> V, int nu, int nv, HPoles h);
+  int pu_ = 0, pv_ = 0, nu_ = 0, nv_ = 0;
+  std::vector<double> U_, V_;
+  HPoles hpoles_;
+  bool rational_ = false, periodic_u_ = false, periodic_v_ = false;
+};
+
+using Surface3 = BSplineSurface<3>;
+
+extern template class BSplineSurface<1>;
+extern template class BSplineSurface<2>;
+extern template class BSplineSurface<3>;
+
+}  // namespace cg

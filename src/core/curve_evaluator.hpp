@@ -1,0 +1,60 @@
+#pragma once
+// Batched curve evaluation with a per-span cache (the idea of SISL's span hint and OCCT's
+// BSplCLib_Cache): each knot span is converted once to a polynomial in the local parameter
+// t = (u - mid) / half in [-1, 1] (Taylor coefficients of the homogeneous curve at the span
+// midpoint), then every point costs one Horner pass. Centring halves the coefficient growth of
+// an expansion at the span start, which keeps the result within a few ulps of de Boor.
+//
+// One evaluator per thread (the cache is mutable); the curve must outlive the evaluator.
+#include <Eigen/Core>
+#include <cstddef>
+#include <vector>
+
+#include "src/core/bspline_curve.hpp"
+
+namespace cg {
+
+template <int Dim>
+class CurveEvaluator {
+ public:
+  using Point = typename BSplineCurve<Dim>::Point;
+  using HPoint = typename BSplineCurve<Dim>::HPoint;
+
+  explicit CurveEvaluator(const BSplineCurve<Dim>& curve);
+
+  Point point(double u);
+  void d1(double u, Point& P, Point& D1);
+  void d2(double u, Point& P, Point& D1, Point& D2);
+
+  /// Batched forms: parameters in any order; sorted parameters reuse the span without a search.
+  void points(const double* u, std::size_t n, Point* P);
+  void points_d1(const double* u, std::size_t n, Point* P, Point* D1);
+  void points_d2(const double* u, std::size_t n, Point* P, Point* D1, Point* D2);
+  std::vector<Point> points(const std::vector<double>& u);
+
+  const BSplineCurve<Dim>& curve() const { return *curve_; }
+
+ private:
+  struct Local {
+    const double* coeffs;  // (p+1) homogeneous coefficients, lowest order first
+    double t;              // local parameter in [-1, 1]
+    double scale;          // dt/du
+  };
+  Local locate(double u);
+  void build_span(int span);
+
+  const BSplineCurve<Dim>* curve_;
+  int p_, n_;
+  bool rational_, periodic_;
+  double first_, last_, eps_;
+  std::vector<double> coeffs_;  // per span (span - p): (p+1) x (Dim+1)
+  std::vector<unsigned char> built_;
+  int span_ = -1;
+  double span_lo_ = 0, span_hi_ = -1, mid_ = 0, scale_ = 0;
+};
+
+extern template class CurveEvaluator<1>;
+extern template class CurveEvaluator<2>;
+extern template class CurveEvaluator<3>;
+
+}  // namespace cg

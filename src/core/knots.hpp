@@ -1,0 +1,42 @@
+#pragma once
+// Knot vectors: validation, span search, multiplicities, distinct-knot form.
+// A knot vector is always stored in full ("flat"), with its end knots: m + 1 = n + p + 2 values for
+// n + 1 poles of degree p (The NURBS Book, eq. 2.3), so no convention about missing end knots exists.
+#include <vector>
+
+namespace cg {
+
+/// Largest supported degree (as in OCCT). Fixed so evaluation can use stack buffers.
+constexpr int kMaxDegree = 25;
+
+/// Checks degree in [1, kMaxDegree], knots.size() == num_poles + degree + 1, non-decreasing knots,
+/// interior multiplicities <= degree (end multiplicities <= degree + 1) and a non-empty domain.
+/// Throws InvalidGeometry naming the problem.
+void validate_knots(const std::vector<double>& knots, int degree, int num_poles);
+
+/// Span index i with U[i] <= u < U[i+1], clamped to [p, n] (The NURBS Book A2.1); n = num_poles - 1.
+/// u at or beyond the domain ends maps to the first/last non-empty span.
+int find_span(const double* U, int n, int p, double u);
+
+/// As find_span, but first tries `hint` and its right neighbour (O(1) for sorted parameters).
+int find_span_hint(const double* U, int n, int p, double u, int hint);
+
+/// Number of knots equal to u within `tol`.
+int knot_multiplicity(const std::vector<double>& U, double u, double tol = 0.0);
+
+/// Distinct knot values and their multiplicities (OCCT's representation).
+struct DistinctKnots {
+  std::vector<double> values;
+  std::vector<int> mults;
+};
+DistinctKnots distinct_knots(const std::vector<double>& U, double tol = 0.0);
+std::vector<double> flat_knots(const std::vector<double>& values, const std::vector<int>& mults);
+
+/// Unwrapped knots of a periodic B-spline of degree p: from one period of flat knots
+/// t_0 <= ... <= t_{n-1} < t_0 + T, returns U[p + j] = t_{j mod n} + floor(j / n) * T, j = -p .. n + p.
+std::vector<double> unwrap_periodic_knots(int p, const std::vector<double>& period_knots, double period);
+
+/// Clamped knot vector on [a, b] with uniformly spaced interior knots for num_poles poles.
+std::vector<double> uniform_clamped_knots(int degree, int num_poles, double a = 0.0, double b = 1.0);
+
+}  // namespace cg
