@@ -10,6 +10,10 @@ function(cg_add_library name)
     list(APPEND srcs ${s})
   endforeach()
   list(FILTER srcs EXCLUDE REGEX "/src/cli/")
+  if(NOT srcs)
+    # Stage not written yet: an empty archive keeps the link graph stable.
+    set(srcs ${PROJECT_SOURCE_DIR}/cmake/empty.cpp)
+  endif()
   add_library(${name} STATIC ${srcs})
   add_library(coolinggen::${name} ALIAS ${name})
   target_include_directories(${name} PUBLIC
@@ -23,7 +27,26 @@ cg_add_library(coolinggen_kernel DIRS src/core src/modify src/analyze src/fit sr
 # Exact conversion to and from OCCT geometry.
 cg_add_library(coolinggen_adaptors DIRS adaptors DEPS coolinggen_kernel coolinggen_occt_deps)
 
-install(TARGETS coolinggen_kernel coolinggen_adaptors coolinggen_occt_deps
+# Blade model: meridional net, sections, blade surface, blade-relative coordinates (no OCCT).
+cg_add_library(coolinggen_model DIRS src/blade DEPS coolinggen_kernel)
+# B-rep solids, cooling features and export (OCCT).
+cg_add_library(coolinggen_brep DIRS src/brep features export DEPS coolinggen_model coolinggen_adaptors)
+# Configuration file (JSON) -> model.
+cg_add_library(coolinggen_config DIRS src/config DEPS coolinggen_brep nlohmann_json::nlohmann_json)
+
+add_library(coolinggen INTERFACE)
+add_library(coolinggen::coolinggen ALIAS coolinggen)
+target_link_libraries(coolinggen INTERFACE coolinggen_config coolinggen_brep coolinggen_model coolinggen_adaptors coolinggen_kernel)
+
+file(GLOB cli_srcs CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/cli/*.cpp)
+if(cli_srcs)
+  add_executable(coolinggen_cli ${cli_srcs})
+  set_target_properties(coolinggen_cli PROPERTIES OUTPUT_NAME coolinggen RUNTIME_OUTPUT_DIRECTORY ${PROJECT_BINARY_DIR})
+  target_link_libraries(coolinggen_cli PRIVATE coolinggen CLI11::CLI11)
+  install(TARGETS coolinggen_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+endif()
+
+install(TARGETS coolinggen coolinggen_config coolinggen_brep coolinggen_model coolinggen_kernel coolinggen_adaptors coolinggen_occt_deps
   EXPORT CoolingGenTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 foreach(d src adaptors features export)
   install(DIRECTORY ${d}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/coolinggen/${d}
