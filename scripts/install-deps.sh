@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# Installs CoolingGen's build dependencies from Debian's packages (bookworm). Idempotent: does nothing
+# when every package is already installed. Run as root or with sudo available.
+set -euo pipefail
+packages=(
+  build-essential cmake ninja-build ccache pkg-config
+  libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
+  libocct-data-exchange-dev libocct-visualization-dev libocct-ocaf-dev
+  libtbb-dev libeigen3-dev libboost-test-dev nlohmann-json3-dev libcli11-dev
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  exit 0
+fi
+echo "Installing: ${missing[*]}"
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+$SUDO apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"

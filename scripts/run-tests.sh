@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# Installs dependencies, builds everything (Release), runs the whole test suite, a short benchmark smoke
+# run, and the kernel and algorithm tests again under AddressSanitizer + UndefinedBehaviorSanitizer.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/install-deps.sh
+jobs=$(nproc)
+
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build build -j"$jobs"
+(cd build && ctest --output-on-failure -j"$jobs")
+
+for b in build/bench/bench_*; do
+  if [ -f "$b" ] && [ -x "$b" ]; then "$b" --quick; fi
+done
+
+cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCOOLINGGEN_SANITIZE=ON \
+  -DCOOLINGGEN_BUILD_BENCH=OFF >/dev/null
+kernel_tests=$(cd build-asan && ctest -N -L 'kernel|algo' | sed -n 's/^ *Test *#[0-9]*: //p')
+cmake --build build-asan -j"$jobs" --target $kernel_tests
+(cd build-asan && ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1 \
+  ctest --output-on-failure -j"$jobs" -L 'kernel|algo')
