@@ -1,0 +1,106 @@
+#pragma once
+// The outer blade surface: sections placed on the flow path and skinned into one B-spline surface,
+// periodic in u (chordwise) and built past hub and casing (over-build) so the solid builder can trim it
+// with the flow-path end surfaces.
+//
+// Surface parametrisation (relied on by blade_coordinates.hpp and the cooling features):
+//  - v = span fraction (0 hub, 1 casing), domain [-overbuild, 1 + overbuild];
+//  - u periodic with period 1: u = 0 is the LE, u in [0, u_te] the suction side, u = u_te the TE,
+//    u in [u_te, 1] the pressure side. Every section is sampled at the same chordwise coordinates
+//    (SectionProfile::param_at_chordwise, clustered at LE and TE) and interpolated in 3D at the same u,
+//    so all sections share one knot vector; the columns are then interpolated in v through the section
+//    spans. The surface passes exactly through the sampled section points.
+//  - straight vane: 3D point (a, b, z) with z = span fraction * span;
+//  - meridional: (x, r cos theta, r sin theta), x axial (see meridional_net.hpp).
+//
+// Proposed JSON form (parsed by src/config into these structs; see data/examples/*.json):
+//   "blade": { "flow_path": { "type": "straight", "span": 144.93 }
+//                           | { "type": "meridional", "hub": [[x, r], ...], "casing": [...],
+//                               "streamlines": [{"span": 0.5, "points": [[x, r], ...]}],
+//                               "leading_edge": [[x, r], ...], "trailing_edge": [[x, r], ...] },
+//              "sections": [ { "span": 0.0, "theta_deg": 0, "offset": [0, 0], "rotation_deg": 0, "scale": 1,
+//                              "points": {"file": "c3x/profile_table3_cm.csv", "unit": "cm"} }
+//                          | { "span": 1.0, "parametric": { "chord": 40, "stagger_deg": -40, ... } } ],
+//              "options": { "overbuild": 0.05, "chordwise_samples": 121, "stacking": "centroid" } }
+#include <Eigen/Core>
+#include <optional>
+#include <variant>
+#include <vector>
+
+#include "src/blade/meridional_net.hpp"
+#include "src/blade/section.hpp"
+#include "src/core/bspline_curve.hpp"
+#include "src/core/bspline_surface.hpp"
+
+namespace cg::blade {
+
+/// Straight (prismatic-type) vane between the planes z = 0 (hub) and z = span (casing), mm.
+struct StraightFlowPath {
+  double span = 0;
+};
+
+/// Flow path given by a meridional net; sections are placed on its stream surfaces.
+struct MeridionalFlowPath {
+  MeridionalNetDefinition net;
+};
+
+/// The point of a section used as pivot for rotation/scale and, on a meridional flow path, put at theta.
+enum class StackingPoint { LeadingEdge, Centroid, TrailingEdge };
+
+/// Placement of one section.
+struct SectionPlacement {
+  double span = 0;            // span fraction, [0, 1]; sections strictly increasing in span
+  double rotation_deg = 0;    // rotation in the section frame about the stacking point (counter-clockwise)
+  double scale = 1;           // uniform scale about the stacking point, > 0 (straight vane only;
+                              // on a meridional path the LE/TE lines fix the scale when both are given)
+  Eigen::Vector2d offset = Eigen::Vector2d::Zero();  // mm, added in the section frame (a, b)
+  double theta_deg = 0;       // meridional: circumferential angle of the stacking point
+};
+
+struct BladeSectionDefinition {
+  std::variant<PointSectionDefinition, ParametricSectionDefinition> shape;
+  SectionPlacement placement;
+};
+
+struct BladeOptions {
+  double overbuild = 0.05;       // fraction of span added beyond hub and casing, [0, 0.5]
+  int chordwise_samples = 97;    // samples per side (suction, pressure) per section, [8, 2000]
+  StackingPoint stacking = StackingPoint::Centroid;
+};
+
+struct BladeDefinition {
+  std::variant<StraightFlowPath, MeridionalFlowPath> flow_path;
+  /// >= 1 sections; a single section is used at hub and casing.
+  std::vector<BladeSectionDefinition> sections;
+  BladeOptions options;
+};
+
+/// The flow-path end surfaces for the solid builder.
+struct FlowPathTrim {
+  bool straight = true;
+  /// Straight vane: the planes z = hub_z and z = casing_z (normal +z).
+  double hub_z = 0, casing_z = 0;
+  /// Meridional: hub and casing contours in (x, r), to be revolved about the x axis.
+  BSplineCurve<2> hub, casing;
+};
+
+struct BladeModel {
+  BSplineSurface<3> surface;
+  double u_te = 0.5;  // u of the TE (see the parametrisation above)
+  FlowPathTrim trim;
+  double span_length = 0;                 // straight: span; meridional: mean LE-line length hub->casing
+  std::vector<double> section_spans;      // spans of the defined sections
+  std::vector<SectionProfile> profiles;   // 2D profiles after placement transforms (section frame)
+  std::vector<BSplineCurve<3>> section_curves;  // 3D section curves (the iso-v curves at section_spans)
+  std::optional<MeridionalNet> net;
+  BladeOptions options;
+};
+
+/// Builds the blade. Throws InvalidGeometry for invalid definitions (naming the section / quantity).
+BladeModel build_blade(const BladeDefinition& def);
+
+/// Chordwise coordinate c in [-1, 1] (see SectionProfile::param_at_chordwise) <-> surface u in [0, 1).
+double surface_u_at_chordwise(double c, double u_te);
+double chordwise_at_surface_u(double u, double u_te);
+
+}  // namespace cg::blade

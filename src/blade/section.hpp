@@ -1,0 +1,111 @@
+#pragma once
+// Blade sections (profiles) in their own 2D frame (a, b), mm: from a point list or from camber line +
+// thickness. Every section becomes a closed, periodic cubic NURBS oriented so that it runs from the leading
+// edge (LE) over the suction side to the trailing edge (TE) and back over the pressure side.
+//
+// How a section's (a, b) frame is placed:
+//  - straight vane: (a, b) = (x, y) and the section lies in the plane z = span fraction * span;
+//  - meridional blade: a runs along the streamline, b circumferentially, both scaled by a reference
+//    radius r_ref (radius of the streamline at the section's LE): m' = m'_LE + (a - a_LE) / r_ref,
+//    theta = (b - b_stack) / r_ref + theta_stack. On a cylinder (r = r_ref) this is an exact unrolling.
+//    See blade_surface.hpp for the scaling to the LE/TE lines.
+#include <Eigen/Core>
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include "src/core/bspline_curve.hpp"
+
+namespace cg::blade {
+
+/// Length units accepted for section point files; everything is converted to mm.
+enum class LengthUnit { Millimetre, Centimetre, Metre, Inch };
+/// Factor to mm.
+double millimetres_per(LengthUnit unit);
+/// "mm", "cm", "m", "in" (case-insensitive); throws InvalidGeometry otherwise.
+LengthUnit parse_length_unit(const std::string& name);
+
+/// Reads section points from a CSV ("x,y" or with a header naming x.. and y.. columns, e.g.
+/// "point,x_cm,y_cm,side") or from the "x y" .dat layout (whitespace separated; a leading name line is
+/// skipped). Lines starting with '#' are comments. A last point repeating the first is dropped. Returns mm.
+/// Throws InvalidGeometry (naming the file and line) for unreadable lines or < 4 points.
+std::vector<Eigen::Vector2d> read_section_points(const std::string& path, LengthUnit unit);
+std::vector<Eigen::Vector2d> parse_section_points(std::istream& in, LengthUnit unit, const std::string& source_name);
+
+/// Which side of a point section is the suction side.
+enum class SuctionSide {
+  Longer,            // the longer side between LE and TE (true for turbine blades)
+  CounterClockwise,  // the side reached by going counter-clockwise from the LE
+  Clockwise,
+};
+
+/// A section given by points around the profile (closed loop, any start, either orientation).
+struct PointSectionDefinition {
+  std::vector<Eigen::Vector2d> points;  // mm; if empty, read from `file` in `unit`
+  std::string file;
+  LengthUnit unit = LengthUnit::Millimetre;
+  /// Optional indices (into points) of the LE and TE; -1 = detect (see section_from_points).
+  int le_index = -1;
+  int te_index = -1;
+  SuctionSide suction_side = SuctionSide::Longer;
+};
+
+/// A section from camber line and thickness. Angles in degrees, measured in the section frame from the
+/// +a axis (axial/meridional direction), positive towards +b.
+/// Camber: cubic Bezier from the LE (origin) to the TE at chord * (cos stagger, sin stagger) with end
+/// tangents at the inlet/outlet metal angles (the degree-elevated parabola through the tangent-line
+/// intersection, or thirds of the chord when the tangent lines do not meet ahead of both ends).
+/// Thickness: half-thickness normal to the camber h(t) = L sqrt(t (1 - t)) q(t) on the camber parameter t,
+/// q cubic, such that the radius of curvature at the LE/TE tip is le_radius/te_radius (exact for a straight
+/// camber line), and h reaches max_thickness/2 with zero slope at the camber point whose chordwise
+/// position is max_thickness_position * chord. With t = (1 - cos phi)/2 the profile
+/// camber(t) + h(t) n(t) is one smooth function of phi in [0, 2 pi): suction side phi in [0, pi].
+struct ParametricSectionDefinition {
+  double chord = 0;                  // mm, > 0
+  double stagger_deg = 0;            // (-90, 90)
+  double inlet_angle_deg = 0;        // (-90, 90), within 90 of the stagger
+  double outlet_angle_deg = 0;       // (-90, 90), within 90 of the stagger
+  double max_thickness = 0;          // mm, > 0, < chord
+  double max_thickness_position = 0.3;  // fraction of chord, [0.1, 0.9]
+  double le_radius = 0;              // mm, > 0, < max_thickness / 2 ... (checked)
+  double te_radius = 0;              // mm, > 0, <= le_radius is not required
+  int points_per_side = 64;          // sample points per side used for the interpolation, >= 8
+};
+
+/// A closed section curve with its LE and TE.
+struct SectionProfile {
+  BSplineCurve<2> curve;  // periodic; LE -> suction side -> TE -> pressure side -> LE
+  double le_param = 0;    // curve parameter of the LE (usually first_param())
+  double te_param = 0;    // curve parameter of the TE, in (le_param, le_param + period)
+  Eigen::Vector2d le = Eigen::Vector2d::Zero();
+  Eigen::Vector2d te = Eigen::Vector2d::Zero();
+  double chord() const { return (te - le).norm(); }
+  /// Curve parameter at a chordwise coordinate c in [-1, 1]: c in [0, 1] runs from the LE over the
+  /// suction side to the TE at fraction c of that side's arc length; c in [-1, 0] likewise over the
+  /// pressure side (c = -1 is the TE again). Arc lengths by Gauss-Legendre quadrature + Newton.
+  double param_at_chordwise(double c) const;
+  double suction_length() const;
+  double pressure_length() const;
+};
+
+/// Closed periodic cubic interpolation of the points (centripetal parameters), reproducing them exactly.
+/// LE/TE detection unless given: the TE is the curve point farthest from the LE and the LE the point
+/// farthest from the TE (fixed-point iteration from the two points of the set farthest apart, each step
+/// refined by Newton on the curve); of the two ends, the one with the larger radius of curvature is the
+/// LE. Throws InvalidGeometry for < 4 points, repeated points or a self-intersecting polygon.
+SectionProfile section_from_points(const PointSectionDefinition& def);
+
+/// The parametric section. Throws InvalidGeometry for chord/thickness/radii <= 0, angles out of range,
+/// or parameters giving a non-positive or self-overlapping thickness distribution.
+SectionProfile section_from_parameters(const ParametricSectionDefinition& def);
+
+/// Enclosed (signed, counter-clockwise positive) area and centroid of the closed curve (Green's theorem,
+/// Gauss-Legendre per knot span).
+struct SectionProperties {
+  double area = 0;
+  Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
+  double perimeter = 0;
+};
+SectionProperties section_properties(const BSplineCurve<2>& closed_curve);
+
+}  // namespace cg::blade
