@@ -1,0 +1,68 @@
+#pragma once
+// Closed B-rep solid of a blade: the exact blade surface cut to the flow path by two end trims.
+//
+// Axis convention: the engine axis is the x axis; the radius of a point is r = sqrt(y^2 + z^2).
+// A meridional curve (x, r) is revolved about the x axis.
+//
+// Method (the way turbine blades are cut to the flow path): the blade surface, periodic (closed) in
+// u and over-built in v past both trims, becomes one face with a seam; each trim becomes one face
+// (a bounded plane, or the surface of revolution of the meridional curve). One general fuse
+// (BOPAlgo_Builder) splits all three faces along their intersection curves. The blade piece that
+// meets both trims is the wall; the trim pieces bounded only by intersection edges with the wall are
+// the end faces. These share their edges already, so they form a closed shell without sewing
+// tolerances. OCCT gets the exact surface (no re-lofting); the trim surfaces are exact too.
+#include <TopoDS_Face.hxx>
+#include <TopoDS_Solid.hxx>
+
+#include <Eigen/Core>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "src/core/bspline_curve.hpp"
+#include "src/core/bspline_surface.hpp"
+
+namespace cg::brep {
+
+/// A planar end trim (straight vane end wall): a point on the plane and its normal (any sign;
+/// the kept side follows from which part of the blade lies between the two trims).
+struct PlaneTrim {
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
+};
+
+/// An end trim on the surface of revolution of a meridional curve (x, r) about the x axis
+/// (hub or casing of the flow path). The curve's x range must cover the blade where it cuts it,
+/// and r > 0 is required on every pole (so r > 0 on the whole curve, by the convex hull property).
+struct RevolvedTrim {
+  BSplineCurve<2> meridional;
+};
+
+using EndTrim = std::variant<PlaneTrim, RevolvedTrim>;
+
+/// Face names carried into the STEP file.
+inline constexpr const char* kWallFaceName = "blade_wall";
+inline constexpr const char* kHubFaceName = "hub";
+inline constexpr const char* kCasingFaceName = "casing";
+
+struct NamedFace {
+  TopoDS_Face face;  ///< a face of BladeSolid::solid (same TShape)
+  std::string name;  ///< kWallFaceName, kHubFaceName or kCasingFaceName
+};
+
+struct BladeSolid {
+  TopoDS_Solid solid;
+  std::vector<NamedFace> faces;  ///< every face of `solid`, named by the surface it lies on
+  /// Warnings of the general fuse (BOPAlgo alert names). Empty in a clean run; the notes on
+  /// booleans list warnings that came with silently wrong results, so callers should report them.
+  std::vector<std::string> warnings;
+};
+
+/// Builds the blade solid between the `hub` and `casing` trims.
+/// `surface`: u periodic (chordwise, closed section), v spanwise and extending past both trims.
+/// Throws InvalidGeometry on bad input (surface not u-periodic, v-periodic, degenerate plane
+/// normal, meridional curve with r <= 0) and AlgorithmFailure when the trims do not cut the blade
+/// into one wall between them (e.g. not enough over-build, trims that cross inside the blade).
+BladeSolid build_blade_solid(const BSplineSurface<3>& surface, const EndTrim& hub, const EndTrim& casing);
+
+}  // namespace cg::brep

@@ -1,0 +1,205 @@
+#include "src/brep/verify.hpp"
+
+#include <BRepBndLib.hxx>
+#include <BRepBuilderAPI_Copy.hxx>
+#include <BRepCheck_Analyzer.hxx>
+#include <BRepGProp.hxx>
+#include <BRepMesh_IncrementalMesh.hxx>
+#include <BRep_Tool.hxx>
+#include <Bnd_Box.hxx>
+#include <GProp_GProps.hxx>
+#include <Poly_PolygonOnTriangulation.hxx>
+#include <Poly_Triangulation.hxx>
+#include <ShapeAnalysis_FreeBounds.hxx>
+#include <ShapeAnalysis_Shell.hxx>
+#include <Standard_Failure.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS.hxx>
+
+#include <cstdint>
+#include <numeric>
+#include <sstream>
+#include <unordered_map>
+
+namespace cg::brep {
+namespace {
+
+Check make_check(const char* name, bool passed, std::string message) { return Check{name, passed, std::move(message)}; }
+
+int count_of(const TopoDS_Shape& s, TopAbs_ShapeEnum type) {
+  TopTools_IndexedMapOfShape m;
+  TopExp::MapShapes(s, type, m);
+  return m.Extent();
+}
+
+struct UnionFind {
+  std::vector<int> parent;
+  explicit UnionFind(int n) : parent(static_cast<std::size_t>(n)) { std::iota(parent.begin(), parent.end(), 0); }
+  int find(int a) {
+    while (parent[static_cast<std::size_t>(a)] != a) a = parent[static_cast<std::size_t>(a)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(a)])];
+    return a;
+  }
+  void unite(int a, int b) { parent[static_cast<std::size_t>(find(a))] = find(b); }
+};
+
+// Closed-mesh test: mesh a copy with BRepMesh, join the face triangulations into one node set
+// through the edges' polygons on triangulation (node k of an edge polygon is the same point in every
+// face using that edge, including both sides of a seam), then require that every oriented triangle
+// edge (a, b) occurs exactly once and its opposite (b, a) exactly once: closed, manifold and
+// consistently oriented. Degenerated edges carry no polygon and are skipped.
+Check closed_mesh_check(const TopoDS_Shape& shape, const VerifyOptions& opt, int& triangles) {
+  const TopoDS_Shape copy = BRepBuilderAPI_Copy(shape, /*copyGeom=*/false, /*copyMesh=*/false).Shape();
+  BRepMesh_IncrementalMesh mesher(copy, opt.mesh_relative_deflection, /*isRelative=*/true, opt.mesh_angular_deflection,
+                                  /*isInParallel=*/true);
+  TopTools_IndexedMapOfShape edges;
+  TopExp::MapShapes(copy, TopAbs_EDGE, edges);
+
+  struct FaceMesh {
+    TopoDS_Face face;
+    Handle(Poly_Triangulation) tri;
+    TopLoc_Location loc;
+    int base;
+  };
+  std::vector<FaceMesh> faces;
+  int total = 0;
+  for (TopExp_Explorer e(copy, TopAbs_FACE); e.More(); e.Next()) {
+    FaceMesh fm{TopoDS::Face(e.Current()), {}, {}, total};
+    fm.tri = BRep_Tool::Triangulation(fm.face, fm.loc);
+    if (fm.tri.IsNull())
+      return make_check("closed_mesh", false, "face " + std::to_string(faces.size() + 1) + " has no triangulation");
+    total += fm.tri->NbNodes();
+    faces.push_back(fm);
+  }
+  UnionFind uf(total);
+  std::unordered_map<std::int64_t, int> edge_node;  // (edge index, position) -> first global node
+  for (const FaceMesh& fm : faces)
+    for (TopExp_Explorer e(fm.face, TopAbs_EDGE); e.More(); e.Next()) {
+      const TopoDS_Edge edge = TopoDS::Edge(e.Current());
+      if (BRep_Tool::Degenerated(edge)) continue;
+      const Handle(Poly_PolygonOnTriangulation)& poly = BRep_Tool::PolygonOnTriangulation(edge, fm.tri, fm.loc);
+      if (poly.IsNull()) return make_check("closed_mesh", false, "an edge has no polygon on its face's triangulation");
+      const std::int64_t ei = edges.FindIndex(edge);
+      for (int k = 1; k <= poly->NbNodes(); ++k) {
+        const int g = fm.base + poly->Node(k) - 1;
+        const auto [it, inserted] = edge_node.emplace(ei * 1000000 + k, g);
+        if (!inserted) uf.unite(g, it->second);
+      }
+    }
+  std::unordered_map<std::int64_t, int> directed;
+  for (const FaceMesh& fm : faces) {
+    const bool reversed = fm.face.Orientation() == TopAbs_REVERSED;
+    for (int t = 1; t <= fm.tri->NbTriangles(); ++t) {
+      int n[3];
+      fm.tri->Triangle(t).Get(n[0], n[1], n[2]);
+      if (reversed) std::swap(n[1], n[2]);
+      for (int k = 0; k < 3; ++k) {
+        const std::int64_t a = uf.find(fm.base + n[k] - 1), b = uf.find(fm.base + n[(k + 1) % 3] - 1);
+        if (a != b) ++directed[a * total + b];
+      }
+      ++triangles;
+    }
+  }
+  int unmatched = 0, repeated = 0;
+  for (const auto& [key, count] : directed) {
+    if (count != 1) ++repeated;
+    const auto opp = directed.find((key % total) * total + key / total);
+    if (opp == directed.end() || opp->second != 1) ++unmatched;
+  }
+  std::ostringstream msg;
+  msg << triangles << " triangles, " << directed.size() << " oriented edges, " << unmatched
+      << " without exactly one opposite, " << repeated << " repeated";
+  return make_check("closed_mesh", triangles > 0 && unmatched == 0 && repeated == 0, msg.str());
+}
+
+}  // namespace
+
+bool SolidCheck::all_passed() const {
+  for (const Check* c : checks())
+    if (!c->passed) return false;
+  return true;
+}
+
+std::string SolidCheck::failed_names() const {
+  std::string s;
+  for (const Check* c : checks())
+    if (!c->passed) s += (s.empty() ? "" : ", ") + c->name;
+  return s;
+}
+
+SolidCheck verify_solid(const TopoDS_Shape& shape, const VerifyOptions& options) {
+  SolidCheck r;
+  r.one_solid = make_check("one_solid", false, "not run");
+  r.brep_valid = make_check("brep_valid", false, "not run");
+  r.no_free_edges = make_check("no_free_edges", false, "not run");
+  r.oriented_shells = make_check("oriented_shells", false, "not run");
+  r.closed_mesh = make_check("closed_mesh", false, "not run");
+  r.positive_volume = make_check("positive_volume", false, "not run");
+  if (shape.IsNull()) {
+    r.one_solid.message = "the shape is null";
+    return r;
+  }
+  r.solid_count = count_of(shape, TopAbs_SOLID);
+  r.face_count = count_of(shape, TopAbs_FACE);
+  r.one_solid = make_check("one_solid", r.solid_count == 1, std::to_string(r.solid_count) + " solids");
+
+  try {
+    const BRepCheck_Analyzer analyzer(shape, /*GeomControls=*/true, /*theIsParallel=*/true);
+    const bool ok = analyzer.IsValid();
+    r.brep_valid = make_check("brep_valid", ok, ok ? "BRepCheck_Analyzer: valid" : "BRepCheck_Analyzer: invalid");
+  } catch (const Standard_Failure& e) {
+    r.brep_valid.message = std::string("BRepCheck_Analyzer raised ") + e.GetMessageString();
+  }
+
+  try {
+    ShapeAnalysis_FreeBounds fb(shape);
+    const int free_edges =
+        count_of(fb.GetClosedWires(), TopAbs_EDGE) + count_of(fb.GetOpenWires(), TopAbs_EDGE);
+    r.no_free_edges = make_check("no_free_edges", free_edges == 0, std::to_string(free_edges) + " free edges");
+  } catch (const Standard_Failure& e) {
+    r.no_free_edges.message = std::string("ShapeAnalysis_FreeBounds raised ") + e.GetMessageString();
+  }
+
+  try {
+    ShapeAnalysis_Shell sas;
+    sas.LoadShells(shape);
+    const bool bad = sas.CheckOrientedShells(shape, /*alsofree=*/false);
+    const int bad_edges = bad ? count_of(sas.BadEdges(), TopAbs_EDGE) : 0;
+    r.oriented_shells = make_check("oriented_shells", !bad && sas.NbLoaded() > 0,
+                                   std::to_string(sas.NbLoaded()) + " shells, " + std::to_string(bad_edges) +
+                                       " edges used twice in the same direction");
+  } catch (const Standard_Failure& e) {
+    r.oriented_shells.message = std::string("ShapeAnalysis_Shell raised ") + e.GetMessageString();
+  }
+
+  try {
+    r.closed_mesh = closed_mesh_check(shape, options, r.mesh_triangles);
+  } catch (const Standard_Failure& e) {
+    r.closed_mesh.message = std::string("meshing raised ") + e.GetMessageString();
+  }
+
+  try {
+    // Adaptive integration with a requested relative accuracy: the default Gauss rule was off by
+    // 1.4 % on a face trimmed by a surface of revolution. Volume at 1e-9 matched the analytic value
+    // to 1e-10; area at 1e-9 only to 1e-6 (the wall of a rational elliptic blade), at 1e-12 to
+    // 1e-8 for the same cost (~10 ms).
+    GProp_GProps vp, sp;
+    r.volume_error = BRepGProp::VolumeProperties(shape, vp, 1e-9, /*OnlyClosed=*/true);
+    r.volume = vp.Mass();
+    BRepGProp::SurfaceProperties(shape, sp, 1e-12);
+    r.area = sp.Mass();
+    std::ostringstream msg;
+    msg.precision(12);
+    msg << "volume " << r.volume << " mm^3";
+    r.positive_volume = make_check("positive_volume", r.volume > 0, msg.str());
+    Bnd_Box box;
+    BRepBndLib::AddOptimal(shape, box, /*useTriangulation=*/false, /*useShapeTolerance=*/false);
+    if (!box.IsVoid()) box.Get(r.bbox_min[0], r.bbox_min[1], r.bbox_min[2], r.bbox_max[0], r.bbox_max[1], r.bbox_max[2]);
+  } catch (const Standard_Failure& e) {
+    r.positive_volume.message = std::string("BRepGProp raised ") + e.GetMessageString();
+  }
+  return r;
+}
+
+}  // namespace cg::brep
