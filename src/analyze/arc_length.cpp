@@ -1,0 +1,194 @@
+#include "src/analyze/arc_length.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+
+#include "src/core/error.hpp"
+
+namespace cg {
+
+namespace {
+
+constexpr int kGaussPoints = 10;
+
+// Nodes and weights of the kGaussPoints-point Gauss-Legendre rule on [-1, 1] (Newton on P_n, computed
+// once to full precision rather than typed in).
+struct GaussRule {
+  std::array<double, kGaussPoints> x, w;
+  GaussRule() {
+    const int n = kGaussPoints;
+    for (int i = 0; i < n; ++i) {
+      double z = std::cos(M_PI * (i + 0.75) / (n + 0.5)), dp = 0;
+      for (int it = 0; it < 100; ++it) {
+        double p0 = 1, p1 = z;  // Legendre recurrence up to P_n
+        for (int k = 2; k <= n; ++k) {
+          const double p2 = ((2 * k - 1) * z * p1 - (k - 1) * p0) / k;
+          p0 = p1;
+          p1 = p2;
+        }
+        dp = n * (z * p1 - p0) / (z * z - 1);
+        const double dz = p1 / dp;
+        z -= dz;
+        if (std::abs(dz) < 1e-16) break;
+      }
+      x[static_cast<std::size_t>(i)] = z;
+      w[static_cast<std::size_t>(i)] = 2 / ((1 - z * z) * dp * dp);
+    }
+  }
+};
+
+const GaussRule& gauss() {
+  static const GaussRule rule;
+  return rule;
+}
+
+template <int Dim>
+double speed(const BSplineCurve<Dim>& c, double u) {
+  typename BSplineCurve<Dim>::Point d[2];
+  c.derivatives(u, 1, d);
+  return d[1].norm();
+}
+
+template <int Dim>
+double gauss_panel(const BSplineCurve<Dim>& c, double a, double b) {
+  const GaussRule& g = gauss();
+  const double h = 0.5 * (b - a), m = 0.5 * (a + b);
+  double s = 0;
+  for (int i = 0; i < kGaussPoints; ++i)
+    s += g.w[static_cast<std::size_t>(i)] * speed(c, m + h * g.x[static_cast<std::size_t>(i)]);
+  return s * h;
+}
+
+// Recursive bisection until the panel and its halves agree to tol (the halves' sum is returned, its
+// error being far below the difference for a smooth integrand).
+template <int Dim>
+double adaptive(const BSplineCurve<Dim>& c, double a, double b, double whole, double tol, int depth) {
+  const double m = 0.5 * (a + b);
+  const double left = gauss_panel(c, a, m), right = gauss_panel(c, m, b);
+  const double sum = left + right;
+  if (std::abs(sum - whole) <= tol || depth >= 50 || !(m > a && m < b)) return sum;
+  return adaptive(c, a, m, left, 0.5 * tol, depth + 1) + adaptive(c, m, b, right, 0.5 * tol, depth + 1);
+}
+
+// a, the knots strictly inside (a, b), b: the panels on which the speed is smooth.
+template <int Dim>
+std::vector<double> span_breaks(const BSplineCurve<Dim>& c, double a, double b) {
+  std::vector<double> breaks{a};
+  for (double k : c.knots())
+    if (k > breaks.back() && k < b) breaks.push_back(k);
+  if (b > a) breaks.push_back(b);
+  return breaks;
+}
+
+// Length of each panel between consecutive breaks to rel_tol of their sum (abs_tol receives the
+// absolute tolerance). A first pass of one rule per panel estimates the total, which fixes the
+// absolute tolerance; each panel gets the share of it proportional to its parameter length.
+template <int Dim>
+std::vector<double> span_lengths(const BSplineCurve<Dim>& c, const std::vector<double>& breaks, double rel_tol,
+                                 double& abs_tol) {
+  require(rel_tol >= 1e-15 && rel_tol < 1, "arc length tolerance " + std::to_string(rel_tol) +
+                                               " out of range [1e-15, 1)");
+  std::vector<double> len(breaks.size() - 1);
+  double estimate = 0;
+  for (std::size_t i = 0; i < len.size(); ++i) estimate += len[i] = gauss_panel(c, breaks[i], breaks[i + 1]);
+  abs_tol = rel_tol * estimate;
+  const double width = breaks.back() - breaks.front();
+  for (std::size_t i = 0; i < len.size(); ++i)
+    len[i] = adaptive(c, breaks[i], breaks[i + 1], len[i], abs_tol * (breaks[i + 1] - breaks[i]) / width, 0);
+  return len;
+}
+
+}  // namespace
+
+template <int Dim>
+ArcLength<Dim>::ArcLength(const BSplineCurve<Dim>& curve, double rel_tol) : curve_(&curve) {
+  require(curve.num_poles() > 0, "arc length of an empty curve");
+  breaks_ = span_breaks(curve, curve.first_param(), curve.last_param());
+  const std::vector<double> len = span_lengths(curve, breaks_, rel_tol, tol_);
+  cumulative_.assign(breaks_.size(), 0.0);
+  for (std::size_t i = 0; i < len.size(); ++i) cumulative_[i + 1] = cumulative_[i] + len[i];
+}
+
+template <int Dim>
+double ArcLength<Dim>::integrate(double a, double b) const {
+  if (b == a) return 0;
+  const double share = std::max(tol_ * std::abs(b - a) / (breaks_.back() - breaks_.front()), 1e-16 * tol_);
+  return adaptive(*curve_, a, b, gauss_panel(*curve_, a, b), share, 0);
+}
+
+template <int Dim>
+double ArcLength<Dim>::length_to(double u) const {
+  const double a = breaks_.front(), b = breaks_.back();
+  const double eps = 1e-12 * (b - a);
+  require(u >= a - eps && u <= b + eps, "parameter " + std::to_string(u) + " outside the curve domain [" +
+                                            std::to_string(a) + ", " + std::to_string(b) + "]");
+  u = std::clamp(u, a, b);
+  if (u == b) return cumulative_.back();
+  const std::size_t i = static_cast<std::size_t>(std::upper_bound(breaks_.begin(), breaks_.end(), u) - breaks_.begin()) - 1;
+  return cumulative_[i] + integrate(breaks_[i], u);
+}
+
+template <int Dim>
+double ArcLength<Dim>::param_at(double s) const {
+  const double L = total();
+  require(s >= -tol_ && s <= L + tol_, "arc length " + std::to_string(s) + " outside [0, " + std::to_string(L) + "]");
+  if (s <= 0) return breaks_.front();
+  if (s >= L) return breaks_.back();
+  std::size_t i = static_cast<std::size_t>(std::upper_bound(cumulative_.begin(), cumulative_.end(), s) - cumulative_.begin()) - 1;
+  i = std::min(i, breaks_.size() - 2);
+  double lo = breaks_[i], hi = breaks_[i + 1];
+  const double span_len = cumulative_[i + 1] - cumulative_[i];
+  if (span_len <= 0) return lo;
+  const double x0 = lo;
+  double u = lo + (hi - lo) * (s - cumulative_[i]) / span_len;
+  for (int it = 0; it < 200; ++it) {
+    const double F = cumulative_[i] + integrate(x0, u) - s;
+    if (std::abs(F) <= tol_) return u;
+    (F < 0 ? lo : hi) = u;
+    const double v = speed(*curve_, u);
+    double next = v > 0 ? u - F / v : 0.5 * (lo + hi);
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);  // Newton left the bracket: bisect
+    if (std::abs(next - u) <= 4e-16 * (std::abs(u) + (hi - lo))) return next;
+    u = next;
+  }
+  return u;
+}
+
+template <int Dim>
+double arc_length(const BSplineCurve<Dim>& curve, double a, double b, double rel_tol) {
+  require(a <= b, "arc length needs a <= b, got a = " + std::to_string(a) + ", b = " + std::to_string(b));
+  a = curve.check_param(a);
+  if (b != curve.last_param()) b = curve.check_param(b);  // a periodic curve would wrap its end to the start
+  if (a == b) return 0;
+  double abs_tol;
+  const std::vector<double> len = span_lengths(curve, span_breaks(curve, a, b), rel_tol, abs_tol);
+  double sum = 0;
+  for (double l : len) sum += l;
+  return sum;
+}
+
+template <int Dim>
+double arc_length(const BSplineCurve<Dim>& curve, double rel_tol) {
+  return ArcLength<Dim>(curve, rel_tol).total();
+}
+
+template <int Dim>
+double param_at_arc_length(const BSplineCurve<Dim>& curve, double u0, double s, double rel_tol) {
+  const ArcLength<Dim> table(curve, rel_tol);
+  return table.param_at(table.length_to(u0) + s);
+}
+
+template class ArcLength<1>;
+template class ArcLength<2>;
+template class ArcLength<3>;
+#define CG_ARC_LENGTH_INSTANTIATE(D)                                            \
+  template double arc_length<D>(const BSplineCurve<D>&, double, double, double); \
+  template double arc_length<D>(const BSplineCurve<D>&, double);                 \
+  template double param_at_arc_length<D>(const BSplineCurve<D>&, double, double, double);
+CG_ARC_LENGTH_INSTANTIATE(1)
+CG_ARC_LENGTH_INSTANTIATE(2)
+CG_ARC_LENGTH_INSTANTIATE(3)
+
+}  // namespace cg
