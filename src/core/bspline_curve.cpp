@@ -110,6 +110,8 @@ template <int Dim>
 double BSplineCurve<Dim>::check_param(double u) const {
   require(num_poles() > 0, "evaluation of an empty curve");
   const double a = first_param(), b = last_param();
+  // Without this a periodic curve would wrap NaN/inf into a NaN span search.
+  if (!std::isfinite(u)) throw InvalidGeometry("curve parameter " + std::to_string(u) + " is not finite");
   if (periodic_) {
     if (u >= a && u < b) return u;
     const double T = b - a;

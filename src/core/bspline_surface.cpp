@@ -88,6 +88,7 @@ BSplineSurface<Dim> BSplineSurface<Dim>::from_homogeneous(int pu, int pv, std::v
 
 namespace {
 double wrap_or_check(double t, double a, double b, bool periodic, const char* name) {
+  if (!std::isfinite(t)) throw InvalidGeometry(std::string("surface parameter ") + name + " = " + std::to_string(t) + " is not finite");
   if (periodic) {
     if (t >= a && t < b) return t;
     double r = std::fmod(t - a, b - a);

@@ -19,6 +19,7 @@ CurveEvaluator<Dim>::CurveEvaluator(const BSplineCurve<Dim>& curve)
   first_ = curve.first_param();
   last_ = curve.last_param();
   eps_ = 1e-12 * (last_ - first_);
+  spans_ = SpanTable(curve.knots().data(), n_, p_, eps_, periodic_);
   const std::size_t spans = static_cast<std::size_t>(n_ - p_ + 1);
   coeffs_.assign(spans * static_cast<std::size_t>((p_ + 1) * (Dim + 1)), 0.0);
   built_.assign(spans, 0);
@@ -45,98 +46,131 @@ void CurveEvaluator<Dim>::build_span(int s) {
 }
 
 template <int Dim>
-typename CurveEvaluator<Dim>::Local CurveEvaluator<Dim>::locate(double u) {
-  if (!(u >= span_lo_ && u < span_hi_)) {
-    if (periodic_) {
-      u = curve_->check_param(u);
-    } else if (!(u >= first_ - eps_ && u <= last_ + eps_)) {
-      throw InvalidGeometry("parameter " + std::to_string(u) + " outside the curve domain [" +
-                            std::to_string(first_) + ", " + std::to_string(last_) + "]");
+void CurveEvaluator<Dim>::relocate(double& u) {
+  if (periodic_) {
+    u = curve_->check_param(u);  // wraps into the base period; rejects non-finite u
+  } else if (!(u >= first_ - eps_ && u <= last_ + eps_)) {
+    throw InvalidGeometry("parameter " + std::to_string(u) + " outside the curve domain [" + std::to_string(first_) +
+                          ", " + std::to_string(last_) + "] (tolerance " + std::to_string(eps_) + ")");
+  }
+  if (u >= span_lo_ && u < span_hi_) return;  // wrapping landed in the current span
+  span_ = spans_.find(u);
+  const SpanTable::Span& sp = spans_.span(span_);
+  span_lo_ = sp.lo;
+  span_hi_ = sp.hi;
+  mid_ = sp.mid;
+  scale_ = sp.scale;
+  if (!built_[static_cast<std::size_t>(span_ - p_)]) build_span(span_);
+  cur_ = static_cast<std::size_t>((span_ - p_) * (p_ + 1) * (Dim + 1));
+}
+
+// Horner's rule on the span polynomial and its first Order derivatives in t (The NURBS Book,
+// section 1.2, on the homogeneous coefficients), then the chain rule dt/du = scale and, for rational
+// curves, the quotient rule (A4.2). The span state lives in locals so stores through the output
+// pointers cannot force reloads; it is refreshed only after relocate().
+template <int Dim>
+template <int P, int Order>
+void CurveEvaluator<Dim>::eval_batch(const double* u, std::size_t n, Point* P0, Point* D1, Point* D2) {
+  constexpr int W = Dim + 1;
+  const int p = P > 0 ? P : p_;
+  const bool rational = rational_;
+  double lo = span_lo_, hi = span_hi_, mid = mid_, sc = scale_;
+  const double* c = coeffs_.data() + cur_;
+  for (std::size_t i = 0; i < n; ++i) {
+    double x = u[i];
+    if (!(x >= lo && x < hi)) {
+      relocate(x);
+      lo = span_lo_;
+      hi = span_hi_;
+      mid = mid_;
+      sc = scale_;
+      c = coeffs_.data() + cur_;
     }
-    if (!(u >= span_lo_ && u < span_hi_)) {
-      const double* U = curve_->knots().data();
-      span_ = find_span_hint(U, n_, p_, u, span_);
-      span_lo_ = U[span_];
-      span_hi_ = U[span_ + 1];
-      if (span_ == n_) span_hi_ = last_ + eps_ + 1e-300;  // the last span is closed on the right
-      if (span_ == p_ && !periodic_) span_lo_ = first_ - eps_;
-      mid_ = 0.5 * (U[span_] + U[span_ + 1]);
-      scale_ = 2.0 / (U[span_ + 1] - U[span_]);
-      if (!built_[static_cast<std::size_t>(span_ - p_)]) build_span(span_);
+    const double t = (x - mid) * sc;
+    double r0[W], r1[W], r2[W];
+    for (int d = 0; d < W; ++d) {
+      r0[d] = c[p * W + d];
+      r1[d] = 0.0;
+      r2[d] = 0.0;
+    }
+    for (int k = p - 1; k >= 0; --k) {
+      const double* ck = c + k * W;
+      for (int d = 0; d < W; ++d) {
+        if (Order >= 2) r2[d] = r2[d] * t + r1[d];
+        if (Order >= 1) r1[d] = r1[d] * t + r0[d];
+        r0[d] = r0[d] * t + ck[d];
+      }
+    }
+    const double s1 = sc, s2 = 2.0 * sc * sc;  // d/du of t, and 2! * (dt/du)^2 for the t^2 Taylor term
+    if (!rational) {
+      for (int d = 0; d < Dim; ++d) {
+        P0[i][d] = r0[d];
+        if (Order >= 1) D1[i][d] = r1[d] * s1;
+        if (Order >= 2) D2[i][d] = r2[d] * s2;
+      }
+      continue;
+    }
+    const double iw = 1.0 / r0[Dim];
+    double q0[Dim], q1[Dim];
+    for (int d = 0; d < Dim; ++d) q0[d] = r0[d] * iw;
+    for (int d = 0; d < Dim; ++d) P0[i][d] = q0[d];
+    if (Order >= 1) {
+      const double w1 = r1[Dim] * s1;
+      for (int d = 0; d < Dim; ++d) q1[d] = (r1[d] * s1 - w1 * q0[d]) * iw;
+      for (int d = 0; d < Dim; ++d) D1[i][d] = q1[d];
+      if (Order >= 2) {
+        const double w2 = r2[Dim] * s2;
+        for (int d = 0; d < Dim; ++d) D2[i][d] = (r2[d] * s2 - 2.0 * w1 * q1[d] - w2 * q0[d]) * iw;
+      }
     }
   }
-  return {&coeffs_[static_cast<std::size_t>((span_ - p_) * (p_ + 1) * (Dim + 1))], (u - mid_) * scale_, scale_};
+}
+
+template <int Dim>
+template <int Order>
+void CurveEvaluator<Dim>::dispatch(const double* u, std::size_t n, Point* P0, Point* D1, Point* D2) {
+  switch (p_) {
+    case 1: return eval_batch<1, Order>(u, n, P0, D1, D2);
+    case 2: return eval_batch<2, Order>(u, n, P0, D1, D2);
+    case 3: return eval_batch<3, Order>(u, n, P0, D1, D2);
+    case 4: return eval_batch<4, Order>(u, n, P0, D1, D2);
+    case 5: return eval_batch<5, Order>(u, n, P0, D1, D2);
+    case 6: return eval_batch<6, Order>(u, n, P0, D1, D2);
+    case 7: return eval_batch<7, Order>(u, n, P0, D1, D2);
+    default: return eval_batch<0, Order>(u, n, P0, D1, D2);
+  }
 }
 
 template <int Dim>
 typename CurveEvaluator<Dim>::Point CurveEvaluator<Dim>::point(double u) {
-  const Local L = locate(u);
-  using HMap = Eigen::Map<const HPoint>;
-  HPoint r = HMap(L.coeffs + p_ * (Dim + 1));
-  for (int k = p_ - 1; k >= 0; --k) r = r * L.t + HMap(L.coeffs + k * (Dim + 1));
-  if (!rational_) return r.template head<Dim>();
-  return r.template head<Dim>() / r[Dim];
+  Point P;
+  dispatch<0>(&u, 1, &P, nullptr, nullptr);
+  return P;
 }
 
 template <int Dim>
 void CurveEvaluator<Dim>::d1(double u, Point& P, Point& D1) {
-  const Local L = locate(u);
-  using HMap = Eigen::Map<const HPoint>;
-  HPoint r0 = HMap(L.coeffs + p_ * (Dim + 1));
-  HPoint r1 = HPoint::Zero();
-  for (int k = p_ - 1; k >= 0; --k) {
-    r1 = r1 * L.t + r0;
-    r0 = r0 * L.t + HMap(L.coeffs + k * (Dim + 1));
-  }
-  r1 *= L.scale;
-  if (!rational_) {
-    P = r0.template head<Dim>();
-    D1 = r1.template head<Dim>();
-    return;
-  }
-  const double iw = 1.0 / r0[Dim];
-  P = r0.template head<Dim>() * iw;
-  D1 = (r1.template head<Dim>() - r1[Dim] * P) * iw;
+  dispatch<1>(&u, 1, &P, &D1, nullptr);
 }
 
 template <int Dim>
 void CurveEvaluator<Dim>::d2(double u, Point& P, Point& D1, Point& D2) {
-  const Local L = locate(u);
-  using HMap = Eigen::Map<const HPoint>;
-  HPoint r0 = HMap(L.coeffs + p_ * (Dim + 1));
-  HPoint r1 = HPoint::Zero(), r2 = HPoint::Zero();
-  for (int k = p_ - 1; k >= 0; --k) {
-    r2 = r2 * L.t + r1;
-    r1 = r1 * L.t + r0;
-    r0 = r0 * L.t + HMap(L.coeffs + k * (Dim + 1));
-  }
-  r1 *= L.scale;
-  r2 *= 2.0 * L.scale * L.scale;
-  if (!rational_) {
-    P = r0.template head<Dim>();
-    D1 = r1.template head<Dim>();
-    D2 = r2.template head<Dim>();
-    return;
-  }
-  const double iw = 1.0 / r0[Dim];
-  P = r0.template head<Dim>() * iw;
-  D1 = (r1.template head<Dim>() - r1[Dim] * P) * iw;
-  D2 = (r2.template head<Dim>() - 2.0 * r1[Dim] * D1 - r2[Dim] * P) * iw;
+  dispatch<2>(&u, 1, &P, &D1, &D2);
 }
 
 template <int Dim>
 void CurveEvaluator<Dim>::points(const double* u, std::size_t n, Point* P) {
-  for (std::size_t i = 0; i < n; ++i) P[i] = point(u[i]);
+  dispatch<0>(u, n, P, nullptr, nullptr);
 }
 
 template <int Dim>
 void CurveEvaluator<Dim>::points_d1(const double* u, std::size_t n, Point* P, Point* D1) {
-  for (std::size_t i = 0; i < n; ++i) d1(u[i], P[i], D1[i]);
+  dispatch<1>(u, n, P, D1, nullptr);
 }
 
 template <int Dim>
 void CurveEvaluator<Dim>::points_d2(const double* u, std::size_t n, Point* P, Point* D1, Point* D2) {
-  for (std::size_t i = 0; i < n; ++i) d2(u[i], P[i], D1[i], D2[i]);
+  dispatch<2>(u, n, P, D1, D2);
 }
 
 template <int Dim>

@@ -35,22 +35,29 @@ class CurveEvaluator {
   const BSplineCurve<Dim>& curve() const { return *curve_; }
 
  private:
-  struct Local {
-    const double* coeffs;  // (p+1) homogeneous coefficients, lowest order first
-    double t;              // local parameter in [-1, 1]
-    double scale;          // dt/du
-  };
-  Local locate(double u);
+  // Moves the current span to the one containing u (wrapping u for periodic curves, throwing when
+  // u is outside the domain) and builds its coefficients on first use. The slow path of eval_batch.
+  void relocate(double& u);
   void build_span(int span);
+  // The hot loop: derivatives up to Order at n parameters, degree fixed at compile time for P >= 1
+  // (P = 0: runtime degree). Unused outputs may be null.
+  template <int P, int Order>
+  void eval_batch(const double* u, std::size_t n, Point* P0, Point* D1, Point* D2);
+  template <int Order>
+  void dispatch(const double* u, std::size_t n, Point* P0, Point* D1, Point* D2);
 
   const BSplineCurve<Dim>* curve_;
   int p_, n_;
   bool rational_, periodic_;
   double first_, last_, eps_;
+  SpanTable spans_;
   std::vector<double> coeffs_;  // per span (span - p): (p+1) x (Dim+1)
   std::vector<unsigned char> built_;
   int span_ = -1;
+  // Current span: u in [span_lo_, span_hi_) maps to t = (u - mid_) * scale_, coefficients at
+  // coeffs_[cur_] (an offset, not a pointer, so a copied evaluator stays valid).
   double span_lo_ = 0, span_hi_ = -1, mid_ = 0, scale_ = 0;
+  std::size_t cur_ = 0;
 };
 
 extern template class CurveEvaluator<1>;

@@ -49,11 +49,17 @@ int find_span(const double* U, int n, int p, double u) {
     while (s < n && U[s] == U[s + 1]) ++s;
     return s;
   }
-  // Binary search for U[s] <= u < U[s+1].
-  const double* first = U + p;
-  const double* last = U + n + 2;
-  const double* it = std::upper_bound(first, last, u);
-  return static_cast<int>(it - U) - 1;
+  // Binary search for U[s] <= u < U[s+1], s in [p, n] (U[p] < u < U[n+1] here). Branch-free
+  // halving (the comparison selects the base by a conditional move): for parameters in random order
+  // the branches of std::upper_bound mispredict half the time, which costs more than the search.
+  const double* base = U + p;
+  int len = n + 1 - p;  // candidates base[0 .. len-1]; base[0] <= u
+  while (len > 1) {
+    const int half = len / 2;
+    base = base[half] <= u ? base + half : base;
+    len -= half;
+  }
+  return static_cast<int>(base - U);
 }
 
 int find_span_hint(const double* U, int n, int p, double u, int hint) {
@@ -62,6 +68,45 @@ int find_span_hint(const double* U, int n, int p, double u, int hint) {
     if (hint < n && U[hint + 1] <= u && u < U[hint + 2]) return hint + 1;
   }
   return find_span(U, n, p, u);
+}
+
+SpanTable::SpanTable(const double* U, int n, int p, double eps, bool periodic)
+    : U_(U), n_(n), p_(p), a_(U[p]), b_(U[n + 1]) {
+  spans_.resize(static_cast<std::size_t>(n - p + 1));
+  for (int s = p; s <= n; ++s) {
+    Span& sp = spans_[static_cast<std::size_t>(s - p)];
+    sp.lo = U[s];
+    sp.hi = U[s + 1];
+    sp.mid = 0.5 * (U[s] + U[s + 1]);
+    sp.scale = U[s + 1] > U[s] ? 2.0 / (U[s + 1] - U[s]) : 0.0;
+  }
+  const int first = find_span(U, n, p, a_), last = find_span(U, n, p, b_);
+  if (!periodic) spans_[static_cast<std::size_t>(first - p)].lo = a_ - eps;
+  spans_[static_cast<std::size_t>(last - p)].hi = b_ + eps + 1e-300;
+  // Twice as many buckets as spans (capped): most buckets then overlap one or two spans.
+  const int buckets = std::min(2 * (n - p + 1), 1 << 16);
+  const double h = (b_ - a_) / buckets;
+  inv_h_ = 1.0 / h;
+  bucket_.resize(static_cast<std::size_t>(buckets + 1));
+  for (int k = 0; k <= buckets; ++k) bucket_[static_cast<std::size_t>(k)] = find_span(U, n, p, a_ + k * h);
+}
+
+int SpanTable::find(double u) const {
+  if (!(u > a_ && u < b_)) return find_span(U_, n_, p_, u);  // domain ends, outside, NaN
+  std::size_t k = static_cast<std::size_t>((u - a_) * inv_h_);
+  if (k + 1 >= bucket_.size()) k = bucket_.size() - 2;
+  // Largest s in [bucket_[k], bucket_[k+1]] with U[s] <= u (branch-free halving as in find_span).
+  const double* base = U_ + bucket_[k];
+  int len = bucket_[k + 1] - bucket_[k] + 1;
+  while (len > 1) {
+    const int half = len / 2;
+    base = base[half] <= u ? base + half : base;
+    len -= half;
+  }
+  const int s = static_cast<int>(base - U_);
+  // The bucket index is rounded: verify, and fall back to the full search in the rare miss.
+  if (U_[s] <= u && u < U_[s + 1]) return s;
+  return find_span(U_, n_, p_, u);
 }
 
 int knot_multiplicity(const std::vector<double>& U, double u, double tol) {

@@ -21,6 +21,33 @@ int find_span(const double* U, int n, int p, double u);
 /// As find_span, but first tries `hint` and its right neighbour (O(1) for sorted parameters).
 int find_span_hint(const double* U, int n, int p, double u, int hint);
 
+/// Precomputed span data of one knot vector for repeated searches (the batched evaluators): a table
+/// of equal-length parameter buckets, each holding the range of spans it overlaps, makes a search O(1)
+/// for near-uniform knots and a short branch-free binary search otherwise; per span it keeps the
+/// parameter interval and the map to the local parameter t = (u - mid) * scale in [-1, 1].
+class SpanTable {
+ public:
+  struct Span {
+    double lo, hi;      // u in [lo, hi) belongs to this span (empty spans: lo == hi)
+    double mid, scale;  // t = (u - mid) * scale
+  };
+  SpanTable() = default;
+  /// U holds n + p + 2 knots and must outlive the table. The end spans also accept parameters up to
+  /// `eps` outside the domain (the first one only if not `periodic`; wrapped periodic parameters may
+  /// round up onto the domain end, so the last one always does).
+  SpanTable(const double* U, int n, int p, double eps, bool periodic);
+  /// Same result as find_span(U, n, p, u).
+  int find(double u) const;
+  const Span& span(int s) const { return spans_[static_cast<std::size_t>(s - p_)]; }
+
+ private:
+  const double* U_ = nullptr;
+  int n_ = 0, p_ = 0;
+  double a_ = 0, b_ = 0, inv_h_ = 0;
+  std::vector<int> bucket_;  // bucket_[k] = span of the bucket start a + k * h, k = 0 .. buckets
+  std::vector<Span> spans_;  // index s - p
+};
+
 /// Number of knots equal to u within `tol`.
 int knot_multiplicity(const std::vector<double>& U, double u, double tol = 0.0);
 

@@ -11,6 +11,9 @@ SurfaceEvaluator<Dim>::SurfaceEvaluator(const BSplineSurface<Dim>& s)
   require(s.num_poles_u() > 0, "SurfaceEvaluator needs a non-empty surface");
   nspan_u_ = s.num_poles_u() - pu_;
   nspan_v_ = s.num_poles_v() - pv_;
+  const double epsu = 1e-12 * (s.last_u() - s.first_u()), epsv = 1e-12 * (s.last_v() - s.first_v());
+  spans_u_ = SpanTable(s.knots_u().data(), s.num_poles_u() - 1, pu_, epsu, s.is_periodic_u());
+  spans_v_ = SpanTable(s.knots_v().data(), s.num_poles_v() - 1, pv_, epsv, s.is_periodic_v());
   const std::size_t patches = static_cast<std::size_t>(nspan_u_) * static_cast<std::size_t>(nspan_v_);
   coeffs_.assign(patches * static_cast<std::size_t>((pu_ + 1) * (pv_ + 1) * (Dim + 1)), 0.0);
   built_.assign(patches, 0);
@@ -50,54 +53,86 @@ void SurfaceEvaluator<Dim>::build_patch(int su, int sv) {
 }
 
 template <int Dim>
-const double* SurfaceEvaluator<Dim>::locate(double& u, double& v, double& s, double& t) {
-  if (!(u >= ulo_ && u < uhi_ && v >= vlo_ && v < vhi_)) {
-    s_->check_params(u, v);
-    const double* U = s_->knots_u().data();
-    const double* V = s_->knots_v().data();
-    const int nu = s_->num_poles_u() - 1, nv = s_->num_poles_v() - 1;
-    if (!(u >= ulo_ && u < uhi_)) {
-      cu_ = find_span_hint(U, nu, pu_, u, cu_);
-      ulo_ = cu_ == pu_ ? s_->first_u() - 1e-12 * (s_->last_u() - s_->first_u()) : U[cu_];
-      uhi_ = cu_ == nu ? s_->last_u() + 1e-12 * (s_->last_u() - s_->first_u()) + 1e-300 : U[cu_ + 1];
-      umid_ = 0.5 * (U[cu_] + U[cu_ + 1]);
-      uscale_ = 2.0 / (U[cu_ + 1] - U[cu_]);
-    }
-    if (!(v >= vlo_ && v < vhi_)) {
-      cv_ = find_span_hint(V, nv, pv_, v, cv_);
-      vlo_ = cv_ == pv_ ? s_->first_v() - 1e-12 * (s_->last_v() - s_->first_v()) : V[cv_];
-      vhi_ = cv_ == nv ? s_->last_v() + 1e-12 * (s_->last_v() - s_->first_v()) + 1e-300 : V[cv_ + 1];
-      vmid_ = 0.5 * (V[cv_] + V[cv_ + 1]);
-      vscale_ = 2.0 / (V[cv_ + 1] - V[cv_]);
-    }
+void SurfaceEvaluator<Dim>::relocate(double& u, double& v) {
+  s_->check_params(u, v);  // wraps periodic directions, clamps within the tolerance, throws outside
+  if (!(u >= ulo_ && u < uhi_)) {
+    cu_ = spans_u_.find(u);
+    const SpanTable::Span& sp = spans_u_.span(cu_);
+    ulo_ = sp.lo;
+    uhi_ = sp.hi;
+    umid_ = sp.mid;
+    uscale_ = sp.scale;
+  }
+  if (!(v >= vlo_ && v < vhi_)) {
+    cv_ = spans_v_.find(v);
+    const SpanTable::Span& sp = spans_v_.span(cv_);
+    vlo_ = sp.lo;
+    vhi_ = sp.hi;
+    vmid_ = sp.mid;
+    vscale_ = sp.scale;
   }
   const std::size_t patch = static_cast<std::size_t>((cu_ - pu_) * nspan_v_ + (cv_ - pv_));
   if (!built_[patch]) build_patch(cu_, cv_);
-  s = (u - umid_) * uscale_;
-  t = (v - vmid_) * vscale_;
-  return &coeffs_[patch * static_cast<std::size_t>((pu_ + 1) * (pv_ + 1) * (Dim + 1))];
+  cur_ = patch * static_cast<std::size_t>((pu_ + 1) * (pv_ + 1) * (Dim + 1));
 }
 
 template <int Dim>
 typename SurfaceEvaluator<Dim>::Point SurfaceEvaluator<Dim>::point(double u, double v) {
-  double s, t;
-  const double* c = locate(u, v, s, t);
-  using HMap = Eigen::Map<const HPoint>;
-  HPoint r = HPoint::Zero();
-  for (int k = pu_; k >= 0; --k) {
-    const double* ck = c + k * (pv_ + 1) * (Dim + 1);
-    HPoint b = HMap(ck + pv_ * (Dim + 1));
-    for (int l = pv_ - 1; l >= 0; --l) b = b * t + HMap(ck + l * (Dim + 1));
-    r = r * s + b;
+  const double uv[2] = {u, v};
+  Point P;
+  points(uv, 1, &P);
+  return P;
+}
+
+// Row-cached double Horner (The NURBS Book section 1.2, nested over the two directions): for the
+// current patch and u, the coefficients are contracted in s to row[l] = sum_k c_kl s^k once, and
+// each point then evaluates the univariate polynomial sum_l row[l] t^l.
+template <int Dim>
+template <int PU, int PV>
+void SurfaceEvaluator<Dim>::eval_batch(const double* uv, std::size_t n, Point* P) {
+  constexpr int W = Dim + 1;
+  const int pu = PU > 0 ? PU : pu_, pv = PV > 0 ? PV : pv_;
+  const bool rational = s_->is_rational();
+  double row[(PV > 0 ? PV : kMaxDegree) + 1][W] = {};
+  double row_u = 0;
+  bool row_valid = false;
+  for (std::size_t i = 0; i < n; ++i) {
+    double u = uv[2 * i], v = uv[2 * i + 1];
+    if (!(u >= ulo_ && u < uhi_ && v >= vlo_ && v < vhi_)) {
+      const std::size_t before = cur_;
+      relocate(u, v);
+      if (cur_ != before) row_valid = false;
+    }
+    if (!row_valid || u != row_u) {
+      const double s = (u - umid_) * uscale_;
+      const double* c = coeffs_.data() + cur_;
+      for (int l = 0; l <= pv; ++l) {
+        for (int d = 0; d < W; ++d) row[l][d] = c[(pu * (pv + 1) + l) * W + d];
+        for (int k = pu - 1; k >= 0; --k)
+          for (int d = 0; d < W; ++d) row[l][d] = row[l][d] * s + c[(k * (pv + 1) + l) * W + d];
+      }
+      row_u = u;
+      row_valid = true;
+    }
+    const double t = (v - vmid_) * vscale_;
+    double r[W];
+    for (int d = 0; d < W; ++d) r[d] = row[pv][d];
+    for (int l = pv - 1; l >= 0; --l)
+      for (int d = 0; d < W; ++d) r[d] = r[d] * t + row[l][d];
+    if (!rational) {
+      for (int d = 0; d < Dim; ++d) P[i][d] = r[d];
+    } else {
+      const double iw = 1.0 / r[Dim];
+      for (int d = 0; d < Dim; ++d) P[i][d] = r[d] * iw;
+    }
   }
-  if (!s_->is_rational()) return r.template head<Dim>();
-  return r.template head<Dim>() / r[Dim];
 }
 
 template <int Dim>
 void SurfaceEvaluator<Dim>::d1(double u, double v, Point& P, Point& Su, Point& Sv) {
-  double s, t;
-  const double* c = locate(u, v, s, t);
+  if (!(u >= ulo_ && u < uhi_ && v >= vlo_ && v < vhi_)) relocate(u, v);
+  const double s = (u - umid_) * uscale_, t = (v - vmid_) * vscale_;
+  const double* c = coeffs_.data() + cur_;
   using HMap = Eigen::Map<const HPoint>;
   HPoint r = HPoint::Zero(), ru = HPoint::Zero(), rv = HPoint::Zero();
   for (int k = pu_; k >= 0; --k) {
@@ -128,7 +163,17 @@ void SurfaceEvaluator<Dim>::d1(double u, double v, Point& P, Point& Su, Point& S
 
 template <int Dim>
 void SurfaceEvaluator<Dim>::points(const double* uv, std::size_t n, Point* P) {
-  for (std::size_t i = 0; i < n; ++i) P[i] = point(uv[2 * i], uv[2 * i + 1]);
+  if (pu_ == pv_) {
+    switch (pu_) {
+      case 1: return eval_batch<1, 1>(uv, n, P);
+      case 2: return eval_batch<2, 2>(uv, n, P);
+      case 3: return eval_batch<3, 3>(uv, n, P);
+      case 4: return eval_batch<4, 4>(uv, n, P);
+      case 5: return eval_batch<5, 5>(uv, n, P);
+      default: break;
+    }
+  }
+  eval_batch<0, 0>(uv, n, P);
 }
 
 template class SurfaceEvaluator<1>;

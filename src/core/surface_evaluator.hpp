@@ -2,7 +2,9 @@
 // Batched surface evaluation with a per-patch cache: each knot patch is converted once to a
 // bivariate polynomial in local parameters (s, t) in [-1, 1]^2 about the patch centre (mixed Taylor
 // coefficients of the homogeneous surface), then each point costs (p+1)(q+1) fused multiply-adds per
-// coordinate. One evaluator per thread; the surface must outlive the evaluator.
+// coordinate. Batched points() first contracts the patch in u to a polynomial in t and keeps it while
+// u and the patch stay the same, so walking a grid row by row (u outer, v inner) costs (q+1)
+// multiply-adds per point. One evaluator per thread; the surface must outlive the evaluator.
 #include <Eigen/Core>
 #include <cstddef>
 #include <vector>
@@ -26,15 +28,22 @@ class SurfaceEvaluator {
   void points(const double* uv, std::size_t n, Point* P);
 
  private:
-  const double* locate(double& u, double& v, double& su, double& sv);
+  // Moves the current patch to the one containing (u, v) (wrapping periodic directions, throwing
+  // outside the domain) and builds its coefficients on first use.
+  void relocate(double& u, double& v);
   void build_patch(int iu, int iv);
+  // The hot loop of points(); degrees fixed at compile time for PU, PV >= 1 (0: runtime degrees).
+  template <int PU, int PV>
+  void eval_batch(const double* uv, std::size_t n, Point* P);
 
   const BSplineSurface<Dim>* s_;
   int pu_, pv_, nspan_u_, nspan_v_;
+  SpanTable spans_u_, spans_v_;
   std::vector<double> coeffs_;  // per patch: (pu+1) x (pv+1) x (Dim+1), index (k*(pv+1)+l)*(Dim+1)
   std::vector<unsigned char> built_;
   int cu_ = -1, cv_ = -1;  // current spans
   double ulo_ = 0, uhi_ = -1, vlo_ = 0, vhi_ = -1, umid_ = 0, vmid_ = 0, uscale_ = 0, vscale_ = 0;
+  std::size_t cur_ = 0;  // offset of the current patch's coefficients in coeffs_
 };
 
 extern template class SurfaceEvaluator<1>;
