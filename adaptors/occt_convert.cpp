@@ -51,23 +51,25 @@ std::vector<double> knots_from_occt(const TColStd_Array1OfReal& K, const TColStd
   return unwrap_periodic_knots(p, flat_knots(values, mults), T);
 }
 
+// Cartesian poles and weights are passed as stored by OCCT (never as w*P, whose division by w does
+// not always give P back), so the conversion is bit-exact both ways.
 template <int Dim, class Curve, class PoleArray>
 BSplineCurve<Dim> curve_from_occt(const Curve& c) {
   const int p = c.Degree();
-  const bool periodic = c.IsPeriodic();
   const int n = c.NbPoles();
-  const int total = periodic ? n + p : n;
-  typename BSplineCurve<Dim>::HPoles h(Dim + 1, total);
-  const PoleArray& P = c.Poles();
-  const TColStd_Array1OfReal* W = c.Weights();
-  for (int i = 0; i < total; ++i) {
-    const int k = (i % n) + 1;
-    const double w = W ? W->Value(k) : 1.0;
-    for (int d = 0; d < Dim; ++d) h(d, i) = w * P.Value(k).Coord(d + 1);
-    h(Dim, i) = w;
-  }
-  return BSplineCurve<Dim>::from_homogeneous(p, knots_from_occt(c.Knots(), c.Multiplicities(), p, periodic),
-                                             std::move(h), periodic);
+  std::vector<typename BSplineCurve<Dim>::Point> P(static_cast<std::size_t>(n));
+  std::vector<double> W;
+  const PoleArray& poles = c.Poles();
+  for (int i = 0; i < n; ++i)
+    for (int d = 0; d < Dim; ++d) P[static_cast<std::size_t>(i)][d] = poles.Value(i + 1).Coord(d + 1);
+  if (const TColStd_Array1OfReal* w = c.Weights()) W.assign(w->begin(), w->end());
+  std::vector<double> values(c.Knots().begin(), c.Knots().end());
+  std::vector<int> mults(c.Multiplicities().begin(), c.Multiplicities().end());
+  if (!c.IsPeriodic()) return BSplineCurve<Dim>(p, flat_knots(values, mults), P, W);
+  const double T = values.back() - values.front();
+  values.pop_back();
+  mults.pop_back();
+  return BSplineCurve<Dim>::periodic(p, flat_knots(values, mults), T, P, W);
 }
 
 template <class CurveHandle, class PoleArray, class Pnt, int Dim>
@@ -131,13 +133,16 @@ BSplineSurface<3> from_occt(const Geom_BSplineSurface& s) {
   const int tu = peru ? nu + pu : nu, tv = perv ? nv + pv : nv;
   const TColgp_Array2OfPnt& P = s.Poles();
   const TColStd_Array2OfReal* W = s.Weights();
-  BSplineSurface<3>::HPoles h(4, static_cast<Eigen::Index>(tu) * tv);
+  // Cartesian poles as stored (bit-exact, see curve_from_occt), periodic directions unwrapped.
+  std::vector<std::vector<Eigen::Vector3d>> poles(static_cast<std::size_t>(tu), std::vector<Eigen::Vector3d>(static_cast<std::size_t>(tv)));
+  std::vector<std::vector<double>> weights;
+  if (W) weights.assign(static_cast<std::size_t>(tu), std::vector<double>(static_cast<std::size_t>(tv)));
   for (int i = 0; i < tu; ++i)
     for (int j = 0; j < tv; ++j) {
       const int a = (i % nu) + 1, b = (j % nv) + 1;
-      const double w = W ? W->Value(a, b) : 1.0;
       const gp_Pnt& q = P.Value(a, b);
-      h.col(i * tv + j) << w * q.X(), w * q.Y(), w * q.Z(), w;
+      poles[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] = Eigen::Vector3d(q.X(), q.Y(), q.Z());
+      if (W) weights[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] = W->Value(a, b);
     }
   TColStd_Array1OfReal UK(1, s.NbUKnots()), VK(1, s.NbVKnots());
   TColStd_Array1OfInteger UM(1, s.NbUKnots()), VM(1, s.NbVKnots());
@@ -145,8 +150,8 @@ BSplineSurface<3> from_occt(const Geom_BSplineSurface& s) {
   s.VKnots(VK);
   s.UMultiplicities(UM);
   s.VMultiplicities(VM);
-  return BSplineSurface<3>::from_homogeneous(pu, pv, knots_from_occt(UK, UM, pu, peru),
-                                             knots_from_occt(VK, VM, pv, perv), tu, tv, std::move(h), peru, perv);
+  return BSplineSurface<3>::from_poles(pu, pv, knots_from_occt(UK, UM, pu, peru), knots_from_occt(VK, VM, pv, perv),
+                                       poles, weights, peru, perv);
 }
 
 }  // namespace cg::occt

@@ -26,10 +26,17 @@ typename BSplineCurve<Dim>::HPoles to_homogeneous(const std::vector<typename BSp
   }
   return h;
 }
+
+template <int Dim>
+Eigen::Matrix<double, Dim, Eigen::Dynamic> cartesian(const std::vector<Eigen::Matrix<double, Dim, 1>>& poles) {
+  Eigen::Matrix<double, Dim, Eigen::Dynamic> P(Dim, static_cast<Eigen::Index>(poles.size()));
+  for (std::size_t i = 0; i < poles.size(); ++i) P.col(static_cast<Eigen::Index>(i)) = poles[i];
+  return P;
+}
 }  // namespace
 
 template <int Dim>
-void BSplineCurve<Dim>::init(int degree, std::vector<double> knots, HPoles hpoles) {
+void BSplineCurve<Dim>::init(int degree, std::vector<double> knots, HPoles hpoles, Poles poles) {
   validate_knots(knots, degree, static_cast<int>(hpoles.cols()));
   rational_ = false;
   for (Eigen::Index i = 0; i < hpoles.cols(); ++i) {
@@ -39,16 +46,22 @@ void BSplineCurve<Dim>::init(int degree, std::vector<double> knots, HPoles hpole
     if (!hpoles.col(i).allFinite()) throw InvalidGeometry("pole " + std::to_string(i) + " is not finite");
     if (w != 1.0) rational_ = true;
   }
+  if (poles.cols() != hpoles.cols()) {
+    poles.resize(Dim, hpoles.cols());
+    for (Eigen::Index i = 0; i < hpoles.cols(); ++i)
+      poles.col(i) = hpoles.col(i).template head<Dim>() / hpoles(Dim, i);
+  }
   degree_ = degree;
   knots_ = std::move(knots);
   hpoles_ = std::move(hpoles);
+  poles_ = std::move(poles);
   periodic_ = false;
 }
 
 template <int Dim>
 BSplineCurve<Dim>::BSplineCurve(int degree, std::vector<double> knots, const std::vector<Point>& poles,
                                 const std::vector<double>& weights) {
-  init(degree, std::move(knots), to_homogeneous<Dim>(poles, weights));
+  init(degree, std::move(knots), to_homogeneous<Dim>(poles, weights), cartesian<Dim>(poles));
 }
 
 template <int Dim>
@@ -81,8 +94,12 @@ BSplineCurve<Dim> BSplineCurve<Dim>::periodic(int degree, const std::vector<doub
   HPoles h(Dim + 1, n + degree);
   h.leftCols(n) = h0;
   h.rightCols(degree) = h0.leftCols(degree);
+  const Poles P0 = cartesian<Dim>(poles);
+  Poles P(Dim, n + degree);
+  P.leftCols(n) = P0;
+  P.rightCols(degree) = P0.leftCols(degree);
   BSplineCurve c;
-  c.init(degree, std::move(U), std::move(h));
+  c.init(degree, std::move(U), std::move(h), std::move(P));
   c.periodic_ = true;
   return c;
 }

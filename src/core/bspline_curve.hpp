@@ -1,9 +1,11 @@
 #pragma once
 // B-spline and NURBS curves of any degree in 1, 2 or 3 dimensions.
 //
-// Poles are stored once in homogeneous form (w*P, w) — the 3D rational curve is evaluated as a 4D
+// Poles are stored in homogeneous form (w*P, w) — the 3D rational curve is evaluated as a 4D
 // polynomial one (as OCCT's BSplCLib does), so evaluation never re-weights the poles. A polynomial
-// curve keeps w = 1 and skips the division.
+// curve keeps w = 1 and skips the division. The Cartesian poles are kept as well, exactly as given:
+// (w*P)/w differs from P in the last bit for ~9% of random values, and conversions to and from OCCT
+// (which stores P and w) must be bit-exact.
 //
 // Periodic curves are stored unwrapped: n + p poles whose last p repeat the first p, and a full knot
 // vector continued by the period. Evaluation maps u into the base period first.
@@ -46,7 +48,7 @@ class BSplineCurve {
   const std::vector<double>& knots() const { return knots_; }
   int num_poles() const { return static_cast<int>(hpoles_.cols()); }
   const HPoles& homogeneous_poles() const { return hpoles_; }
-  Point pole(int i) const { return hpoles_.col(i).template head<Dim>() / hpoles_(Dim, i); }
+  Point pole(int i) const { return poles_.col(i); }
   double weight(int i) const { return hpoles_(Dim, i); }
   std::vector<Point> poles() const;
   std::vector<double> weights() const;
@@ -75,10 +77,13 @@ class BSplineCurve {
   void homogeneous_derivatives(double u, int order, HPoint* out) const;
 
  private:
-  void init(int degree, std::vector<double> knots, HPoles hpoles);
+  using Poles = Eigen::Matrix<double, Dim, Eigen::Dynamic>;
+  // `poles`: the Cartesian poles if given (else computed from hpoles).
+  void init(int degree, std::vector<double> knots, HPoles hpoles, Poles poles = Poles());
   int degree_ = 0;
   std::vector<double> knots_;
   HPoles hpoles_;
+  Poles poles_;
   bool rational_ = false;
   bool periodic_ = false;
 };

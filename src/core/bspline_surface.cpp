@@ -14,7 +14,7 @@ namespace cg {
 
 template <int Dim>
 void BSplineSurface<Dim>::init(int pu, int pv, std::vector<double> U, std::vector<double> V, int nu, int nv,
-                               HPoles h) {
+                               HPoles h, Poles poles) {
   require(nu >= 1 && nv >= 1 && h.cols() == static_cast<Eigen::Index>(nu) * nv,
           "surface pole grid must have nu * nv = " + std::to_string(nu) + " * " + std::to_string(nv) + " poles");
   validate_knots(U, pu, nu);
@@ -27,6 +27,11 @@ void BSplineSurface<Dim>::init(int pu, int pv, std::vector<double> U, std::vecto
     if (!h.col(i).allFinite()) throw InvalidGeometry("surface pole " + std::to_string(i) + " is not finite");
     if (w != 1.0) rational_ = true;
   }
+  if (poles.cols() != h.cols()) {
+    poles.resize(Dim, h.cols());
+    for (Eigen::Index i = 0; i < h.cols(); ++i) poles.col(i) = h.col(i).template head<Dim>() / h(Dim, i);
+  }
+  poles_ = std::move(poles);
   pu_ = pu;
   pv_ = pv;
   nu_ = nu;
@@ -46,6 +51,7 @@ BSplineSurface<Dim>::BSplineSurface(int pu, int pv, std::vector<double> U, std::
   const int nv = static_cast<int>(poles[0].size());
   require(weights.empty() || static_cast<int>(weights.size()) == nu, "surface weight rows must match pole rows");
   HPoles h(Dim + 1, static_cast<Eigen::Index>(nu) * nv);
+  Poles cart(Dim, static_cast<Eigen::Index>(nu) * nv);
   for (int i = 0; i < nu; ++i) {
     require(static_cast<int>(poles[static_cast<std::size_t>(i)].size()) == nv,
             "surface pole row " + std::to_string(i) + " has " + std::to_string(poles[static_cast<std::size_t>(i)].size()) +
@@ -58,9 +64,20 @@ BSplineSurface<Dim>::BSplineSurface(int pu, int pv, std::vector<double> U, std::
       }
       h.col(i * nv + j).template head<Dim>() = w * poles[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)];
       h(Dim, i * nv + j) = w;
+      cart.col(i * nv + j) = poles[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)];
     }
   }
-  init(pu, pv, std::move(U), std::move(V), nu, nv, std::move(h));
+  init(pu, pv, std::move(U), std::move(V), nu, nv, std::move(h), std::move(cart));
+}
+
+template <int Dim>
+BSplineSurface<Dim> BSplineSurface<Dim>::from_poles(int pu, int pv, std::vector<double> U, std::vector<double> V,
+                                                    const std::vector<std::vector<Point>>& poles,
+                                                    const std::vector<std::vector<double>>& weights, bool periodic_u,
+                                                    bool periodic_v) {
+  BSplineSurface s(pu, pv, std::move(U), std::move(V), poles, weights);
+  s.set_periodic(periodic_u, periodic_v);
+  return s;
 }
 
 template <int Dim>
@@ -68,22 +85,28 @@ BSplineSurface<Dim> BSplineSurface<Dim>::from_homogeneous(int pu, int pv, std::v
                                                           int nu, int nv, HPoles h, bool periodic_u, bool periodic_v) {
   BSplineSurface s;
   s.init(pu, pv, std::move(U), std::move(V), nu, nv, std::move(h));
-  const double scale = s.hpoles_.cwiseAbs().maxCoeff();
+  s.set_periodic(periodic_u, periodic_v);
+  return s;
+}
+
+template <int Dim>
+void BSplineSurface<Dim>::set_periodic(bool periodic_u, bool periodic_v) {
+  const int nu = nu_, nv = nv_;
+  const double scale = hpoles_.cwiseAbs().maxCoeff();
   if (periodic_u) {
-    check_unwrapped_periodic(s.U_, pu, nu, [&](Eigen::Index a, Eigen::Index b) {
-      return (s.hpoles_.middleCols(a * nv, nv) - s.hpoles_.middleCols(b * nv, nv)).cwiseAbs().maxCoeff();
+    check_unwrapped_periodic(U_, pu_, nu, [&](Eigen::Index a, Eigen::Index b) {
+      return (hpoles_.middleCols(a * nv, nv) - hpoles_.middleCols(b * nv, nv)).cwiseAbs().maxCoeff();
     }, scale, "surface (u)");
-    s.periodic_u_ = true;
+    periodic_u_ = true;
   }
   if (periodic_v) {
-    check_unwrapped_periodic(s.V_, pv, nv, [&](Eigen::Index a, Eigen::Index b) {
+    check_unwrapped_periodic(V_, pv_, nv, [&](Eigen::Index a, Eigen::Index b) {
       double d = 0.0;
-      for (int i = 0; i < nu; ++i) d = std::max(d, (s.hpoles_.col(i * nv + a) - s.hpoles_.col(i * nv + b)).cwiseAbs().maxCoeff());
+      for (int i = 0; i < nu; ++i) d = std::max(d, (hpoles_.col(i * nv + a) - hpoles_.col(i * nv + b)).cwiseAbs().maxCoeff());
       return d;
     }, scale, "surface (v)");
-    s.periodic_v_ = true;
+    periodic_v_ = true;
   }
-  return s;
 }
 
 namespace {

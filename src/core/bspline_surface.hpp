@@ -1,5 +1,6 @@
 #pragma once
-// Tensor-product B-spline / NURBS surfaces, poles stored homogeneous (w*P, w).
+// Tensor-product B-spline / NURBS surfaces, poles stored homogeneous (w*P, w) and, exactly as given,
+// Cartesian (for bit-exact conversion to and from OCCT; see bspline_curve.hpp).
 // Pole (i, j), i along u (0..nu-1), j along v (0..nv-1), is column i * nv + j of homogeneous_poles().
 // Periodic directions are stored unwrapped, as for curves (see bspline_curve.hpp).
 #include <Eigen/Core>
@@ -22,6 +23,12 @@ class BSplineSurface {
   /// poles[i][j]: nu rows of nv poles; weights likewise (empty = polynomial).
   BSplineSurface(int degree_u, int degree_v, std::vector<double> knots_u, std::vector<double> knots_v,
                  const std::vector<std::vector<Point>>& poles, const std::vector<std::vector<double>>& weights = {});
+  /// As the constructor, with periodic directions: poles, weights and knots must then be unwrapped
+  /// (in a periodic direction the last degree rows/columns repeat the first ones).
+  static BSplineSurface from_poles(int degree_u, int degree_v, std::vector<double> knots_u,
+                                   std::vector<double> knots_v, const std::vector<std::vector<Point>>& poles,
+                                   const std::vector<std::vector<double>>& weights, bool periodic_u,
+                                   bool periodic_v);
   /// From homogeneous poles (nu * nv columns, index i * nv + j); periodic directions must be unwrapped.
   static BSplineSurface from_homogeneous(int degree_u, int degree_v, std::vector<double> knots_u,
                                          std::vector<double> knots_v, int nu, int nv, HPoles hpoles,
@@ -35,7 +42,7 @@ class BSplineSurface {
   int num_poles_v() const { return nv_; }
   const HPoles& homogeneous_poles() const { return hpoles_; }
   HPoint homogeneous_pole(int i, int j) const { return hpoles_.col(i * nv_ + j); }
-  Point pole(int i, int j) const { return hpoles_.col(i * nv_ + j).template head<Dim>() / weight(i, j); }
+  Point pole(int i, int j) const { return poles_.col(i * nv_ + j); }
   double weight(int i, int j) const { return hpoles_(Dim, i * nv_ + j); }
   bool is_rational() const { return rational_; }
   bool is_periodic_u() const { return periodic_u_; }
@@ -56,10 +63,15 @@ class BSplineSurface {
   Point normal(double u, double v) const;
 
  private:
-  void init(int pu, int pv, std::vector<double> U, std::vector<double> V, int nu, int nv, HPoles h);
+  using Poles = Eigen::Matrix<double, Dim, Eigen::Dynamic>;
+  // `poles`: the Cartesian poles if given (else computed from h).
+  void init(int pu, int pv, std::vector<double> U, std::vector<double> V, int nu, int nv, HPoles h,
+            Poles poles = Poles());
+  void set_periodic(bool periodic_u, bool periodic_v);
   int pu_ = 0, pv_ = 0, nu_ = 0, nv_ = 0;
   std::vector<double> U_, V_;
   HPoles hpoles_;
+  Poles poles_;
   bool rational_ = false, periodic_u_ = false, periodic_v_ = false;
 };
 
