@@ -1,0 +1,412 @@
+#include "src/algo/project_point_surface.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "src/core/basis.hpp"
+#include "src/core/error.hpp"
+#include "src/core/rational.hpp"
+
+namespace cg {
+
+namespace {
+
+// Subdivision depth cap; the flatness test ends branches long before (the variation bound shrinks
+// with the patch).
+constexpr int kMaxDepth = 50;
+// A coefficient sign counts as strict only above this fraction of the largest coefficient, so a
+// critical point lying on a patch edge (coefficients ~ rounding there) never excludes both patches.
+constexpr double kSignMargin = 1e-12;
+
+// Homogeneous poles of the iso-curve at fixed u (fixed_u) or fixed v: the other direction's poles
+// combined with the basis functions at the fixed value.
+BSplineCurve<3> iso_curve(const BSplineSurface<3>& s, bool fixed_u, double value) {
+  const int p = fixed_u ? s.degree_u() : s.degree_v();
+  const auto& K = fixed_u ? s.knots_u() : s.knots_v();
+  const int n = fixed_u ? s.num_poles_u() : s.num_poles_v();
+  const int m = fixed_u ? s.num_poles_v() : s.num_poles_u();
+  const int span = find_span(K.data(), n - 1, p, value);
+  double N[kMaxDegree + 1];
+  basis_funs(span, value, p, K.data(), N);
+  Eigen::Matrix<double, 4, Eigen::Dynamic> H(4, m);
+  for (int j = 0; j < m; ++j) {
+    Eigen::Vector4d q = Eigen::Vector4d::Zero();
+    for (int k = 0; k <= p; ++k) {
+      const int i = span - p + k;
+      q += N[k] * (fixed_u ? s.homogeneous_pole(i, j) : s.homogeneous_pole(j, i));
+    }
+    H.col(j) = q;
+  }
+  return fixed_u ? BSplineCurve<3>::from_homogeneous(s.degree_v(), s.knots_v(), H, s.is_periodic_v())
+                 : BSplineCurve<3>::from_homogeneous(s.degree_u(), s.knots_u(), H, s.is_periodic_u());
+}
+
+// c (na+nb-1) x (ma+mb-1) += a (na x ma) * b (nb x mb), plain 2D convolution of scaled Bernstein
+// coefficients (c~_kl = C(n,k) C(m,l) c_kl multiply without further factors). Vector entries (dim
+// components each) are combined by the dot product.
+void conv2(const double* a, int na, int ma, const double* b, int nb, int mb, int dim, double sign, double* c) {
+  const int mc = ma + mb - 1;
+  for (int i = 0; i < na; ++i)
+    for (int j = 0; j < ma; ++j) {
+      const double* x = a + (i * ma + j) * dim;
+      for (int k = 0; k < nb; ++k) {
+        double* row = c + (i + k) * mc + j;
+        const double* y = b + (k * mb) * dim;
+        for (int l = 0; l < mb; ++l) {
+          double s = 0;
+          for (int d = 0; d < dim; ++d) s += x[d] * y[l * dim + d];
+          row[l] += sign * s;
+        }
+      }
+    }
+}
+
+}  // namespace
+
+SurfaceProjector::~SurfaceProjector() = default;
+
+SurfaceProjector::SurfaceProjector(const BSplineSurface<3>& surface, double tolerance)
+    : s_(&surface), pu_(surface.degree_u()), pv_(surface.degree_v()), rational_(surface.is_rational()) {
+  umin_ = surface.first_u();
+  umax_ = surface.last_u();
+  vmin_ = surface.first_v();
+  vmax_ = surface.last_v();
+  const auto patches = surface_bezier_patches(surface);
+  npatch_ = static_cast<int>(patches.size());
+  const int block = (pu_ + 1) * (pv_ + 1) * 4;
+  BoundingBox<3> all;
+  for (const auto& p : patches) {
+    patch_dom_.push_back(Piece{p.u0, p.u1, p.v0, p.v1, 0});
+    patch_box_.push_back(p.box);
+    all.add(p.box);
+    patch_poles_.insert(patch_poles_.end(), p.hpoles.data(), p.hpoles.data() + block);
+  }
+  const double scale = all.diagonal();
+  tol_ = tolerance > 0 ? tolerance : 1e-12 * (1.0 + scale);
+  merge_tol_ = 1e-6 * (1.0 + scale);
+
+  // Boundaries (not across a periodic seam) and creases (knots of multiplicity >= degree: C0 lines).
+  auto add_iso = [&](bool fixed_u, double value) {
+    IsoCurve iso{fixed_u, value, iso_curve(surface, fixed_u, value), nullptr};
+    iso_.push_back(std::move(iso));
+  };
+  if (!surface.is_periodic_u()) {
+    add_iso(true, umin_);
+    add_iso(true, umax_);
+  }
+  if (!surface.is_periodic_v()) {
+    add_iso(false, vmin_);
+    add_iso(false, vmax_);
+  }
+  for (int dir = 0; dir < 2; ++dir) {
+    const auto& K = dir == 0 ? surface.knots_u() : surface.knots_v();
+    const int p = dir == 0 ? pu_ : pv_;
+    const double lo = dir == 0 ? umin_ : vmin_, hi = dir == 0 ? umax_ : vmax_;
+    const auto dk = distinct_knots(K);
+    for (std::size_t i = 0; i < dk.values.size(); ++i)
+      if (dk.values[i] > lo && dk.values[i] < hi && dk.mults[i] >= p) add_iso(dir == 0, dk.values[i]);
+  }
+  // Projectors point at the curves stored in iso_, which no longer moves.
+  for (auto& iso : iso_) iso.proj = std::make_unique<CurveProjector<3>>(iso.curve, tol_);
+
+  for (int k = 0; k <= pu_; ++k) bu_.push_back(binomial(pu_, k));
+  for (int k = 0; k <= pv_; ++k) bv_.push_back(binomial(pv_, k));
+  for (int k = 0; k < pu_; ++k) bu1_.push_back(pu_ * binomial(pu_ - 1, k));
+  for (int k = 0; k < pv_; ++k) bv1_.push_back(pv_ * binomial(pv_ - 1, k));
+  const std::size_t n1 = static_cast<std::size_t>((pu_ + 1) * (pv_ + 1));
+  const std::size_t n2 = static_cast<std::size_t>((2 * pu_ + 1) * (2 * pv_ + 1));
+  Ds_.resize(3 * n1);
+  Dd_.resize(3 * n1);
+  ws_.resize(n1);
+  wd_.resize(n1);
+  X_.resize(n2);
+  Y_.resize(n2);
+  H_.resize(static_cast<std::size_t>((3 * pu_ + 1) * (3 * pv_ + 1)));
+  stack_.reserve(2 * kMaxDepth + 4);
+  pool_.resize(static_cast<std::size_t>((2 * kMaxDepth + 4) * block));
+}
+
+void SurfaceProjector::consider(double u, double v, double dist, const Eigen::Vector3d& point) {
+  if (!(dist <= best_ + tol_)) return;
+  if (!have_best_ && dist > best_) return;  // beyond the search radius
+  if (dist < best_ || !have_best_) {
+    best_ = dist;
+    best_u_ = u;
+    best_v_ = v;
+    have_best_ = true;
+  }
+  cands_.push_back(Candidate{u, v, dist, point});
+}
+
+// Bernstein coefficients of h_u (along_u) or h_v on the patch; D holds the unscaled D = A - wP (3 per
+// pole), w the weights, Ds_/ws_/Y_ the scaled D, w and D.D. Returns false when h has one strict sign
+// (no critical point); `variation` receives 2 max|h| / min(w)^3, the bound of |d(dist^2)/dt|.
+bool SurfaceProjector::has_critical_point(const double* D, const double* w, bool along_u, double& variation) {
+  const int a = pu_, b = pv_;
+  const int na = along_u ? a : a + 1, nb = along_u ? b + 1 : b;  // derivative pole grid
+  for (int k = 0; k < na; ++k)
+    for (int l = 0; l < nb; ++l) {
+      const int i0 = k * (b + 1) + l, i1 = along_u ? (k + 1) * (b + 1) + l : k * (b + 1) + l + 1;
+      const double sc = along_u ? bu1_[k] * bv_[l] : bu_[k] * bv1_[l];
+      for (int d = 0; d < 3; ++d) Dd_[(k * nb + l) * 3 + d] = sc * (D[i1 * 3 + d] - D[i0 * 3 + d]);
+      wd_[k * nb + l] = sc * (w[i1] - w[i0]);
+    }
+  const int xn = a + 1 + na - 1, xm = b + 1 + nb - 1;  // X = D.D_t grid
+  std::fill(X_.begin(), X_.begin() + xn * xm, 0.0);
+  conv2(Ds_.data(), a + 1, b + 1, Dd_.data(), na, nb, 3, 1.0, X_.data());
+  int hn = xn, hm = xm;
+  const double* h = X_.data();
+  if (rational_) {
+    hn = a + xn;
+    hm = b + xm;
+    std::fill(H_.begin(), H_.begin() + hn * hm, 0.0);
+    conv2(ws_.data(), a + 1, b + 1, X_.data(), xn, xm, 1, 1.0, H_.data());
+    conv2(wd_.data(), na, nb, Y_.data(), 2 * a + 1, 2 * b + 1, 1, -1.0, H_.data());
+    h = H_.data();
+  }
+  double hmax = 0, hmin_signed_pos = 1e300, hmax_signed_neg = -1e300;
+  for (int k = 0; k < hn; ++k) {
+    const double ik = 1.0 / binomial(hn - 1, k);
+    for (int l = 0; l < hm; ++l) {
+      const double x = h[k * hm + l] * ik / binomial(hm - 1, l);
+      hmax = std::max(hmax, std::abs(x));
+      hmin_signed_pos = std::min(hmin_signed_pos, x);
+      hmax_signed_neg = std::max(hmax_signed_neg, x);
+    }
+  }
+  double wmin = 1.0;
+  if (rational_) {
+    wmin = w[0];
+    for (int i = 0; i < (a + 1) * (b + 1); ++i) wmin = std::min(wmin, w[i]);
+  }
+  variation = 2.0 * hmax / (wmin * wmin * wmin);
+  const double margin = kSignMargin * hmax;
+  return !(hmin_signed_pos > margin || hmax_signed_neg < -margin);
+}
+
+// Damped Newton (Levenberg-Marquardt) on grad(|S - P|^2 / 2) = 0 with the analytic Hessian, clamped to
+// the domain, with backtracking so the distance never increases.
+void SurfaceProjector::newton(double u, double v) {
+  Eigen::Vector3d d[9];
+  const double eu = 1e-15 * (umax_ - umin_ + std::abs(umax_)), ev = 1e-15 * (vmax_ - vmin_ + std::abs(vmax_));
+  Eigen::Vector3d S = s_->point(u, v);
+  double f = 0.5 * (S - P_).squaredNorm();
+  for (int it = 0; it < 40; ++it) {
+    s_->derivatives(u, v, 2, d);
+    const Eigen::Vector3d r = d[0] - P_;
+    const Eigen::Vector3d &Su = d[3], &Sv = d[1], &Suu = d[6], &Suv = d[4], &Svv = d[2];
+    const Eigen::Vector2d g(Su.dot(r), Sv.dot(r));
+    Eigen::Matrix2d H;
+    H << Su.dot(Su) + Suu.dot(r), Su.dot(Sv) + Suv.dot(r), Su.dot(Sv) + Suv.dot(r), Sv.dot(Sv) + Svv.dot(r);
+    // Shift H to positive definite when needed (smallest eigenvalue of a symmetric 2x2).
+    const double tr = H.trace(), det = H(0, 0) * H(1, 1) - H(0, 1) * H(1, 0);
+    const double lmin = 0.5 * tr - std::sqrt(std::max(0.0, 0.25 * tr * tr - det));
+    const double floor = 1e-12 * std::max(1e-300, std::abs(tr));
+    if (lmin < floor) H += Eigen::Matrix2d::Identity() * (floor - lmin + 1e-3 * std::abs(tr));
+    const double dH = H(0, 0) * H(1, 1) - H(0, 1) * H(1, 0);
+    Eigen::Vector2d step(-(H(1, 1) * g[0] - H(0, 1) * g[1]) / dH, -(H(0, 0) * g[1] - H(1, 0) * g[0]) / dH);
+    bool moved = false;
+    for (int half = 0; half < 40; ++half) {
+      const double un = std::clamp(u + step[0], umin_, umax_), vn = std::clamp(v + step[1], vmin_, vmax_);
+      const Eigen::Vector3d Sn = s_->point(un, vn);
+      const double fn = 0.5 * (Sn - P_).squaredNorm();
+      if (fn <= f) {
+        moved = std::abs(un - u) > eu || std::abs(vn - v) > ev;
+        u = un;
+        v = vn;
+        S = Sn;
+        f = fn;
+        break;
+      }
+      step *= 0.5;
+    }
+    if (!moved) break;
+  }
+  consider(u, v, (S - P_).norm(), S);
+}
+
+void SurfaceProjector::examine(const double* hp, const Piece& piece) {
+  const int a = pu_, b = pv_;
+  const int n = (a + 1) * (b + 1);
+  double D[(kMaxDegree + 1) * (kMaxDegree + 1) * 3];
+  double w[(kMaxDegree + 1) * (kMaxDegree + 1)];
+  BoundingBox<3> box;
+  int nearest = 0;
+  double nearest_d = 1e300;
+  for (int i = 0; i < n; ++i) {
+    w[i] = hp[i * 4 + 3];
+    const Eigen::Vector3d q(hp[i * 4] / w[i], hp[i * 4 + 1] / w[i], hp[i * 4 + 2] / w[i]);
+    box.add(q);
+    const double dq = (q - P_).squaredNorm();
+    if (dq < nearest_d) {
+      nearest_d = dq;
+      nearest = i;
+    }
+    for (int d = 0; d < 3; ++d) D[i * 3 + d] = hp[i * 4 + d] - w[i] * P_[d];
+  }
+  double lb = box.distance(P_);
+  // Directional bound: |X - P| >= (X - P).n >= min_j (Q_j - P).n for X in the hull of the poles.
+  const Eigen::Vector3d qn = Eigen::Vector3d(D[nearest * 3], D[nearest * 3 + 1], D[nearest * 3 + 2]) / w[nearest];
+  if (qn.norm() > 0) {
+    const Eigen::Vector3d nrm = qn.normalized();
+    double m = 1e300;
+    for (int i = 0; i < n; ++i) m = std::min(m, (D[i * 3] * nrm[0] + D[i * 3 + 1] * nrm[1] + D[i * 3 + 2] * nrm[2]) / w[i]);
+    lb = std::max(lb, m);
+  }
+  if (lb > best_ + tol_) return;
+
+  for (int k = 0; k <= a; ++k)
+    for (int l = 0; l <= b; ++l) {
+      const int i = k * (b + 1) + l;
+      const double sc = bu_[k] * bv_[l];
+      for (int d = 0; d < 3; ++d) Ds_[i * 3 + d] = sc * D[i * 3 + d];
+      ws_[i] = sc * w[i];
+    }
+  if (rational_) {
+    std::fill(Y_.begin(), Y_.end(), 0.0);
+    conv2(Ds_.data(), a + 1, b + 1, Ds_.data(), a + 1, b + 1, 3, 1.0, Y_.data());
+  }
+  double Vu = 0, Vv = 0;
+  if (!has_critical_point(D, w, true, Vu)) return;
+  if (!has_critical_point(D, w, false, Vv)) return;
+  const double dist0 = std::sqrt(D[0] * D[0] + D[1] * D[1] + D[2] * D[2]) / w[0];
+  if (dist0 - std::sqrt(std::max(0.0, dist0 * dist0 - Vu - Vv)) <= tol_) {
+    // Flat: the distance is within tol of the corner's everywhere; the corners represent the patch.
+    const int corners[4] = {0, b, a * (b + 1), a * (b + 1) + b};
+    const double cu[4] = {piece.u0, piece.u0, piece.u1, piece.u1}, cv[4] = {piece.v0, piece.v1, piece.v0, piece.v1};
+    for (int c = 0; c < 4; ++c) {
+      const int i = corners[c];
+      const Eigen::Vector3d q(hp[i * 4] / w[i], hp[i * 4 + 1] / w[i], hp[i * 4 + 2] / w[i]);
+      consider(cu[c], cv[c], (q - P_).norm(), q);
+    }
+    return;
+  }
+  const double um = 0.5 * (piece.u0 + piece.u1), vm = 0.5 * (piece.v0 + piece.v1);
+  if (piece.depth >= kMaxDepth) {
+    const Eigen::Vector3d q = s_->point(um, vm);
+    consider(um, vm, (q - P_).norm(), q);
+    return;
+  }
+  // Newton from the parameter of the nearest pole (Greville-like position) unless the current best
+  // point already lies in this patch (then the halves are examined without repeating it).
+  const bool best_inside = have_best_ && best_u_ >= piece.u0 && best_u_ <= piece.u1 && best_v_ >= piece.v0 &&
+                           best_v_ <= piece.v1;
+  if (!best_inside) {
+    const int k = nearest / (b + 1), l = nearest % (b + 1);
+    newton(piece.u0 + (piece.u1 - piece.u0) * k / a, piece.v0 + (piece.v1 - piece.v0) * l / b);
+  }
+  // Split along the direction in which the control net is longer.
+  double len_u = 0, len_v = 0;
+  for (int k = 0; k <= a; ++k)
+    for (int l = 0; l <= b; ++l) {
+      const int i = k * (b + 1) + l;
+      const Eigen::Vector3d q(hp[i * 4] / w[i], hp[i * 4 + 1] / w[i], hp[i * 4 + 2] / w[i]);
+      if (k < a) {
+        const int j = i + b + 1;
+        len_u += (Eigen::Vector3d(hp[j * 4], hp[j * 4 + 1], hp[j * 4 + 2]) / w[j] - q).norm();
+      }
+      if (l < b) {
+        const int j = i + 1;
+        len_v += (Eigen::Vector3d(hp[j * 4], hp[j * 4 + 1], hp[j * 4 + 2]) / w[j] - q).norm();
+      }
+    }
+  const bool along_u = len_u * (b + 1) >= len_v * (a + 1);
+  const int block = n * 4;
+  const std::size_t top = stack_.size();
+  if (pool_.size() < (top + 2) * static_cast<std::size_t>(block)) pool_.resize((top + 2) * static_cast<std::size_t>(block));
+  double* right = &pool_[top * static_cast<std::size_t>(block)];
+  double* left = right + block;
+  split_bezier_patch(a, b, 4, hp, along_u, 0.5, left, right);
+  Piece lp = piece, rp = piece;
+  lp.depth = rp.depth = piece.depth + 1;
+  if (along_u) {
+    lp.u1 = rp.u0 = um;
+  } else {
+    lp.v1 = rp.v0 = vm;
+  }
+  stack_.push_back(rp);
+  stack_.push_back(lp);
+}
+
+SurfaceProjection SurfaceProjector::run(const Eigen::Vector3d& P, double max_distance,
+                                        std::vector<Eigen::Vector2d>* params) {
+  require(P.allFinite(), "projection point must have finite coordinates");
+  require(max_distance >= 0, "max_distance must be >= 0");
+  const int block = (pu_ + 1) * (pv_ + 1) * 4;
+  P_ = P;
+  cands_.clear();
+  have_best_ = false;
+  best_ = max_distance;
+  // Patch corners are exact surface points: a cheap first upper bound.
+  for (int k = 0; k < npatch_; ++k) {
+    const double* hp = &patch_poles_[static_cast<std::size_t>(k * block)];
+    const Eigen::Vector3d q = Eigen::Vector3d(hp[0], hp[1], hp[2]) / hp[3];
+    consider(patch_dom_[static_cast<std::size_t>(k)].u0, patch_dom_[static_cast<std::size_t>(k)].v0, (q - P).norm(), q);
+  }
+  for (auto& iso : iso_) {
+    const auto r = iso.proj->project(P, best_ + tol_);
+    if (!r.found) continue;
+    if (iso.fixed_u) consider(iso.value, r.param, r.distance, r.point);
+    else consider(r.param, iso.value, r.distance, r.point);
+  }
+  order_.clear();
+  for (int k = 0; k < npatch_; ++k) {
+    const double lb = patch_box_[static_cast<std::size_t>(k)].distance(P);
+    if (lb <= best_ + tol_) order_.emplace_back(lb, k);
+  }
+  std::sort(order_.begin(), order_.end());
+  for (const auto& [lb, k] : order_) {
+    if (lb > best_ + tol_) break;
+    stack_.clear();
+    examine(&patch_poles_[static_cast<std::size_t>(k * block)], patch_dom_[static_cast<std::size_t>(k)]);
+    while (!stack_.empty()) {
+      const Piece piece = stack_.back();
+      stack_.pop_back();
+      // examine() writes the halves into the popped block: copy it out first.
+      double hp[(kMaxDegree + 1) * (kMaxDegree + 1) * 4];
+      std::memcpy(hp, &pool_[stack_.size() * static_cast<std::size_t>(block)], sizeof(double) * block);
+      examine(hp, piece);
+    }
+  }
+  SurfaceProjection res;
+  if (!have_best_) {
+    if (params) params->clear();
+    return res;
+  }
+  std::sort(cands_.begin(), cands_.end(), [](const Candidate& x, const Candidate& y) { return x.dist < y.dist; });
+  const double limit = best_ + tol_;
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < cands_.size() && cands_[i].dist <= limit; ++i) {
+    bool dup = false;
+    for (std::size_t j = 0; j < kept && !dup; ++j) dup = (cands_[i].point - cands_[j].point).norm() <= merge_tol_;
+    if (!dup) cands_[kept++] = cands_[i];
+  }
+  res.found = true;
+  res.u = cands_[0].u;
+  res.v = cands_[0].v;
+  res.point = cands_[0].point;
+  res.distance = cands_[0].dist;
+  res.num_minima = static_cast<int>(kept);
+  if (params) {
+    params->clear();
+    for (std::size_t j = 0; j < kept; ++j) params->emplace_back(cands_[j].u, cands_[j].v);
+  }
+  return res;
+}
+
+SurfaceProjection SurfaceProjector::project(const Eigen::Vector3d& P, double max_distance) {
+  return run(P, max_distance, nullptr);
+}
+
+SurfaceProjection SurfaceProjector::project_all(const Eigen::Vector3d& P, std::vector<Eigen::Vector2d>& params,
+                                                double max_distance) {
+  return run(P, max_distance, &params);
+}
+
+SurfaceProjection project_point_on_surface(const BSplineSurface<3>& surface, const Eigen::Vector3d& P) {
+  SurfaceProjector proj(surface);
+  return proj.project(P);
+}
+
+}  // namespace cg
