@@ -8,8 +8,13 @@
 //   depth  = distance into the wall along the inward normal, mm (0 on the surface, > 0 inside).
 // point = S(u, v) - depth * n(u, v), n the outward unit normal.
 #include <Eigen/Core>
+#include <memory>
 
 #include "src/blade/blade_surface.hpp"
+
+namespace cg {
+class SurfaceProjector;
+}
 
 namespace cg::blade {
 
@@ -34,17 +39,20 @@ struct BladeLocateResult {
   double u = 0, v = 0;  // surface parameters of the foot point
 };
 
+/// One per thread (locate() reuses the projector's work buffers); the model must outlive it.
 class BladeCoordinates {
  public:
-  /// The model must outlive this object.
   explicit BladeCoordinates(const BladeModel& model);
+  ~BladeCoordinates();
+  BladeCoordinates(const BladeCoordinates&) = delete;
+  BladeCoordinates& operator=(const BladeCoordinates&) = delete;
 
   BladeFrame frame(double span, double chord) const;
   Eigen::Vector3d point(const BladeCoordinate& c) const;
-  /// Inverse by orthogonal projection onto the surface (Newton on the foot-point conditions, started from
-  /// the nearest point of a sampled grid). found=false when the foot point is outside the surface domain
-  /// or Newton does not converge. Exact inverse of point() for depth smaller than the local radius of
-  /// curvature.
+  /// Inverse by global orthogonal projection onto the surface (src/algo/project_point_surface).
+  /// found=false when the closest point lies on the over-build end (v at the domain boundary with the point
+  /// beyond it). Exact inverse of point() while depth is below the local half-thickness and radius of
+  /// curvature (the closest surface point is then the one the point was built from).
   BladeLocateResult locate(const Eigen::Vector3d& p) const;
 
   const BladeModel& model() const { return *model_; }
@@ -52,9 +60,7 @@ class BladeCoordinates {
  private:
   const BladeModel* model_;
   double normal_sign_ = 1;  // +1 when S_u x S_v points outward
-  int grid_nu_ = 0, grid_nv_ = 0;
-  std::vector<Eigen::Vector3d> grid_;
-  std::vector<double> grid_u_, grid_v_;
+  std::unique_ptr<SurfaceProjector> projector_;
 };
 
 }  // namespace cg::blade

@@ -13,6 +13,7 @@
 #include <optional>
 #include <vector>
 
+#include "src/blade/curve_integral.hpp"
 #include "src/core/bspline_curve.hpp"
 
 namespace cg::blade {
@@ -35,7 +36,7 @@ struct MeridionalNetDefinition {
   MeridionalPolyline leading_edge;   // optional (empty = none); required by meridional blades
   MeridionalPolyline trailing_edge;  // optional
   std::vector<MeridionalPolyline> stations;
-  /// Points per streamline used for blending streamlines and for the crossing check.
+  /// Points per streamline used when blending streamlines (interpolated spans, over-build), [8, 100000].
   int samples = 129;
 };
 
@@ -54,22 +55,19 @@ class Streamline {
 
   /// Meridional arc length from the curve start to u, mm.
   double meridional_length(double u) const;
-  double total_length() const { return m_.back(); }
+  double total_length() const { return m_.total(); }
   /// m'(u) = integral_{u0}^{u} |C'| / r du (dimensionless).
   double m_prime(double u) const;
-  double total_m_prime() const { return mp_.back(); }
+  double total_m_prime() const { return mp_.total(); }
   /// Inverse of m_prime (Newton with bisection safeguard). Throws InvalidGeometry outside [0, total].
   double param_at_m_prime(double m_prime) const;
   /// Inverse of meridional_length.
   double param_at_length(double m) const;
 
  private:
-  double integrate(double a, double b, bool divide_by_r) const;
-  double invert(double target, bool divide_by_r) const;
   BSplineCurve<2> curve_;
   double span_ = 0;
-  std::vector<double> breaks_;  // quadrature cells (knot spans subdivided)
-  std::vector<double> m_, mp_;  // cumulative m and m' at breaks_
+  detail::CurveIntegral m_, mp_;
 };
 
 /// Where a quasi-orthogonal cuts one streamline.
@@ -88,8 +86,9 @@ struct QuasiOrthogonal {
 /// The validated net. Value type (copyable).
 class MeridionalNet {
  public:
-  /// Builds and validates: r > 0 on every contour, neighbouring streamlines do not touch or cross
-  /// (sampled signed distance keeps one sign), every station cuts every streamline exactly once.
+  /// Builds and validates: r > 0 on every contour, neighbouring streamlines do not touch or cross (no
+  /// curve-curve intersection, src/algo/intersect_curves, and the same side as casing vs hub at mid-length),
+  /// every station cuts every streamline exactly once.
   /// Throws InvalidGeometry naming the offending contour.
   explicit MeridionalNet(const MeridionalNetDefinition& def);
 
@@ -118,8 +117,9 @@ class MeridionalNet {
 /// Throws InvalidGeometry for < 2 points or coincident consecutive points; `what` names the contour.
 BSplineCurve<2> meridional_curve(const MeridionalPolyline& points, const char* what);
 
-/// The unique cut of `station` with `streamline`. found=false when there is no cut; throws
-/// InvalidGeometry when there is more than one.
+/// The unique cut of `station` with `streamline` (src/algo/intersect_curves, tolerance 1e-9 mm, so a
+/// station ending exactly on a contour counts). found=false when there is no cut; throws InvalidGeometry
+/// when there is more than one or the curves overlap.
 struct StationCutResult {
   bool found = false;
   StationCut cut;

@@ -84,6 +84,8 @@ struct SectionProfile {
   /// suction side to the TE at fraction c of that side's arc length; c in [-1, 0] likewise over the
   /// pressure side (c = -1 is the TE again). Arc lengths by Gauss-Legendre quadrature + Newton.
   double param_at_chordwise(double c) const;
+  /// Batched form (the arc-length tables are built once). Parameters lie in [le_param, le_param + period].
+  std::vector<double> params_at_chordwise(const std::vector<double>& c) const;
   double suction_length() const;
   double pressure_length() const;
 };

@@ -1,0 +1,96 @@
+#include "src/blade/curve_integral.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "src/core/error.hpp"
+
+namespace cg::blade::detail {
+namespace {
+
+constexpr int kCellsPerSpan = 4;
+// 8-point Gauss-Legendre nodes/weights on [-1, 1] (Abramowitz & Stegun 25.4.30).
+constexpr double kNodes[8] = {-0.9602898564975363, -0.7966664774136267, -0.5255324099163290, -0.1834346424956498,
+                              0.1834346424956498,  0.5255324099163290,  0.7966664774136267,  0.9602898564975363};
+constexpr double kWeights[8] = {0.1012285362903763, 0.2223810344533745, 0.3137066458778873, 0.3626837833783620,
+                                0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
+
+}  // namespace
+
+double CurveIntegral::integrand(const BSplineCurve<2>& curve, double u) const {
+  Eigen::Vector2d d[2];
+  curve.derivatives(u, 1, d);
+  const double speed = d[1].norm();
+  return f_ == Integrand::ArcLength ? speed : speed / d[0].y();
+}
+
+double CurveIntegral::integrate_cell(const BSplineCurve<2>& curve, double lo, double hi) const {
+  const double mid = 0.5 * (lo + hi), half = 0.5 * (hi - lo);
+  double s = 0;
+  for (int k = 0; k < 8; ++k) s += kWeights[k] * integrand(curve, mid + half * kNodes[k]);
+  return s * half;
+}
+
+CurveIntegral::CurveIntegral(const BSplineCurve<2>& curve, double a, double b, Integrand f) : f_(f) {
+  require(b > a, "curve integral: empty parameter interval");
+  // Knot values inside (a, b), also those of following periods for a periodic curve.
+  std::vector<double> cuts{a};
+  const auto& U = curve.knots();
+  const double T = curve.period();
+  const int wraps = curve.is_periodic() ? static_cast<int>(std::ceil((b - curve.first_param()) / T)) + 1 : 1;
+  for (int w = -1; w < wraps; ++w) {
+    const double shift = curve.is_periodic() ? w * T : 0.0;
+    if (!curve.is_periodic() && w != 0) continue;
+    for (int i = curve.degree(); i <= curve.num_poles(); ++i) {
+      const double k = U[static_cast<std::size_t>(i)] + shift;
+      if (k > a && k < b) cuts.push_back(k);
+    }
+  }
+  cuts.push_back(b);
+  std::sort(cuts.begin(), cuts.end());
+  cuts.erase(std::unique(cuts.begin(), cuts.end(), [&](double x, double y) { return y - x <= 1e-14 * (b - a); }),
+             cuts.end());
+  if (cuts.back() != b) cuts.back() = b;
+  breaks_.clear();
+  for (std::size_t i = 0; i + 1 < cuts.size(); ++i)
+    for (int c = 0; c < kCellsPerSpan; ++c) breaks_.push_back(cuts[i] + (cuts[i + 1] - cuts[i]) * c / kCellsPerSpan);
+  breaks_.push_back(b);
+  cumulative_.assign(breaks_.size(), 0.0);
+  for (std::size_t i = 0; i + 1 < breaks_.size(); ++i)
+    cumulative_[i + 1] = cumulative_[i] + integrate_cell(curve, breaks_[i], breaks_[i + 1]);
+}
+
+double CurveIntegral::at(const BSplineCurve<2>& curve, double u) const {
+  u = std::clamp(u, breaks_.front(), breaks_.back());
+  auto it = std::upper_bound(breaks_.begin(), breaks_.end(), u);
+  std::size_t i = static_cast<std::size_t>(std::max<std::ptrdiff_t>(0, (it - breaks_.begin()) - 1));
+  if (i + 1 >= breaks_.size()) return cumulative_.back();
+  if (u == breaks_[i]) return cumulative_[i];
+  return cumulative_[i] + integrate_cell(curve, breaks_[i], u);
+}
+
+double CurveIntegral::inverse(const BSplineCurve<2>& curve, double value) const {
+  value = std::clamp(value, 0.0, cumulative_.back());
+  auto it = std::upper_bound(cumulative_.begin(), cumulative_.end(), value);
+  std::size_t i = static_cast<std::size_t>(std::max<std::ptrdiff_t>(0, (it - cumulative_.begin()) - 1));
+  if (i + 1 >= breaks_.size()) return breaks_.back();
+  double lo = breaks_[i], hi = breaks_[i + 1];
+  const double base = cumulative_[i];
+  // Start from linear interpolation inside the cell; Newton, falling back to bisection when a step
+  // leaves the bracket (the integrand is positive, so at() is increasing).
+  const double cell = cumulative_[i + 1] - base;
+  double u = cell > 0 ? lo + (hi - lo) * (value - base) / cell : lo;
+  const double tol = 1e-15 * (std::abs(breaks_.back()) + (breaks_.back() - breaks_.front()));
+  for (int iter = 0; iter < 60; ++iter) {
+    const double g = base + integrate_cell(curve, breaks_[i], u) - value;
+    if (g > 0) hi = u; else lo = u;
+    const double d = integrand(curve, u);
+    double next = d > 0 ? u - g / d : 0.5 * (lo + hi);
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    if (std::abs(next - u) <= tol) return next;
+    u = next;
+  }
+  return u;
+}
+
+}  // namespace cg::blade::detail

@@ -1,0 +1,40 @@
+#pragma once
+// Cumulative integrals along a planar curve: arc length (integrand |C'|) and the conformal meridional
+// coordinate (integrand |C'| / C_y, with C = (x, r)). Internal to the blade model.
+//
+// The domain [a, b] is cut at the knots (the integrand is smooth inside a span) and every span into
+// kCellsPerSpan cells; each cell gets 8-point Gauss-Legendre (exact for polynomials of degree 15, so the
+// error on a smooth cell is far below 1e-12 relative). Values inside a cell are integrated on demand with
+// the same rule; the inverse uses Newton (derivative = integrand) safeguarded by the cell bracket.
+#include <vector>
+
+#include "src/core/bspline_curve.hpp"
+
+namespace cg::blade::detail {
+
+enum class Integrand { ArcLength, ArcLengthOverRadius };
+
+class CurveIntegral {
+ public:
+  CurveIntegral() = default;
+  /// a < b; for a periodic curve b may exceed the period end (the curve wraps).
+  CurveIntegral(const BSplineCurve<2>& curve, double a, double b, Integrand f);
+
+  double first() const { return breaks_.front(); }
+  double last() const { return breaks_.back(); }
+  double total() const { return cumulative_.back(); }
+  /// Integral from first() to u (u clamped into [first(), last()]).
+  double at(const BSplineCurve<2>& curve, double u) const;
+  /// u in [first(), last()] with at(u) = value (value clamped into [0, total()]).
+  double inverse(const BSplineCurve<2>& curve, double value) const;
+  /// The integrand at u.
+  double integrand(const BSplineCurve<2>& curve, double u) const;
+
+ private:
+  double integrate_cell(const BSplineCurve<2>& curve, double lo, double hi) const;
+  Integrand f_ = Integrand::ArcLength;
+  std::vector<double> breaks_;
+  std::vector<double> cumulative_;
+};
+
+}  // namespace cg::blade::detail
