@@ -122,7 +122,12 @@ SurfaceProjector::SurfaceProjector(const BSplineSurface<3>& surface, double tole
   wd_.resize(n1);
   X_.resize(n2);
   Y_.resize(n2);
-  H_.resize(static_cast<std::size_t>((3 * pu_ + 1) * (3 * pv_ + 1)));
+  hu_.resize(static_cast<std::size_t>((3 * pu_ + 1) * (3 * pv_ + 1)));
+  hv_.resize(hu_.size());
+  for (int n = 0; n <= 3 * std::max(pu_, pv_) + 1; ++n) {
+    inv_binom_.emplace_back();
+    for (int k = 0; k <= n; ++k) inv_binom_.back().push_back(1.0 / binomial(n, k));
+  }
   stack_.reserve(2 * kMaxDepth + 4);
   pool_.resize(static_cast<std::size_t>((2 * kMaxDepth + 4) * block));
 }
@@ -134,15 +139,18 @@ void SurfaceProjector::consider(double u, double v, double dist, const Eigen::Ve
     best_ = dist;
     best_u_ = u;
     best_v_ = v;
+    best_point_ = point;
     have_best_ = true;
   }
   cands_.push_back(Candidate{u, v, dist, point});
 }
 
 // Bernstein coefficients of h_u (along_u) or h_v on the patch; D holds the unscaled D = A - wP (3 per
-// pole), w the weights, Ds_/ws_/Y_ the scaled D, w and D.D. Returns false when h has one strict sign
-// (no critical point); `variation` receives 2 max|h| / min(w)^3, the bound of |d(dist^2)/dt|.
-bool SurfaceProjector::has_critical_point(const double* D, const double* w, bool along_u, double& variation) {
+// pole), w the weights, Ds_/ws_/Y_ the scaled D, w and D.D. The unscaled coefficients go to `out`
+// (rows x cols). Returns false when h has one strict sign (no critical point); `variation` receives
+// 2 max|h| / min(w)^3, the bound of |d(dist^2)/dt| on the patch.
+bool SurfaceProjector::has_critical_point(const double* D, const double* w, bool along_u, double& variation,
+                                          std::vector<double>& out, int& rows, int& cols) {
   const int a = pu_, b = pv_;
   const int na = along_u ? a : a + 1, nb = along_u ? b + 1 : b;  // derivative pole grid
   for (int k = 0; k < na; ++k)
@@ -153,28 +161,32 @@ bool SurfaceProjector::has_critical_point(const double* D, const double* w, bool
       wd_[k * nb + l] = sc * (w[i1] - w[i0]);
     }
   const int xn = a + 1 + na - 1, xm = b + 1 + nb - 1;  // X = D.D_t grid
-  std::fill(X_.begin(), X_.begin() + xn * xm, 0.0);
-  conv2(Ds_.data(), a + 1, b + 1, Dd_.data(), na, nb, 3, 1.0, X_.data());
   int hn = xn, hm = xm;
-  const double* h = X_.data();
-  if (rational_) {
+  if (!rational_) {
+    std::fill(out.begin(), out.begin() + xn * xm, 0.0);
+    conv2(Ds_.data(), a + 1, b + 1, Dd_.data(), na, nb, 3, 1.0, out.data());
+  } else {
+    std::fill(X_.begin(), X_.begin() + xn * xm, 0.0);
+    conv2(Ds_.data(), a + 1, b + 1, Dd_.data(), na, nb, 3, 1.0, X_.data());
     hn = a + xn;
     hm = b + xm;
-    std::fill(H_.begin(), H_.begin() + hn * hm, 0.0);
-    conv2(ws_.data(), a + 1, b + 1, X_.data(), xn, xm, 1, 1.0, H_.data());
-    conv2(wd_.data(), na, nb, Y_.data(), 2 * a + 1, 2 * b + 1, 1, -1.0, H_.data());
-    h = H_.data();
+    std::fill(out.begin(), out.begin() + hn * hm, 0.0);
+    conv2(ws_.data(), a + 1, b + 1, X_.data(), xn, xm, 1, 1.0, out.data());
+    conv2(wd_.data(), na, nb, Y_.data(), 2 * a + 1, 2 * b + 1, 1, -1.0, out.data());
   }
-  double hmax = 0, hmin_signed_pos = 1e300, hmax_signed_neg = -1e300;
-  for (int k = 0; k < hn; ++k) {
-    const double ik = 1.0 / binomial(hn - 1, k);
+  rows = hn;
+  cols = hm;
+  double hmax = 0, lo = 1e300, hi = -1e300;
+  const double* ik = inv_binom_[static_cast<std::size_t>(hn - 1)].data();
+  const double* il = inv_binom_[static_cast<std::size_t>(hm - 1)].data();
+  for (int k = 0; k < hn; ++k)
     for (int l = 0; l < hm; ++l) {
-      const double x = h[k * hm + l] * ik / binomial(hm - 1, l);
+      double& x = out[static_cast<std::size_t>(k * hm + l)];
+      x *= ik[k] * il[l];
       hmax = std::max(hmax, std::abs(x));
-      hmin_signed_pos = std::min(hmin_signed_pos, x);
-      hmax_signed_neg = std::max(hmax_signed_neg, x);
+      lo = std::min(lo, x);
+      hi = std::max(hi, x);
     }
-  }
   double wmin = 1.0;
   if (rational_) {
     wmin = w[0];
@@ -182,12 +194,39 @@ bool SurfaceProjector::has_critical_point(const double* D, const double* w, bool
   }
   variation = 2.0 * hmax / (wmin * wmin * wmin);
   const double margin = kSignMargin * hmax;
-  return !(hmin_signed_pos > margin || hmax_signed_neg < -margin);
+  return !(lo > margin || hi < -margin);
+}
+
+// Sufficient condition for at most one critical point in the patch: the symmetric part of the
+// Jacobian of (h_u, h_v) with respect to the local (s, t) is positive definite on the whole patch, so
+// the map is injective on the convex patch ((h(x) - h(y)).(x - y) > 0). Bounds of the four partial
+// derivatives come from their Bernstein coefficients (differences of those of h_u, h_v).
+bool SurfaceProjector::single_critical_point() const {
+  const int m = hu_rows_ - 1, n = hu_cols_ - 1;  // h_u degrees; h_v has degrees (m + 1, n - 1)
+  if (m < 1 || n < 1) return false;
+  double a_min = 1e300, d_min = 1e300, e_max = 0;
+  for (int k = 0; k < m; ++k)
+    for (int l = 0; l <= n; ++l)
+      a_min = std::min(a_min, m * (hu_[(k + 1) * (n + 1) + l] - hu_[k * (n + 1) + l]));
+  const int mv = hv_rows_ - 1, nv = hv_cols_ - 1;
+  for (int k = 0; k <= mv; ++k)
+    for (int l = 0; l < nv; ++l)
+      d_min = std::min(d_min, nv * (hv_[k * (nv + 1) + l + 1] - hv_[k * (nv + 1) + l]));
+  if (!(a_min > 0 && d_min > 0)) return false;
+  // d h_u / dt and d h_v / ds share the degrees (m, n - 1) = (mv - 1, nv).
+  for (int k = 0; k <= m; ++k)
+    for (int l = 0; l < n; ++l) {
+      const double bt = n * (hu_[k * (n + 1) + l + 1] - hu_[k * (n + 1) + l]);
+      const double cs = mv * (hv_[(k + 1) * (nv + 1) + l] - hv_[k * (nv + 1) + l]);
+      e_max = std::max(e_max, std::abs(0.5 * (bt + cs)));
+    }
+  return a_min * d_min > e_max * e_max;
 }
 
 // Damped Newton (Levenberg-Marquardt) on grad(|S - P|^2 / 2) = 0 with the analytic Hessian, clamped to
-// the domain, with backtracking so the distance never increases.
-void SurfaceProjector::newton(double u, double v) {
+// the domain, with backtracking so the distance never increases. The end point is a candidate; returns
+// true when it is a critical point (uv receives it).
+bool SurfaceProjector::newton(double u, double v, Eigen::Vector2d& uv) {
   Eigen::Vector3d d[9];
   const double eu = 1e-15 * (umax_ - umin_ + std::abs(umax_)), ev = 1e-15 * (vmax_ - vmin_ + std::abs(vmax_));
   Eigen::Vector3d S = s_->point(u, v);
@@ -224,6 +263,13 @@ void SurfaceProjector::newton(double u, double v) {
     if (!moved) break;
   }
   consider(u, v, (S - P_).norm(), S);
+  uv = Eigen::Vector2d(u, v);
+  // A critical point: the residual is orthogonal to both tangents to ~1e-9 (Newton converges
+  // quadratically, so a converged point is far below this; a stalled one far above).
+  s_->derivatives(u, v, 1, d);
+  const double r = (S - P_).norm();
+  return std::abs(d[2].dot(S - P_)) <= 1e-9 * d[2].norm() * (r + tol_) &&
+         std::abs(d[1].dot(S - P_)) <= 1e-9 * d[1].norm() * (r + tol_);
 }
 
 void SurfaceProjector::examine(const double* hp, const Piece& piece) {
@@ -254,6 +300,13 @@ void SurfaceProjector::examine(const double* hp, const Piece& piece) {
     for (int i = 0; i < n; ++i) m = std::min(m, (D[i * 3] * nrm[0] + D[i * 3 + 1] * nrm[1] + D[i * 3 + 2] * nrm[2]) / w[i]);
     lb = std::max(lb, m);
   }
+  // The same toward the best point: at a foot seen from the convex side this bound equals the distance.
+  if (have_best_ && best_ > 0) {
+    const Eigen::Vector3d nrm = (best_point_ - P_) / best_;
+    double m = 1e300;
+    for (int i = 0; i < n; ++i) m = std::min(m, (D[i * 3] * nrm[0] + D[i * 3 + 1] * nrm[1] + D[i * 3 + 2] * nrm[2]) / w[i]);
+    lb = std::max(lb, m);
+  }
   if (lb > best_ + tol_) return;
 
   for (int k = 0; k <= a; ++k)
@@ -268,8 +321,8 @@ void SurfaceProjector::examine(const double* hp, const Piece& piece) {
     conv2(Ds_.data(), a + 1, b + 1, Ds_.data(), a + 1, b + 1, 3, 1.0, Y_.data());
   }
   double Vu = 0, Vv = 0;
-  if (!has_critical_point(D, w, true, Vu)) return;
-  if (!has_critical_point(D, w, false, Vv)) return;
+  if (!has_critical_point(D, w, true, Vu, hu_, hu_rows_, hu_cols_)) return;
+  if (!has_critical_point(D, w, false, Vv, hv_, hv_rows_, hv_cols_)) return;
   const double dist0 = std::sqrt(D[0] * D[0] + D[1] * D[1] + D[2] * D[2]) / w[0];
   if (dist0 - std::sqrt(std::max(0.0, dist0 * dist0 - Vu - Vv)) <= tol_) {
     // Flat: the distance is within tol of the corner's everywhere; the corners represent the patch.
@@ -290,11 +343,21 @@ void SurfaceProjector::examine(const double* hp, const Piece& piece) {
   }
   // Newton from the parameter of the nearest pole (Greville-like position) unless the current best
   // point already lies in this patch (then the halves are examined without repeating it).
-  const bool best_inside = have_best_ && best_u_ >= piece.u0 && best_u_ <= piece.u1 && best_v_ >= piece.v0 &&
-                           best_v_ <= piece.v1;
-  if (!best_inside) {
-    const int k = nearest / (b + 1), l = nearest % (b + 1);
-    newton(piece.u0 + (piece.u1 - piece.u0) * k / a, piece.v0 + (piece.v1 - piece.v0) * l / b);
+  auto inside = [&](double u, double v) { return u >= piece.u0 && u <= piece.u1 && v >= piece.v0 && v <= piece.v1; };
+  const bool best_inside = have_best_ && inside(best_u_, best_v_);
+  const bool single = single_critical_point();
+  const int k = nearest / (b + 1), l = nearest % (b + 1);
+  const double u_start = piece.u0 + (piece.u1 - piece.u0) * k / a, v_start = piece.v0 + (piece.v1 - piece.v0) * l / b;
+  if (single) {
+    // The patch has at most one critical point: once Newton converges to it inside the patch, the
+    // patch's minimum is there or on its boundary, which is a surface boundary or crease (step 1) or
+    // not a minimum of the surface.
+    Eigen::Vector2d uv;
+    const bool critical = best_inside ? newton(best_u_, best_v_, uv) : newton(u_start, v_start, uv);
+    if (critical && inside(uv.x(), uv.y())) return;
+  } else if (!best_inside) {
+    Eigen::Vector2d uv;
+    newton(u_start, v_start, uv);
   }
   // Split along the direction in which the control net is longer.
   double len_u = 0, len_v = 0;

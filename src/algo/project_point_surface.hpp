@@ -13,7 +13,10 @@
 //     whose Bernstein coefficients follow from products of Bernstein polynomials (likewise h_v). When
 //     all coefficients of h_u (or h_v) have one strict sign, the patch has no critical point (closed
 //     patch) and is discarded (its minimum is on a boundary or crease, handled by step 1).
-//  4. Otherwise Newton's method on grad(|S-P|^2 / 2) = 0 with the analytic Hessian
+//  4. When the symmetric part of the Jacobian of (h_u, h_v) is positive definite on the whole patch
+//     (bounded by Bernstein coefficients), the patch has at most one critical point; once Newton
+//     converges inside the patch, the patch is resolved.
+//  5. Otherwise Newton's method on grad(|S-P|^2 / 2) = 0 with the analytic Hessian
 //     [S_u.S_u + S_uu.r, S_u.S_v + S_uv.r; ., S_v.S_v + S_vv.r] (The NURBS Book 6.1, eq. 6.6), damped
 //     (Levenberg-Marquardt) and clamped to the domain, gives a candidate, and the patch is split by de
 //     Casteljau along its longer direction. A patch on which the distance varies by less than the
@@ -78,8 +81,10 @@ class SurfaceProjector {
   };
   void consider(double u, double v, double dist, const Eigen::Vector3d& point);
   void examine(const double* hp, const Piece& piece);
-  bool has_critical_point(const double* D, const double* w, bool along_u, double& variation);
-  void newton(double u, double v);
+  bool has_critical_point(const double* D, const double* w, bool along_u, double& variation,
+                          std::vector<double>& out, int& rows, int& cols);
+  bool single_critical_point() const;
+  bool newton(double u, double v, Eigen::Vector2d& uv);
   SurfaceProjection run(const Eigen::Vector3d& P, double max_distance, std::vector<Eigen::Vector2d>* params);
 
   const BSplineSurface<3>* s_;
@@ -93,9 +98,13 @@ class SurfaceProjector {
   std::vector<IsoCurve> iso_;
   std::vector<double> bu_, bv_, bu1_, bv1_;  // binomials C(pu,k), pu*C(pu-1,k), ...
   // Work buffers for the Bernstein products (sized in the constructor).
-  std::vector<double> Ds_, Dd_, ws_, wd_, X_, Y_, H_;
+  std::vector<double> Ds_, Dd_, ws_, wd_, X_, Y_;
+  std::vector<double> hu_, hv_;  // unscaled Bernstein coefficients of h_u, h_v of the current patch
+  int hu_rows_ = 0, hu_cols_ = 0, hv_rows_ = 0, hv_cols_ = 0;
+  std::vector<std::vector<double>> inv_binom_;  // 1 / C(n, k)
   Eigen::Vector3d P_;
   double best_ = 0, best_u_ = 0, best_v_ = 0;
+  Eigen::Vector3d best_point_ = Eigen::Vector3d::Zero();
   bool have_best_ = false;
   std::vector<Candidate> cands_;
   std::vector<std::pair<double, int>> order_;
