@@ -232,4 +232,18 @@ BladeSolid build_blade_solid(const BSplineSurface<3>& surface, const EndTrim& hu
   return out;
 }
 
+EndTrim hub_trim(const blade::FlowPathTrim& t) {
+  if (t.straight) return PlaneTrim{Eigen::Vector3d(0, 0, t.hub_z), Eigen::Vector3d::UnitZ()};
+  return RevolvedTrim{t.hub};
+}
+
+EndTrim casing_trim(const blade::FlowPathTrim& t) {
+  if (t.straight) return PlaneTrim{Eigen::Vector3d(0, 0, t.casing_z), Eigen::Vector3d::UnitZ()};
+  return RevolvedTrim{t.casing};
+}
+
+BladeSolid build_blade_solid(const blade::BladeModel& model) {
+  return build_blade_solid(model.surface, hub_trim(model.trim), casing_trim(model.trim));
+}
+
 }  // namespace cg::brep

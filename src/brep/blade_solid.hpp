@@ -19,6 +19,7 @@
 #include <variant>
 #include <vector>
 
+#include "src/blade/blade_surface.hpp"
 #include "src/core/bspline_curve.hpp"
 #include "src/core/bspline_surface.hpp"
 
@@ -64,5 +65,13 @@ struct BladeSolid {
 /// normal, meridional curve with r <= 0) and AlgorithmFailure when the trims do not cut the blade
 /// into one wall between them (e.g. not enough over-build, trims that cross inside the blade).
 BladeSolid build_blade_solid(const BSplineSurface<3>& surface, const EndTrim& hub, const EndTrim& casing);
+
+/// The end trims of a blade model's flow path: the planes z = hub_z and z = casing_z (straight vane)
+/// or the revolved hub and casing contours (meridional).
+EndTrim hub_trim(const blade::FlowPathTrim& trim);
+EndTrim casing_trim(const blade::FlowPathTrim& trim);
+
+/// build_blade_solid(model.surface, hub_trim(model.trim), casing_trim(model.trim)).
+BladeSolid build_blade_solid(const blade::BladeModel& model);
 
 }  // namespace cg::brep

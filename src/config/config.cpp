@@ -1,0 +1,268 @@
+#include "src/config/config.hpp"
+
+#include <fstream>
+#include <sstream>
+
+#include "src/blade/meridional_net.hpp"
+#include "src/blade/section.hpp"
+#include "src/config/json_fields.hpp"
+
+namespace cg::config {
+namespace {
+
+const Range kAny{-HUGE_VAL, HUGE_VAL};
+
+// Polyline of [x, r] points in mm, r > 0.
+blade::MeridionalPolyline polyline(const Field& f, std::size_t min_points) {
+  const std::size_t n = f.expect_array(min_points);
+  blade::MeridionalPolyline out;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Field p = f.item(i);
+    p.expect_array(2, 2);
+    out.emplace_back(p.item(0).number(kAny, "mm"), p.item(1).number(positive(), "mm"));
+  }
+  return out;
+}
+
+blade::MeridionalNetDefinition meridional_net(const Field& f) {
+  f.expect_object({"type", "hub", "casing", "streamlines", "leading_edge", "trailing_edge", "stations", "samples"});
+  blade::MeridionalNetDefinition net;
+  net.hub = polyline(f.at("hub"), 2);
+  net.casing = polyline(f.at("casing"), 2);
+  if (f.has("streamlines")) {
+    const Field s = f.at("streamlines");
+    const std::size_t n = s.expect_array(0);
+    for (std::size_t i = 0; i < n; ++i) {
+      const Field e = s.item(i);
+      if (e.is_number()) {
+        net.interpolated_spans.push_back(e.number(open(0, 1)));
+        continue;
+      }
+      if (!e.is_object()) fail(e.path(), "must be a span fraction in (0, 1) or an object {\"span\", \"points\"}, got " +
+                                              json_type_name(e.json()));
+      e.expect_object({"span", "points"});
+      const double span = e.at("span").number(open(0, 1));
+      if (!net.streamline_spans.empty() && span <= net.streamline_spans.back())
+        fail(e.path() + ".span", "explicit streamlines must be listed with strictly increasing span, got " +
+                                     std::to_string(span) + " after " + std::to_string(net.streamline_spans.back()));
+      net.streamline_spans.push_back(span);
+      net.streamlines.push_back(polyline(e.at("points"), 2));
+    }
+  }
+  if (f.has("leading_edge")) net.leading_edge = polyline(f.at("leading_edge"), 2);
+  if (f.has("trailing_edge")) net.trailing_edge = polyline(f.at("trailing_edge"), 2);
+  if (f.has("stations")) {
+    const Field s = f.at("stations");
+    const std::size_t n = s.expect_array(0);
+    for (std::size_t i = 0; i < n; ++i) net.stations.push_back(polyline(s.item(i), 2));
+  }
+  net.samples = f.integer_or("samples", net.samples, 16, 100000);
+  return net;
+}
+
+std::variant<blade::StraightFlowPath, blade::MeridionalFlowPath> flow_path(const Field& f) {
+  if (!f.is_object()) fail(f.path(), "must be an object, got " + json_type_name(f.json()));
+  const int type = f.at("type").choice({"straight", "meridional"});
+  if (type == 0) {
+    f.expect_object({"type", "span"});
+    return blade::StraightFlowPath{f.at("span").number(positive(1e5), "mm")};
+  }
+  return blade::MeridionalFlowPath{meridional_net(f)};
+}
+
+blade::LengthUnit length_unit(const Field& f) {
+  static const blade::LengthUnit units[] = {blade::LengthUnit::Millimetre, blade::LengthUnit::Centimetre,
+                                            blade::LengthUnit::Metre, blade::LengthUnit::Inch};
+  return units[f.choice({"mm", "cm", "m", "in"})];
+}
+
+blade::PointSectionDefinition point_section(const Field& f, const std::filesystem::path& base_dir) {
+  f.expect_object({"file", "values", "unit", "le_index", "te_index", "suction_side"});
+  if (f.has("file") == f.has("values")) fail(f.path(), "needs exactly one of \"file\" and \"values\"");
+  blade::PointSectionDefinition def;
+  def.unit = f.has("unit") ? length_unit(f.at("unit")) : blade::LengthUnit::Millimetre;
+  if (f.has("file")) {
+    const Field file = f.at("file");
+    std::filesystem::path p = file.string();
+    if (p.is_relative()) p = base_dir / p;
+    def.file = p.string();
+    try {
+      def.points = blade::read_section_points(def.file, def.unit);
+    } catch (const InvalidGeometry& e) {
+      fail(file.path(), e.what());
+    }
+  } else {
+    const Field values = f.at("values");
+    const std::size_t n = values.expect_array(4);
+    const double k = blade::millimetres_per(def.unit);
+    for (std::size_t i = 0; i < n; ++i) def.points.push_back(k * values.item(i).pair());
+  }
+  const int last = static_cast<int>(def.points.size()) - 1;
+  def.le_index = f.integer_or("le_index", -1, -1, last);
+  def.te_index = f.integer_or("te_index", -1, -1, last);
+  if (f.has("suction_side")) {
+    static const blade::SuctionSide sides[] = {blade::SuctionSide::Longer, blade::SuctionSide::CounterClockwise,
+                                               blade::SuctionSide::Clockwise};
+    def.suction_side = sides[f.at("suction_side").choice({"longer", "counter_clockwise", "clockwise"})];
+  }
+  return def;
+}
+
+blade::ParametricSectionDefinition parametric_section(const Field& f) {
+  f.expect_object({"chord", "stagger_deg", "inlet_metal_angle_deg", "outlet_metal_angle_deg", "max_thickness",
+                   "max_thickness_position", "le_radius", "te_radius", "points_per_side"});
+  blade::ParametricSectionDefinition d;
+  d.chord = f.at("chord").number(positive(1e5), "mm");
+  d.stagger_deg = f.at("stagger_deg").number(open(-90, 90), "deg");
+  d.inlet_angle_deg = f.at("inlet_metal_angle_deg").number(open(-90, 90), "deg");
+  d.outlet_angle_deg = f.at("outlet_metal_angle_deg").number(open(-90, 90), "deg");
+  d.max_thickness = f.at("max_thickness").number(open(0, d.chord), "mm (0 < max_thickness < chord)");
+  d.max_thickness_position = f.number_or("max_thickness_position", d.max_thickness_position, closed(0.1, 0.9));
+  const Range radius{0, d.max_thickness / 2, true, false};
+  d.le_radius = f.at("le_radius").number(radius, "mm (0 < radius <= max_thickness / 2)");
+  d.te_radius = f.at("te_radius").number(radius, "mm (0 < radius <= max_thickness / 2)");
+  d.points_per_side = f.integer_or("points_per_side", d.points_per_side, 8, 2000);
+  return d;
+}
+
+blade::BladeSectionDefinition section(const Field& f, const std::filesystem::path& base_dir) {
+  f.expect_object({"span", "points", "parametric", "rotation_deg", "scale", "offset", "theta_deg"});
+  if (f.has("points") == f.has("parametric")) fail(f.path(), "needs exactly one of \"points\" and \"parametric\"");
+  blade::BladeSectionDefinition s;
+  if (f.has("points"))
+    s.shape = point_section(f.at("points"), base_dir);
+  else
+    s.shape = parametric_section(f.at("parametric"));
+  auto& p = s.placement;
+  p.span = f.at("span").number(closed(0, 1));
+  p.rotation_deg = f.number_or("rotation_deg", 0, closed(-180, 180), "deg");
+  p.scale = f.number_or("scale", 1, positive(100));
+  p.theta_deg = f.number_or("theta_deg", 0, closed(-180, 180), "deg");
+  if (f.has("offset")) p.offset = f.at("offset").pair();
+  return s;
+}
+
+blade::BladeOptions blade_options(const Field& f) {
+  f.expect_object({"overbuild", "chordwise_samples", "stacking"});
+  blade::BladeOptions o;
+  // > 0: the solid is cut out of the over-built surface by the hub and casing trims.
+  o.overbuild = f.number_or("overbuild", o.overbuild, positive(0.5));
+  o.chordwise_samples = f.integer_or("chordwise_samples", o.chordwise_samples, 8, 2000);
+  if (f.has("stacking")) {
+    static const blade::StackingPoint points[] = {blade::StackingPoint::LeadingEdge, blade::StackingPoint::Centroid,
+                                                  blade::StackingPoint::TrailingEdge};
+    o.stacking = points[f.at("stacking").choice({"leading_edge", "centroid", "trailing_edge"})];
+  }
+  return o;
+}
+
+}  // namespace
+
+Config parse_config(const nlohmann::json& document, const std::filesystem::path& base_dir, const std::string& default_name) {
+  const Field root(document, "");
+  root.expect_object({"$schema", "name", "description", "units", "flow_path", "sections", "blade", "output"});
+  Config c;
+  c.source = document;
+  c.name = root.has("name") ? root.at("name").string() : default_name;
+  if (root.has("description")) c.description = root.at("description").string();
+  root.at("units").choice({"mm"});
+  c.blade.flow_path = flow_path(root.at("flow_path"));
+  const Field sections = root.at("sections");
+  const std::size_t n = sections.expect_array(1);
+  for (std::size_t i = 0; i < n; ++i) {
+    c.blade.sections.push_back(section(sections.item(i), base_dir));
+    if (i > 0) {
+      const double prev = c.blade.sections[i - 1].placement.span, cur = c.blade.sections[i].placement.span;
+      if (cur <= prev)
+        fail(sections.item(i).path() + ".span", "sections must have strictly increasing span: must be > " +
+                                                  std::to_string(prev) + ", got " + std::to_string(cur));
+    }
+  }
+  if (root.has("blade")) c.blade.options = blade_options(root.at("blade"));
+  c.output.product_name = c.name;
+  if (root.has("output")) {
+    const Field out = root.at("output");
+    out.expect_object({"step_schema", "product_name"});
+    if (out.has("step_schema"))
+      c.output.step_schema = out.at("step_schema").choice({"AP214", "AP242"}) == 1 ? io::StepSchema::AP242 : io::StepSchema::AP214;
+    if (out.has("product_name")) c.output.product_name = out.at("product_name").string();
+  }
+  return c;
+}
+
+Config parse_config_text(const std::string& text, const std::filesystem::path& base_dir, const std::string& default_name) {
+  nlohmann::json doc;
+  try {
+    doc = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw ConfigError(std::string("config: invalid JSON: ") + e.what());
+  }
+  return parse_config(doc, base_dir, default_name);
+}
+
+Config load_config_file(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw ConfigError("config: cannot read file " + file.string());
+  std::stringstream s;
+  s << in.rdbuf();
+  return parse_config_text(s.str(), file.has_parent_path() ? file.parent_path() : std::filesystem::path("."),
+                           file.stem().string());
+}
+
+blade::BladeModel build_model(const Config& config) {
+  const blade::BladeDefinition& def = config.blade;
+  // Check the parts separately first, so a failure names the part of the config it comes from.
+  if (const auto* m = std::get_if<blade::MeridionalFlowPath>(&def.flow_path)) {
+    try {
+      blade::MeridionalNet net(m->net);
+    } catch (const InvalidGeometry& e) {
+      throw ConfigError(std::string("flow_path: ") + e.what());
+    }
+  }
+  for (std::size_t i = 0; i < def.sections.size(); ++i) {
+    const auto& shape = def.sections[i].shape;
+    const bool points = std::holds_alternative<blade::PointSectionDefinition>(shape);
+    try {
+      if (points)
+        blade::section_from_points(std::get<blade::PointSectionDefinition>(shape));
+      else
+        blade::section_from_parameters(std::get<blade::ParametricSectionDefinition>(shape));
+    } catch (const InvalidGeometry& e) {
+      throw ConfigError("sections[" + std::to_string(i) + "]." + (points ? "points" : "parametric") + ": " + e.what());
+    }
+  }
+  try {
+    return blade::build_blade(def);
+  } catch (const InvalidGeometry& e) {
+    throw ConfigError(std::string("blade model (flow_path + sections): ") + e.what());
+  }
+}
+
+nlohmann::json model_summary(const Config& c, const blade::BladeModel& m) {
+  using nlohmann::json;
+  json sections = json::array();
+  for (std::size_t i = 0; i < c.blade.sections.size(); ++i) {
+    const auto& s = c.blade.sections[i];
+    json e{{"span", s.placement.span},
+           {"kind", std::holds_alternative<blade::PointSectionDefinition>(s.shape) ? "points" : "parametric"}};
+    if (i < m.profiles.size()) e["chord_mm"] = m.profiles[i].chord();
+    sections.push_back(e);
+  }
+  const auto& s = m.surface;
+  return json{{"name", c.name},
+              {"description", c.description},
+              {"flow_path", std::holds_alternative<blade::StraightFlowPath>(c.blade.flow_path) ? "straight" : "meridional"},
+              {"span_length_mm", m.span_length},
+              {"sections", sections},
+              {"blade_surface",
+               {{"degree_u", s.degree_u()},
+                {"degree_v", s.degree_v()},
+                {"poles_u", s.is_periodic_u() ? s.num_poles_u() - s.degree_u() : s.num_poles_u()},
+                {"poles_v", s.num_poles_v()},
+                {"rational", s.is_rational()}}},
+              {"overbuild", m.options.overbuild},
+              {"step_schema", io::step_schema_name(c.output.step_schema)},
+              {"config", c.source}};
+}
+
+}  // namespace cg::config

@@ -1,0 +1,130 @@
+#include "src/config/json_fields.hpp"
+
+#include <cmath>
+#include <sstream>
+
+namespace cg::config {
+namespace {
+
+std::string num(double x) {
+  std::ostringstream s;
+  s.precision(12);
+  s << x;
+  return s.str();
+}
+
+std::string shown(const nlohmann::json& j) {
+  std::string s = j.dump();
+  if (s.size() > 40) s = s.substr(0, 37) + "...";
+  return s;
+}
+
+std::string child(const std::string& path, const char* key) { return path.empty() ? key : path + "." + key; }
+
+}  // namespace
+
+bool Range::contains(double x) const {
+  if (!std::isfinite(x)) return false;
+  return (lo_open ? x > lo : x >= lo) && (hi_open ? x < hi : x <= hi);
+}
+
+std::string Range::describe() const {
+  const bool lo_inf = std::isinf(lo), hi_inf = std::isinf(hi);
+  if (lo_inf && hi_inf) return "finite";
+  if (hi_inf) return std::string(lo_open ? "> " : ">= ") + num(lo);
+  if (lo_inf) return std::string(hi_open ? "< " : "<= ") + num(hi);
+  return std::string(lo_open ? "(" : "[") + num(lo) + ", " + num(hi) + (hi_open ? ")" : "]");
+}
+
+Range positive(double hi) { return {0.0, hi, true, false}; }
+
+void fail(const std::string& path, const std::string& what) { throw ConfigError((path.empty() ? "config" : path) + ": " + what); }
+
+std::string json_type_name(const nlohmann::json& j) {
+  if (j.is_number()) return "number";
+  return j.type_name();
+}
+
+void Field::expect_object(std::initializer_list<const char*> allowed) const {
+  if (!j_->is_object()) fail(path_, "must be an object, got " + json_type_name(*j_));
+  for (const auto& item : j_->items()) {
+    bool ok = false;
+    for (const char* a : allowed) ok = ok || item.key() == a;
+    if (!ok) {
+      std::string list;
+      for (const char* a : allowed) list += (list.empty() ? "" : ", ") + std::string(a);
+      fail(child(path_, item.key().c_str()), "unknown key (allowed here: " + list + ")");
+    }
+  }
+}
+
+Field Field::at(const char* key) const {
+  if (!j_->is_object()) fail(path_, "must be an object, got " + json_type_name(*j_));
+  const auto it = j_->find(key);
+  if (it == j_->end()) fail(child(path_, key), "missing (required)");
+  return Field(*it, child(path_, key));
+}
+
+Field Field::item(std::size_t i) const { return Field(j_->at(i), path_ + "[" + std::to_string(i) + "]"); }
+
+std::size_t Field::expect_array(std::size_t min_size, std::size_t max_size) const {
+  if (!j_->is_array()) fail(path_, "must be an array, got " + json_type_name(*j_));
+  const std::size_t n = j_->size();
+  if (n < min_size || n > max_size) {
+    std::string want = max_size == static_cast<std::size_t>(-1) ? "at least " + std::to_string(min_size)
+                       : min_size == max_size                  ? "exactly " + std::to_string(min_size)
+                                          : "between " + std::to_string(min_size) + " and " + std::to_string(max_size);
+    fail(path_, "must have " + want + " entries, got " + std::to_string(n));
+  }
+  return n;
+}
+
+double Field::number(const Range& range, const char* unit) const {
+  if (!j_->is_number()) fail(path_, "must be a number, got " + json_type_name(*j_) + " " + shown(*j_));
+  const double x = j_->get<double>();
+  if (!range.contains(x))
+    fail(path_, "must be " + range.describe() + (*unit ? std::string(" ") + unit : "") + ", got " + num(x));
+  return x;
+}
+
+int Field::integer(int lo, int hi) const {
+  if (!j_->is_number_integer()) fail(path_, "must be an integer, got " + json_type_name(*j_) + " " + shown(*j_));
+  const auto x = j_->get<long long>();
+  if (x < lo || x > hi)
+    fail(path_, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " + std::to_string(x));
+  return static_cast<int>(x);
+}
+
+std::string Field::string() const {
+  if (!j_->is_string()) fail(path_, "must be a string, got " + json_type_name(*j_) + " " + shown(*j_));
+  std::string s = j_->get<std::string>();
+  if (s.empty()) fail(path_, "must not be empty");
+  return s;
+}
+
+int Field::choice(std::initializer_list<const char*> choices) const {
+  const std::string s = j_->is_string() ? j_->get<std::string>() : std::string();
+  int i = 0;
+  std::string list;
+  for (const char* c : choices) {
+    if (j_->is_string() && s == c) return i;
+    list += (list.empty() ? "\"" : ", \"") + std::string(c) + "\"";
+    ++i;
+  }
+  fail(path_, "must be one of " + list + ", got " + shown(*j_));
+}
+
+double Field::number_or(const char* key, double fallback, const Range& range, const char* unit) const {
+  return has(key) ? at(key).number(range, unit) : fallback;
+}
+
+int Field::integer_or(const char* key, int fallback, int lo, int hi) const {
+  return has(key) ? at(key).integer(lo, hi) : fallback;
+}
+
+Eigen::Vector2d Field::pair() const {
+  expect_array(2, 2);
+  return {item(0).number(Range{-HUGE_VAL, HUGE_VAL}), item(1).number(Range{-HUGE_VAL, HUGE_VAL})};
+}
+
+}  // namespace cg::config

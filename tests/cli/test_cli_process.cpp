@@ -1,0 +1,166 @@
+// The coolinggen executable run as a process: the built-in example and a straight C3X vane give a
+// valid STEP (read back: one valid solid, volume equal to the report's to 1e-6 relative, the
+// integration accuracy) and report.json; bad configs exit non-zero with one line on stderr naming
+// the field, and write nothing (not even the output directory).
+#define BOOST_TEST_MODULE cli_process
+#include <boost/test/unit_test.hpp>
+
+#include <STEPControl_Reader.hxx>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "src/brep/verify.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kBinary = fs::path(COOLINGGEN_BINARY_DIR) / "coolinggen";
+
+struct TempDir {
+  fs::path path;
+  explicit TempDir(const std::string& tag) {
+    path = fs::temp_directory_path() / ("cg_cli_" + tag + "_" + std::to_string(::getpid()));
+    fs::remove_all(path);
+    fs::create_directories(path);
+  }
+  ~TempDir() { fs::remove_all(path); }
+};
+
+std::string read(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+struct Run {
+  int exit_code;
+  std::string out, err;
+};
+
+// Runs the binary with `args` (shell words), capturing stdout and stderr in files of `dir`.
+Run run(const std::string& args, const fs::path& dir) {
+  BOOST_TEST_REQUIRE(fs::exists(kBinary), "build the coolinggen target first: " << kBinary);
+  const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
+  const std::string cmd = "'" + kBinary.string() + "' " + args + " > '" + out.string() + "' 2> '" + err.string() + "'";
+  const int status = std::system(cmd.c_str());
+  Run r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, read(out), read(err)};
+  fs::remove(out);
+  fs::remove(err);
+  return r;
+}
+
+int lines(const std::string& s) {
+  int n = 0;
+  for (char c : s) n += c == '\n';
+  return n;
+}
+
+// Reads DIR/blade.step and DIR/report.json and checks them against each other.
+void check_outputs(const fs::path& dir, const std::string& expected_name) {
+  BOOST_TEST_REQUIRE(fs::exists(dir / "blade.step"));
+  BOOST_TEST_REQUIRE(fs::exists(dir / "report.json"));
+  const auto report = nlohmann::json::parse(read(dir / "report.json"));
+  BOOST_TEST(report.at("valid").get<bool>());
+  BOOST_TEST(report.at("model").at("name").get<std::string>() == expected_name);
+  for (const auto& [name, c] : report.at("checks").items()) BOOST_TEST(c.at("passed").get<bool>(), name);
+  STEPControl_Reader reader;
+  BOOST_TEST_REQUIRE(reader.ReadFile((dir / "blade.step").string().c_str()) == IFSelect_RetDone);
+  reader.TransferRoots();
+  const cg::brep::SolidCheck c = cg::brep::verify_solid(reader.OneShape());
+  for (const cg::brep::Check* k : c.checks()) BOOST_TEST(k->passed, k->name << ": " << k->message);
+  const double v = report.at("solid").at("volume_mm3").get<double>();
+  BOOST_TEST(v > 0);
+  BOOST_TEST(std::abs(c.volume - v) <= 1e-6 * v, c.volume << " vs " << v);
+  BOOST_TEST(c.face_count == report.at("solid").at("face_count").get<int>());
+  const std::string step = read(dir / "blade.step");
+  for (const char* n : {"blade_wall", "hub", "casing"})
+    BOOST_TEST(step.find(std::string("ADVANCED_FACE('") + n + "'") != std::string::npos, n);
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(builtin_example_builds) {
+  TempDir dir("example");
+  const Run r = run("build -o '" + (dir.path / "out").string() + "'", dir.path);
+  BOOST_TEST_REQUIRE(r.exit_code == 0, r.err);
+  BOOST_TEST(r.err.empty(), r.err);
+  BOOST_TEST(r.out.find("volume") != std::string::npos, r.out);
+  check_outputs(dir.path / "out", "hpt_rotor");
+  // Only the two outputs, no temporary files.
+  int files = 0;
+  for (const auto& e : fs::directory_iterator(dir.path / "out")) files += e.is_regular_file();
+  BOOST_TEST(files == 2);
+}
+
+BOOST_AUTO_TEST_CASE(straight_c3x_vane_builds) {
+  TempDir dir("c3x");
+  const nlohmann::json cfg = {
+      {"name", "c3x_vane"},
+      {"units", "mm"},
+      {"flow_path", {{"type", "straight"}, {"span", 76.2}}},
+      {"sections", {{{"span", 0.0}, {"points", {{"file", COOLINGGEN_SOURCE_DIR "/data/c3x/profile_table3_cm.csv"}, {"unit", "cm"}}}}}},
+      {"output", {{"step_schema", "AP242"}}}};
+  std::ofstream(dir.path / "c3x.json") << cfg.dump(2);
+  const Run v = run("validate '" + (dir.path / "c3x.json").string() + "'", dir.path);
+  BOOST_TEST(v.exit_code == 0, v.err);
+  const Run r = run("build '" + (dir.path / "c3x.json").string() + "' -q -o '" + (dir.path / "out").string() + "'", dir.path);
+  BOOST_TEST_REQUIRE(r.exit_code == 0, r.err);
+  BOOST_TEST(r.out.empty());
+  check_outputs(dir.path / "out", "c3x_vane");
+  BOOST_TEST(read(dir.path / "out" / "blade.step").find("AP242") != std::string::npos);
+  // Prismatic vane: volume = profile area x span. The C3X profile encloses ~ 41.4 cm^2 (interpolated curve).
+  const auto report = nlohmann::json::parse(read(dir.path / "out" / "report.json"));
+  const double volume = report.at("solid").at("volume_mm3").get<double>();
+  BOOST_TEST(volume / 76.2 > 3500.0);
+  BOOST_TEST(volume / 76.2 < 4500.0);
+  BOOST_TEST(std::abs(report.at("solid").at("bbox_mm").at("size").at(2).get<double>() - 76.2) < 1e-6);
+}
+
+BOOST_AUTO_TEST_CASE(bad_config_fails_without_output) {
+  TempDir dir("bad");
+  // Take the built-in example (printed by `coolinggen example`) and break one field.
+  nlohmann::json cfg;
+  {
+    TempDir ex("example_json");
+    const Run e = run("example", ex.path);
+    BOOST_TEST_REQUIRE(e.exit_code == 0);
+    cfg = nlohmann::json::parse(e.out);
+  }
+  cfg["sections"][2]["parametric"]["max_thickness"] = -2.0;
+  std::ofstream(dir.path / "bad.json") << cfg.dump(2);
+  const fs::path out = dir.path / "out";
+  const Run b = run("build '" + (dir.path / "bad.json").string() + "' -o '" + out.string() + "'", dir.path);
+  BOOST_TEST(b.exit_code == 2);
+  BOOST_TEST(lines(b.err) == 1, b.err);
+  BOOST_TEST(b.err.find("sections[2].parametric.max_thickness") != std::string::npos, b.err);
+  BOOST_TEST(b.out.empty());
+  BOOST_TEST(!fs::exists(out));
+
+  const Run v = run("validate '" + (dir.path / "bad.json").string() + "'", dir.path);
+  BOOST_TEST(v.exit_code == 2);
+  BOOST_TEST(lines(v.err) == 1, v.err);
+
+  const Run missing = run("validate '" + (dir.path / "none.json").string() + "'", dir.path);
+  BOOST_TEST(missing.exit_code != 0);
+  BOOST_TEST(lines(missing.err) == 1, missing.err);
+
+  const Run usage = run("build", dir.path);  // -o missing
+  BOOST_TEST(usage.exit_code == 1);
+  BOOST_TEST(lines(usage.err) == 1, usage.err);
+  const Run nothing = run("", dir.path);
+  BOOST_TEST(nothing.exit_code != 0);
+}
+
+BOOST_AUTO_TEST_CASE(help_lists_commands) {
+  TempDir dir("help");
+  const Run h = run("--help", dir.path);
+  BOOST_TEST(h.exit_code == 0);
+  for (const char* cmd : {"build", "validate", "example"}) BOOST_TEST(h.out.find(cmd) != std::string::npos, cmd);
+}
