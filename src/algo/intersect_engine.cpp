@@ -46,12 +46,19 @@ CurvePairIntersector::CurvePairIntersector(const BSplineCurve<2>& a, const BSpli
   scale_ = std::max(control_extent(pieces_a_), control_extent(pieces_b_));
   // Below ~1e-13 of the model size a gap is rounding noise of the subdivided poles.
   tol_ = std::max(tol, 1e-13 * scale_);
+  // Pruning (boxes, fat lines) uses only a rounding margin: a tol margin would keep every pair along
+  // a tangential contact's zone of gaps below tol (length ~sqrt(tol / curvature)) and split it all
+  // down to the leaf size. Pairs pruned only by less than tol are near misses, solved directly.
+  margin_ = 1e-13 * scale_;
+  // Crossings are accepted at a residual that transversal Newton reaches easily and a double root
+  // (tangency, reached linearly) does not pass on a sloppy iterate.
+  crossing_tol_ = std::min(tol_, 1e-12 * scale_);
   // Pieces smaller than this are not split further: tangential candidates are solved there.
-  leaf_ = std::max(tol_, 1e-9 * scale_);
+  leaf_ = std::max(tol_, 1e-7 * scale_);
   closed_ = self && a.is_closed(tol_);
   // A cusp's two branches stay within tol of each other over a length ~ (tol^2 scale)^(1/3): contacts
   // on an arc that never leaves a ball of this radius are the curve meeting itself trivially.
-  trivial_radius_ = std::max(100.0 * leaf_, 10.0 * std::cbrt(tol_ * tol_ * scale_));
+  trivial_radius_ = std::max(10.0 * leaf_, 10.0 * std::cbrt(tol_ * tol_ * scale_));
   stack_.reserve(16);
 }
 
@@ -99,7 +106,10 @@ void CurvePairIntersector::process(BezierPiece2 x, BezierPiece2 y) {
       throw AlgorithmFailure("curve intersection: subdivision budget of " + std::to_string(kWorkBudget) +
                              " piece pairs exhausted");
     const Box2 bx = piece_box(x), by = piece_box(y);
-    if (!bx.overlaps(by, tol_)) return;
+    if (!bx.overlaps(by, margin_)) {
+      if (bx.overlaps(by, tol_)) leaf(x, y);
+      return;
+    }
     const double sx = bx.diagonal(), sy = by.diagonal();
     const bool small = std::max(sx, sy) <= leaf_;
     if (self_) {
@@ -124,7 +134,11 @@ void CurvePairIntersector::process(BezierPiece2 x, BezierPiece2 y) {
       return;
     }
     double ya, yb, xa, xb;
-    if (!clip_by_fat_line(x, y, tol_, ya, yb) || !clip_by_fat_line(y, x, tol_, xa, xb)) return;
+    if (!clip_by_fat_line(x, y, margin_, ya, yb) || !clip_by_fat_line(y, x, margin_, xa, xb)) {
+      double a, b;
+      if (clip_by_fat_line(x, y, tol_, a, b) && clip_by_fat_line(y, x, tol_, a, b)) leaf(x, y);
+      return;
+    }
     // Sederberg & Nishita: keep clipping while an interval shrinks by 20 %, split otherwise.
     const bool progress = yb - ya < 0.8 || xb - xa < 0.8;
     if (ya > 0.0 || yb < 1.0) restrict_piece(y, ya, yb);
@@ -151,7 +165,7 @@ bool CurvePairIntersector::isolated_crossing(const BezierPiece2& x, const Bezier
     be = std::clamp(cross(r, dp) / den, 0.0, 1.0);
   }
   double s = x.param(al), t = y.param(be);
-  if (!refine_crossing(ea_, eb_, s, t, tol_)) return false;
+  if (!refine_crossing(ea_, eb_, s, t, crossing_tol_)) return false;
   // The pair holds at most one crossing; one found outside (a neighbour's, found there too) proves
   // nothing about this pair. The margin only absorbs rounding at the piece ends.
   const double ms = 1e-9 * (x.hi - x.lo), mt = 1e-9 * (y.hi - y.lo);
@@ -168,7 +182,7 @@ void CurvePairIntersector::leaf(const BezierPiece2& x, const BezierPiece2& y) {
   }
   s = x.param(0.5);
   t = y.param(0.5);
-  if (refine_crossing(ea_, eb_, s, t, tol_)) {
+  if (refine_crossing(ea_, eb_, s, t, crossing_tol_)) {
     record(s, t, tangent_sine(ea_, eb_, s, t) <= 1e-6 ? ContactKind::tangent : ContactKind::transversal);
     return;
   }
@@ -212,6 +226,16 @@ bool CurvePairIntersector::covered(CurveEvaluator<2>& on, const BezierPiece2& x,
     } else if (project_point(other, q, t, lo, hi) > tol_) {
       return false;
     }
+    // Coincidence, not a tangential contact: near a contact of curvatures differing by dk the gap
+    // stays below tol over a length ~sqrt(8 tol / dk), which small pieces fit into; coincident
+    // curves have equal curvature everywhere (here: to 1e-6 relative, or 1e-9 of the model size).
+    V2 P, dP, ddP, Q, dQ, ddQ;
+    on.d2(x.param(static_cast<double>(k) / (m - 1)), P, dP, ddP);
+    other.d2(t, Q, dQ, ddQ);
+    const double ka = cross(dP, ddP) / std::pow(dP.norm(), 3);
+    const double kb = (dP.dot(dQ) < 0 ? -1.0 : 1.0) * cross(dQ, ddQ) / std::pow(dQ.norm(), 3);
+    if (!(std::abs(ka - kb) <= 1e-6 * std::max(std::abs(ka), std::abs(kb)) + 1e-9 / scale_))
+      return false;
     if (k == 0) {
       t0 = t;
     } else {
@@ -286,12 +310,13 @@ CurveCurveIntersections CurvePairIntersector::finish() {
         return true;
     return false;
   };
-  if (a_.is_periodic())
+  // On a closed curve the end parameter names the start point: report the start.
+  if (a_.is_closed(tol_))
     for (auto& p : points_)
-      if (p.s >= a1_ - 1e-13 * la) p.s = a0_;
-  if (b_.is_periodic() && !self_)
+      if (p.s >= a1_ - 1e-12 * la) p.s = a0_;
+  if (!self_ && b_.is_closed(tol_))
     for (auto& p : points_)
-      if (p.t >= b1_ - 1e-13 * lb) p.t = b0_;
+      if (p.t >= b1_ - 1e-12 * lb) p.t = b0_;
   std::sort(points_.begin(), points_.end(), [](const CurveCurvePoint& p, const CurveCurvePoint& q) { return p.s < q.s; });
   for (const auto& p : points_) {
     if (in_overlap(p)) continue;

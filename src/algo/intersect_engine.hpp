@@ -47,7 +47,7 @@ class CurvePairIntersector {
   std::vector<BezierPiece2> pieces_a_, pieces_b_;
   bool self_, closed_;
   double a0_, a1_, b0_, b1_;
-  double scale_, tol_, leaf_, trivial_radius_;
+  double scale_, tol_, margin_, crossing_tol_, leaf_, trivial_radius_;
   long work_ = 0;
   std::vector<Task> stack_;
   std::vector<CurveCurvePoint> points_;
