@@ -24,9 +24,11 @@ struct EllipticBlade {
 /// u-periodic degree-2 rational ellipse (8 poles) swept linearly from z0 to z1, degree_v in v.
 inline BSplineSurface<3> elliptic_blade_surface(const EllipticBlade& e) {
   const double s = std::sqrt(0.5);
-  // Poles alternate quadrant ends (weight 1) and corners (weight sqrt(2)/2): each span is a quarter arc.
-  const double px[8] = {1, 1, 0, -1, -1, -1, 0, 1}, py[8] = {0, 1, 1, 1, 0, -1, -1, -1};
-  const double w[8] = {1, s, 1, s, 1, s, 1, s};
+  // Poles alternate corners (weight sqrt(2)/2) and quadrant ends (weight 1). With double knots at
+  // 0, 1/4, 1/2, 3/4 the span [0, 1/4] of the unwrapped form uses poles 1..3, so the list starts at
+  // the corner (a, -b) and each span is a quarter arc (tests check the kernel surface lies on it).
+  const double px[8] = {1, 1, 1, 0, -1, -1, -1, 0}, py[8] = {-1, 0, 1, 1, 1, 0, -1, -1};
+  const double w[8] = {s, 1, s, 1, s, 1, s, 1};
   const int pu = 2, pv = e.degree_v, nu = 8 + pu, nv = pv + 1;
   const std::vector<double> U = unwrap_periodic_knots(pu, {0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75}, 1.0);
   const std::vector<double> V = uniform_clamped_knots(pv, nv);

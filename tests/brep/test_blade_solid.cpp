@@ -56,6 +56,21 @@ double radius_at(const BSplineCurve<2>& c, double x0, double x1, double x) { ret
 
 }  // namespace
 
+// The synthetic surface itself (our kernel) lies on the elliptic cylinder, z linear in v.
+BOOST_AUTO_TEST_CASE(synthetic_surface_is_elliptic) {
+  const test::EllipticBlade e;
+  const auto s = test::elliptic_blade_surface(e);
+  for (int k = 0; k <= 40; ++k)
+    for (double v : {0.0, 0.3, 1.0}) {
+      const Eigen::Vector3d p = s.point(k / 40.0, v);
+      BOOST_TEST(std::abs(p.x() * p.x() / (e.a * e.a) + p.y() * p.y() / (e.b * e.b) - 1) < 1e-14);
+      BOOST_TEST(std::abs(p.z() - (e.z0 + v * (e.z1 - e.z0))) < 1e-12);
+    }
+  // u = 1/8 lies in the first quadrant (x > 0, y > 0) on the quarter arc (a, 0) -> (0, b).
+  BOOST_TEST(s.point(0.125, 0).x() > 0);
+  BOOST_TEST(s.point(0.125, 0).y() > 0);
+}
+
 BOOST_AUTO_TEST_CASE(straight_caps_volume_area_and_names) {
   const test::EllipticBlade e;
   const auto s = build_blade_solid(test::elliptic_blade_surface(e), PlaneTrim{{0, 0, 90}, {0, 0, 1}},
@@ -195,4 +210,25 @@ BOOST_AUTO_TEST_CASE(verify_detects_broken_solids) {
   const SolidCheck c3 = verify_solid(s.solid.Reversed());
   BOOST_TEST(!c3.positive_volume.passed);
   BOOST_TEST(verify_solid(TopoDS_Shape()).all_passed() == false);
+}
+
+// The model overload maps a straight flow path to the planes z = hub_z, casing_z and a meridional one
+// to the revolved contours.
+BOOST_AUTO_TEST_CASE(model_trims) {
+  const test::EllipticBlade e;
+  blade::BladeModel m;
+  m.surface = test::elliptic_blade_surface(e);
+  m.trim.straight = true;
+  m.trim.hub_z = 85;
+  m.trim.casing_z = 125;
+  const SolidCheck c = verify_solid(build_blade_solid(m).solid);
+  require_all_checks(c);
+  BOOST_TEST(rel(c.volume, test::kPi * e.a * e.b * 40) < 1e-6);
+  m.trim.straight = false;
+  m.trim.hub = meridional(-40, 40, {88, 88});
+  m.trim.casing = meridional(-40, 40, {121, 121});
+  BOOST_TEST(std::holds_alternative<RevolvedTrim>(hub_trim(m.trim)));
+  const SolidCheck r = verify_solid(build_blade_solid(m).solid);
+  require_all_checks(r);
+  BOOST_TEST(std::abs(r.bbox_max[2] - 121) < 1e-6);
 }
