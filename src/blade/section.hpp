@@ -55,11 +55,13 @@ struct PointSectionDefinition {
 /// Camber: cubic Bezier from the LE (origin) to the TE at chord * (cos stagger, sin stagger) with end
 /// tangents at the inlet/outlet metal angles (the degree-elevated parabola through the tangent-line
 /// intersection, or thirds of the chord when the tangent lines do not meet ahead of both ends).
-/// Thickness: half-thickness normal to the camber h(t) = L sqrt(t (1 - t)) q(t) on the camber parameter t,
-/// q cubic, such that the radius of curvature at the LE/TE tip is le_radius/te_radius (exact for a straight
-/// camber line), and h reaches max_thickness/2 with zero slope at the camber point whose chordwise
-/// position is max_thickness_position * chord. With t = (1 - cos phi)/2 the profile
-/// camber(t) + h(t) n(t) is one smooth function of phi in [0, 2 pi): suction side phi in [0, pi].
+/// Thickness: half-thickness normal to the camber h(t) = L sqrt(t (1 - t)) q(t) on the camber parameter t
+/// (L = chord), q cubic on each side of the maximum, such that the radius of curvature at the LE/TE tip is
+/// le_radius/te_radius (exact for a straight camber line, to leading order otherwise), and h reaches
+/// max_thickness/2 with zero slope at the camber point whose chordwise position is
+/// max_thickness_position * chord (C2 there, curvature of an ellipse through the maximum). With
+/// t = (1 - cos phi)/2 the profile camber(t) + h(t) n(t) is one smooth function of phi in [0, 2 pi): the
+/// suction (convex) side is phi in [0, pi]. Checked: h > 0, h <= max_thickness/2 everywhere, no folding.
 struct ParametricSectionDefinition {
   double chord = 0;                  // mm, > 0
   double stagger_deg = 0;            // (-90, 90)
@@ -79,7 +81,10 @@ struct SectionProfile {
   double te_param = 0;    // curve parameter of the TE, in (le_param, le_param + period)
   Eigen::Vector2d le = Eigen::Vector2d::Zero();
   Eigen::Vector2d te = Eigen::Vector2d::Zero();
-  double chord() const { return (te - le).norm(); }
+  /// Unit direction of the chord line, LE towards TE (see section_from_points).
+  Eigen::Vector2d chord_direction = Eigen::Vector2d::UnitX();
+  /// True chord: the profile's extent along the chord line, (te - le) . chord_direction.
+  double chord() const { return (te - le).dot(chord_direction); }
   /// Curve parameter at a chordwise coordinate c in [-1, 1]: c in [0, 1] runs from the LE over the
   /// suction side to the TE at fraction c of that side's arc length; c in [-1, 0] likewise over the
   /// pressure side (c = -1 is the TE again). Arc lengths by Gauss-Legendre quadrature + Newton.
@@ -91,10 +96,12 @@ struct SectionProfile {
 };
 
 /// Closed periodic cubic interpolation of the points (centripetal parameters), reproducing them exactly.
-/// LE/TE detection unless given: the TE is the curve point farthest from the LE and the LE the point
-/// farthest from the TE (fixed-point iteration from the two points of the set farthest apart, each step
-/// refined by Newton on the curve); of the two ends, the one with the larger radius of curvature is the
-/// LE. Throws InvalidGeometry for < 4 points, repeated points or a self-intersecting polygon.
+/// LE/TE detection unless indices are given: the chord line is the bitangent bridging the concave
+/// (pressure) side when the profile has one (the cascade convention: the line touching the pressure side
+/// at LE and TE; found as the longest convex-hull edge, refined by Newton), else the direction of the
+/// profile's diameter; LE and TE are the curve's extreme points along it (so chord() is the projected
+/// length), the LE being the end with the larger radius of curvature. Throws InvalidGeometry for
+/// < 4 points, coincident consecutive points or a self-intersecting polygon.
 SectionProfile section_from_points(const PointSectionDefinition& def);
 
 /// The parametric section. Throws InvalidGeometry for chord/thickness/radii <= 0, angles out of range,

@@ -23,17 +23,37 @@ std::string fmt(double v) {
   return s.str();
 }
 
-// Half-thickness h(t) = L g(t) q(t), g = sqrt(t (1 - t)), q(t) = q0 (1 - t) + q1 t + t (1 - t)(alpha + beta t).
-struct Thickness {
-  double L, q0, q1, alpha = 0, beta = 0;
-  double q(double t) const { return q0 * (1 - t) + q1 * t + t * (1 - t) * (alpha + beta * t); }
-  double dq(double t) const { return q1 - q0 + (1 - 2 * t) * (alpha + beta * t) + t * (1 - t) * beta; }
-  double h(double t) const { return L * std::sqrt(t * (1 - t)) * q(t); }
-  double dh(double t) const {
-    const double g = std::sqrt(t * (1 - t)), dg = (1 - 2 * t) / (2 * g);
-    return L * (dg * q(t) + g * dq(t));
+// Half-thickness h(t) = L g(t) q(t), g = sqrt(t (1 - t)). q is cubic on each side of the maximum tm:
+// q = q_e + a s + b s^2 + c s^3 with s = t - t_e, t_e = 0 (front) or 1 (rear); q_e fixes the tip radius
+// and (a, b, c) make h(tm) = T/2, h'(tm) = 0 and h''(tm) = kappa_m on both pieces (C2 at tm).
+struct ThicknessPiece {
+  double L = 0, te = 0, qe = 0, a = 0, b = 0, c = 0;
+  // h, h', h'' at t (0 < t < 1).
+  Eigen::Vector3d h(double t) const {
+    const double s = t - te;
+    const double q = qe + s * (a + s * (b + s * c)), dq = a + s * (2 * b + 3 * c * s), ddq = 2 * b + 6 * c * s;
+    return L * with_g(t, q, dq, ddq);
+  }
+  // (g q, (g q)', (g q)'') with g' = (1 - 2t) / (2g), g'' = -(1 + g'^2) / g (from g^2 = t - t^2).
+  static Eigen::Vector3d with_g(double t, double q, double dq, double ddq) {
+    const double g = std::sqrt(t * (1 - t)), dg = (1 - 2 * t) / (2 * g), ddg = -(1 + dg * dg) / g;
+    return {g * q, dg * q + g * dq, ddg * q + 2 * dg * dq + g * ddq};
   }
 };
+
+ThicknessPiece thickness_piece(double L, double te, double qe, double tm, double half_t, double kappa_m) {
+  ThicknessPiece p{L, te, qe};
+  const double s = tm - te;
+  // Columns: the contribution of a, b, c (q = s, s^2, s^3) to (h, h', h'') at tm.
+  Eigen::Matrix3d M;
+  M.col(0) = L * ThicknessPiece::with_g(tm, s, 1, 0);
+  M.col(1) = L * ThicknessPiece::with_g(tm, s * s, 2 * s, 2);
+  M.col(2) = L * ThicknessPiece::with_g(tm, s * s * s, 3 * s * s, 6 * s);
+  const Eigen::Vector3d rhs = Eigen::Vector3d(half_t, 0, kappa_m) - L * ThicknessPiece::with_g(tm, qe, 0, 0);
+  const Eigen::Vector3d abc = M.fullPivLu().solve(rhs);
+  p.a = abc.x(), p.b = abc.y(), p.c = abc.z();
+  return p;
+}
 
 }  // namespace
 
@@ -93,25 +113,26 @@ SectionProfile section_from_parameters(const ParametricSectionDefinition& d) {
   }
   const double tm = 0.5 * (lo + hi);
 
-  // Thickness: q0, q1 from the tip radii (h^2 ~ 2 r xi near a tip, xi ~ |B'(end)| t), alpha/beta from
-  // h(tm) = max_thickness / 2 and h'(tm) = 0 (linear in alpha, beta).
+  // Thickness: q at the tips from the radii (h^2 ~ 2 r xi near a tip, xi ~ |B'(end)| t, h ~ L q sqrt(t)); the
+  // curvature at the maximum is that of an ellipse with semi-axes T/2 and the geometric mean of the
+  // front and rear lengths tm, 1 - tm (in t).
   const double s0 = camber.derivatives(0.0, 1)[1].norm(), s1 = camber.derivatives(1.0, 1)[1].norm();
-  Thickness th{d.chord, std::sqrt(2 * d.le_radius * s0) / d.chord, std::sqrt(2 * d.te_radius * s1) / d.chord};
-  {
-    Thickness ta = th, tb = th;
-    ta.alpha = 1, tb.beta = 1;
-    Eigen::Matrix2d M;
-    M << ta.h(tm) - th.h(tm), tb.h(tm) - th.h(tm), ta.dh(tm) - th.dh(tm), tb.dh(tm) - th.dh(tm);
-    const Eigen::Vector2d rhs(0.5 * d.max_thickness - th.h(tm), -th.dh(tm));
-    const Eigen::Vector2d ab = M.fullPivLu().solve(rhs);
-    th.alpha = ab.x(), th.beta = ab.y();
-  }
+  const double L = d.chord, half_t = 0.5 * d.max_thickness, kappa_m = -half_t / (tm * (1 - tm));
+  const ThicknessPiece front = thickness_piece(L, 0, std::sqrt(2 * d.le_radius * s0) / L, tm, half_t, kappa_m);
+  const ThicknessPiece rear = thickness_piece(L, 1, std::sqrt(2 * d.te_radius * s1) / L, tm, half_t, kappa_m);
+  auto half_thickness = [&](double t) { return (t <= tm ? front : rear).h(t).x(); };
+  // q(t) = h / (L g): the smooth factor used to build the outline (h = L g q with g = sin(phi) / 2).
+  auto q_of = [&](double t) {
+    const ThicknessPiece& p = t <= tm ? front : rear;
+    const double s = t - p.te;
+    return p.qe + s * (p.a + s * (p.b + s * p.c));
+  };
   // Validity: h > 0 inside, maximum at tm, and each side a regular offset (1 -+ h kappa > 0).
   const double turn = d.inlet_angle_deg - d.outlet_angle_deg;
   const double side = turn >= 0 ? 1.0 : -1.0;  // suction (convex) side: left of the camber when it turns right
   for (int k = 1; k < 2000; ++k) {
     const double t = k / 2000.0;
-    const double h = th.h(t);
+    const double h = half_thickness(t);
     require(h > 0, what + ": the thickness distribution becomes non-positive at " + fmt(t) +
                        " of the camber line; adjust max_thickness, its position or the LE/TE radii");
     require(h <= 0.5 * d.max_thickness * (1 + 1e-6),
@@ -131,7 +152,7 @@ SectionProfile section_from_parameters(const ParametricSectionDefinition& d) {
     const double t = 0.5 * (1 - std::cos(phi));
     const auto cd = camber.derivatives(t, 1);
     const Eigen::Vector2d normal = Eigen::Vector2d(-cd[1].y(), cd[1].x()).normalized();
-    pts[static_cast<std::size_t>(k)] = cd[0] + side * th.L * 0.5 * std::sin(phi) * th.q(t) * normal;
+    pts[static_cast<std::size_t>(k)] = cd[0] + side * L * 0.5 * std::sin(phi) * q_of(t) * normal;
   }
   std::vector<Eigen::Vector2d> check = pts;
   for (const auto& h : detail::polyline_crossings(check, check, 0.0)) {
@@ -148,6 +169,7 @@ SectionProfile section_from_parameters(const ParametricSectionDefinition& d) {
   while (s.te_param <= s.le_param) s.te_param += curve.period();
   s.le = curve.point(s.le_param);
   s.te = curve.point(s.te_param);
+  s.chord_direction = (s.te - s.le).normalized();
   return s;
 }
 
