@@ -1,5 +1,6 @@
 #include "src/blade/blade_coordinates.hpp"
 
+#include <Eigen/Geometry>
 #include <cmath>
 
 #include "src/algo/project_point_surface.hpp"

@@ -7,7 +7,6 @@
 
 #include "src/core/error.hpp"
 #include "src/fit/interpolate.hpp"
-#include "src/fit/skin.hpp"
 
 namespace cg::blade {
 namespace {
@@ -67,7 +66,7 @@ std::string section_name(std::size_t k) { return "section " + std::to_string(k);
 
 double surface_u_at_chordwise(double c, double u_te) {
   require(c >= -1 && c <= 1, "chordwise coordinate must be in [-1, 1], got " + fmt(c));
-  return c >= 0 ? c * u_te : 1 + c * (1 - u_te);
+  return c >= 0 ? c * u_te : u_te + (1 + c) * (1 - u_te);  // exact u_te at c = +-1
 }
 
 double chordwise_at_surface_u(double u, double u_te) {
@@ -227,10 +226,18 @@ BladeModel build_blade(const BladeDefinition& def) {
 
   std::vector<BSplineCurve<3>> curves;
   for (const auto& r : rows) curves.push_back(interpolate_closed<3>(r, 3, us, uknots));
-  SkinOptions so;
-  so.degree_v = 3;
-  so.v_params = spans;
-  model.surface = skin(curves, so).surface;
+  // Skinning (The NURBS Book 10.3): the sections share degree and knots by construction, so no
+  // compatibility step is needed; each pole column is interpolated across the sections at v = span.
+  const int nu = curves.front().num_poles(), nv = static_cast<int>(curves.size());
+  const int qv = std::min(3, nv - 1);
+  const std::vector<double> vknots = averaged_knots(spans, qv);
+  std::vector<std::vector<Eigen::Vector3d>> poles(static_cast<std::size_t>(nu));
+  for (int i = 0; i < nu; ++i) {
+    std::vector<Eigen::Vector3d> column;
+    for (const auto& c : curves) column.push_back(c.pole(i));
+    poles[static_cast<std::size_t>(i)] = interpolate<3>(column, qv, spans, vknots).poles();
+  }
+  model.surface = BSplineSurface<3>::from_poles(3, qv, curves.front().knots(), vknots, poles, {}, true, false);
   model.u_te = u_te;
   const std::size_t first = opt.overbuild > 0 ? 1 : 0;
   for (std::size_t k = 0; k < placed.size(); ++k) {
