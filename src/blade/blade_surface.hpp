@@ -13,15 +13,8 @@
 //  - straight vane: 3D point (a, b, z) with z = span fraction * span;
 //  - meridional: (x, r cos theta, r sin theta), x axial (see meridional_net.hpp).
 //
-// Proposed JSON form (parsed by src/config into these structs; see data/examples/*.json):
-//   "blade": { "flow_path": { "type": "straight", "span": 144.93 }
-//                           | { "type": "meridional", "hub": [[x, r], ...], "casing": [...],
-//                               "streamlines": [{"span": 0.5, "points": [[x, r], ...]}],
-//                               "leading_edge": [[x, r], ...], "trailing_edge": [[x, r], ...] },
-//              "sections": [ { "span": 0.0, "theta_deg": 0, "offset": [0, 0], "rotation_deg": 0, "scale": 1,
-//                              "points": {"file": "c3x/profile_table3_cm.csv", "unit": "cm"} }
-//                          | { "span": 1.0, "parametric": { "chord": 40, "stagger_deg": -40, ... } } ],
-//              "options": { "overbuild": 0.05, "chordwise_samples": 121, "stacking": "centroid" } }
+// The JSON form of these structs is data/schema/coolinggen.schema.json (parsed by src/config); examples
+// in data/examples/.
 #include <Eigen/Core>
 #include <optional>
 #include <variant>
@@ -88,7 +81,7 @@ struct BladeModel {
   BSplineSurface<3> surface;
   double u_te = 0.5;  // u of the TE (see the parametrisation above)
   FlowPathTrim trim;
-  double span_length = 0;                 // straight: span; meridional: mean LE-line length hub->casing
+  double span_length = 0;                 // straight: span; meridional: (x, r) distance of the LE cuts hub-casing
   std::vector<double> section_spans;      // spans of the defined sections
   std::vector<SectionProfile> profiles;   // 2D profiles after placement transforms (section frame)
   std::vector<BSplineCurve<3>> section_curves;  // 3D section curves (the iso-v curves at section_spans)
