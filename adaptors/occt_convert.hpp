@@ -2,7 +2,9 @@
 // Exact two-way conversion between CoolingGen B-splines and OCCT's Geom_BSplineCurve,
 // Geom2d_BSplineCurve and Geom_BSplineSurface. Knots, multiplicities, poles and weights are copied
 // bit for bit; periodic curves and surfaces map to OCCT's periodic form (one period of poles, knots
-// continued by the period), so a round trip returns the identical representation.
+// continued by the period), so a round trip returns the identical representation. With a periodic
+// seam multiplicity m > 1 OCCT's pole 1 is our pole m - 1 (its flat knots start p + 1 - m knots
+// before the seam, ours p knots before it); the conversion rotates the poles accordingly.
 #include <Geom2d_BSplineCurve.hxx>
 #include <Geom_BSplineCurve.hxx>
 #include <Geom_BSplineSurface.hxx>
