@@ -7,8 +7,8 @@
 // breakpoints with the matching multiplicity. The fit is a least-squares B-spline in the base
 // parameter (fit_least_squares, The NURBS Book 9.4.1) of degree max(p, 3); it is then VERIFIED:
 // |F(u) - O(u)| at 8(q+1) parameters per knot span (an upper bound of the distance between the two
-// curves) must be <= tol, and every span that fails is halved by a new knot and the fit repeated
-// (Tiller & Hanson 1984 / Piegl & Tiller 1999 "Computing offsets of NURBS curves and surfaces").
+// curves) must be <= tol / 2 (a margin for the error between the check points), and every span
+// that fails is halved by a new knot and the fit repeated (Tiller & Hanson 1984 / Piegl & Tiller 1999 "Computing offsets of NURBS curves and surfaces").
 #include <vector>
 
 #include "src/algo/offset_exact.hpp"

@@ -74,10 +74,16 @@ OffsetBreakpoints offset_breakpoints(const Curve2& base, double distance, double
   const int samples = 12 + 4 * base.degree();
   for (std::size_t s = 0; s + 1 < knots.size(); ++s) {
     const double lo = knots[s], hi = knots[s + 1];
-    if (s == 0) bp.params.push_back(lo);
+    if (s == 0) {
+      bp.params.push_back(lo);
+    } else if ((off.speed_ratio(lo, -1) < 0) != (off.speed_ratio(lo, +1) < 0)) {
+      // The curvature jumps across a knot of a C1 base: the offset reverses there (a cusp at the knot).
+      bp.cusps.push_back(static_cast<int>(bp.params.size()) - 1);
+    }
+    const double min_gap = 1e-12 * (hi - lo);  // roots closer to a knot than this belong to the knot
     double u0 = lo, g0 = off.speed_ratio(lo, +1);
     for (int i = 1; i <= samples; ++i) {
-      const double u1 = lo + (hi - lo) * i / samples;
+      const double u1 = i == samples ? hi : lo + (hi - lo) * i / samples;
       const double g1 = off.speed_ratio(u1, i == samples ? -1 : +1);
       if ((g0 < 0) != (g1 < 0) && g0 != 0.0) {
         // Bisection to machine precision: g is smooth inside the span, and the cusp parameter
@@ -85,6 +91,7 @@ OffsetBreakpoints offset_breakpoints(const Curve2& base, double distance, double
         double l = u0, r = u1, gl = g0;
         while (r - l > 4 * std::numeric_limits<double>::epsilon() * (std::abs(l) + std::abs(r))) {
           const double m = 0.5 * (l + r);
+          if (m <= l || m >= r) break;
           const double gm = off.speed_ratio(m, +1);
           if ((gm < 0) == (gl < 0)) {
             l = m;
@@ -92,10 +99,9 @@ OffsetBreakpoints offset_breakpoints(const Curve2& base, double distance, double
           } else {
             r = m;
           }
-          if (m == l && m == r) break;
         }
         const double c = 0.5 * (l + r);
-        if (c > bp.params.back() && c < hi) {
+        if (c > bp.params.back() + min_gap && c < hi - min_gap) {
           bp.cusps.push_back(static_cast<int>(bp.params.size()));
           bp.params.push_back(c);
         }
