@@ -97,6 +97,18 @@ void chain_length_area(const OffsetChain& ch, double& length, double& area) {
   for (const auto& p : ch.pieces) length_area(p, length, area);
 }
 
+// Total length and enclosed area of a result made of closed chains.
+void result_length_area(const TrimmedOffset& r, double& length, double& area) {
+  length = area = 0;
+  for (const auto& ch : r.chains) {
+    BOOST_TEST(ch.closed);
+    double l, a;
+    chain_length_area(ch, l, a);
+    length += l;
+    area += std::abs(a);
+  }
+}
+
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(raw_offset_vs_geom2d_offset_curve) {
@@ -214,9 +226,9 @@ BOOST_AUTO_TEST_CASE(ellipse_offsets) {
 
 namespace {
 
-// Lengths and areas of OCCT's offset of the closed planar curve c by d (our sign convention).
-double occt_offset(const Curve2& c, double d, double& length, double& area, int& wires) {
-  const TopoDS_Wire w = BRepBuilderAPI_MakeWire(planar_edge(c));
+// Total length and area of OCCT's offset of the closed planar wire w (the curve c) by d (our sign
+// convention), its number of wires, and its max deviation from the distance |d| to c.
+double occt_offset(const TopoDS_Wire& w, const Curve2& c, double d, double& length, double& area, int& wires) {
   BRepOffsetAPI_MakeOffset mo(w, GeomAbs_Arc);
   // OCCT offsets a counter-clockwise wire outward for a positive value; ours is outward for d < 0.
   mo.Perform(-d);
@@ -228,7 +240,7 @@ double occt_offset(const Curve2& c, double d, double& length, double& area, int&
     GProp_GProps lp, sp;
     BRepGProp::LinearProperties(ex.Current(), lp, true);
     length += lp.Mass();
-    BRepGProp::SurfaceProperties(BRepBuilderAPI_MakeFace(TopoDS::Wire(ex.Current()), true).Face(), sp, 1e-10);
+    BRepGProp::SurfaceProperties(BRepBuilderAPI_MakeFace(TopoDS::Wire(ex.Current()), true).Face(), sp, 1e-12);
     area += std::abs(sp.Mass());
   }
   // Max deviation of OCCT's offset from the distance |d| to the base (its own accuracy).
@@ -271,17 +283,10 @@ BOOST_AUTO_TEST_CASE(closed_offsets_vs_brep_offset) {
     const TrimmedOffset r = offset_curve(cs.c, cs.d, tol);
     BOOST_TEST_REQUIRE(r.chains.size() == cs.chains);
     check_trimmed(cs.c, r, 2 * tol);
-    double L = 0, A = 0;
-    for (const auto& ch : r.chains) {
-      BOOST_TEST(ch.closed);
-      double l, a;
-      chain_length_area(ch, l, a);
-      L += l;
-      A += std::abs(a);
-    }
-    double OL, OA;
+    double L, A, OL, OA;
     int wires;
-    const double dev = occt_offset(cs.c, cs.d, OL, OA, wires);
+    result_length_area(r, L, A);
+    const double dev = occt_offset(BRepBuilderAPI_MakeWire(planar_edge(cs.c)), cs.c, cs.d, OL, OA, wires);
     BOOST_TEST_MESSAGE("d " << cs.d << " OCCT deviation " << dev << " dL " << (L - OL) / OL << " dA " << (A - OA) / OA << " loops " << r.loops_removed);
     BOOST_TEST(wires == static_cast<int>(cs.chains));
     BOOST_TEST(dev <= 1e-12);  // OCCT's result is exact here (Geom2d_OffsetCurve edges)
@@ -307,26 +312,10 @@ BOOST_AUTO_TEST_CASE(nonconvex_polygon_vs_brep_offset) {
     const double tol = 1e-9;
     const TrimmedOffset r = offset_curve(poly, d, tol);
     check_trimmed(poly, r, 1e-8);
-    BRepOffsetAPI_MakeOffset mo(mp.Wire(), GeomAbs_Arc);
-    mo.Perform(-d);
-    BOOST_TEST_REQUIRE(mo.IsDone());
-    double L = 0, A = 0, OL = 0, OA = 0;
-    int wires = 0;
-    for (const auto& ch : r.chains) {
-      BOOST_TEST(ch.closed);
-      double l, a;
-      chain_length_area(ch, l, a);
-      L += l;
-      A += std::abs(a);
-    }
-    for (TopExp_Explorer ex(mo.Shape(), TopAbs_WIRE); ex.More(); ex.Next()) {
-      ++wires;
-      GProp_GProps lp, sp;
-      BRepGProp::LinearProperties(ex.Current(), lp, true);
-      BRepGProp::SurfaceProperties(BRepBuilderAPI_MakeFace(TopoDS::Wire(ex.Current()), true).Face(), sp, 1e-12);
-      OL += lp.Mass();
-      OA += std::abs(sp.Mass());
-    }
+    double L, A, OL, OA;
+    int wires;
+    result_length_area(r, L, A);
+    BOOST_TEST(occt_offset(mp.Wire(), poly, d, OL, OA, wires) <= 1e-12);
     BOOST_TEST_MESSAGE("polygon d " << d << " chains " << r.chains.size() << " dL " << (L - OL) / OL << " dA " << (A - OA) / OA << " loops " << r.loops_removed);
     BOOST_TEST(r.chains.size() == static_cast<std::size_t>(wires));
     BOOST_TEST(r.chains.size() == (d == 0.8 ? 2u : 1u));
