@@ -1,7 +1,10 @@
 // Point and derivative evaluation (de Boor and the batched span cache) against OCCT's
-// Geom_BSplineCurve / Geom2d_BSplineCurve / Geom_BSplineSurface on random curves and surfaces.
+// Geom_BSplineCurve / Geom2d_BSplineCurve / Geom_BSplineSurface on random curves and surfaces,
+// clamped and periodic (parameters up to 3 periods outside the base period), derivative orders up
+// to p + 1 (DN), and the batched evaluators against de Boor on sorted and shuffled parameters.
 // Tolerance 1e-12 relative to the size of the derivative's scale: both sides sum the same
-// O(p) products in a different order, so they agree to a few ulps of the largest term.
+// O(p) products in a different order, so they agree to a few ulps of the largest term; orders >= 3
+// get 1e-11 (each order multiplies the rounding of the previous ones by the quotient rule).
 #define BOOST_TEST_MODULE evaluation_vs_occt
 #include <boost/test/unit_test.hpp>
 
@@ -13,6 +16,9 @@
 #include "src/core/curve_evaluator.hpp"
 #include "src/core/surface_evaluator.hpp"
 #include "support/random_geometry.hpp"
+#include "support/random_periodic.hpp"
+
+#include <algorithm>
 
 using namespace cg;
 
@@ -106,6 +112,171 @@ BOOST_AUTO_TEST_CASE(surfaces_random) {
       BOOST_TEST((q - to_eigen(P)).norm() <= 1e-12 * scale);
       BOOST_TEST((qu - to_eigen(Du)).norm() <= 1e-12 * ds);
       BOOST_TEST((qv - to_eigen(Dv)).norm() <= 1e-12 * ds);
+    }
+  }
+}
+
+namespace {
+
+template <int Dim>
+using OcctVec = typename std::conditional<Dim == 3, gp_Vec, gp_Vec2d>::type;
+
+// All derivative orders 1..p+1 of de Boor against OCCT's DN, at parameters inside the domain or, for
+// periodic curves, up to 3 periods away (both sides wrap).
+template <int Dim, class OcctCurve>
+void compare_all_orders(const BSplineCurve<Dim>& c, const OcctCurve& oc, test::Rng& r) {
+  const int p = c.degree();
+  for (int s = 0; s < 4; ++s) {
+    double u = r.uniform(c.first_param(), c.last_param());
+    if (c.is_periodic()) u += c.period() * r.integer(-3, 3);
+    const auto d = c.derivatives(u, p + 1);
+    for (int k = 1; k <= p + 1; ++k) {
+      const OcctVec<Dim> v = oc.DN(u, k);
+      BOOST_TEST((d[static_cast<std::size_t>(k)] - to_eigen(v)).norm() <= (k >= 3 ? 1e-11 : 1e-12) * deriv_scale(c, k),
+                 "order " << k << " degree " << p << (c.is_rational() ? " rational" : ""));
+    }
+  }
+}
+
+// Batched evaluator (points, points_d1, points_d2) against de Boor on sorted and shuffled parameters.
+template <int Dim>
+void compare_batched(const BSplineCurve<Dim>& c, test::Rng& r) {
+  using Point = typename BSplineCurve<Dim>::Point;
+  std::vector<double> u(64);
+  const double a = c.first_param(), T = c.last_param() - a;
+  // Periodic: samples off the seam (derivatives are one-sided there), shifted by up to 2 periods.
+  const double off = c.is_periodic() ? 0.5 : 0.0;
+  for (std::size_t i = 0; i < u.size(); ++i) u[i] = a + T * (static_cast<double>(i) + off) / (u.size() - 1 + 2 * off);
+  if (c.is_periodic())
+    for (double& x : u) x += T * r.integer(-2, 2);
+  for (int pass = 0; pass < 2; ++pass) {
+    if (pass == 1) std::shuffle(u.begin(), u.end(), r.gen);
+    CurveEvaluator<Dim> ev(c);
+    std::vector<Point> P(u.size()), D1(u.size()), D2(u.size()), Q(u.size()), E1(u.size());
+    ev.points_d2(u.data(), u.size(), P.data(), D1.data(), D2.data());
+    ev.points_d1(u.data(), u.size(), Q.data(), E1.data());
+    const std::vector<Point> P0 = ev.points(u);
+    for (std::size_t i = 0; i < u.size(); ++i) {
+      const auto d = c.derivatives(u[i], 2);
+      BOOST_TEST((P[i] - d[0]).norm() <= 1e-12 * deriv_scale(c, 0));
+      BOOST_TEST((P0[i] - d[0]).norm() <= 1e-12 * deriv_scale(c, 0));
+      BOOST_TEST((Q[i] - d[0]).norm() <= 1e-12 * deriv_scale(c, 0));
+      BOOST_TEST((D1[i] - d[1]).norm() <= 1e-12 * deriv_scale(c, 1));
+      BOOST_TEST((E1[i] - d[1]).norm() <= 1e-12 * deriv_scale(c, 1));
+      BOOST_TEST((D2[i] - d[2]).norm() <= 1e-12 * deriv_scale(c, 2));
+    }
+  }
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(periodic_curves_3d_and_2d) {
+  test::Rng r(4);
+  for (int i = 0; i < 1000; ++i) {
+    const bool rational = i % 2 == 1;
+    const auto c3 = test::random_periodic_bspline<3>(r, rational);
+    const auto o3 = occt::to_occt(c3);
+    compare_all_orders(c3, *o3, r);
+    const auto c2 = test::random_periodic_bspline<2>(r, rational);
+    compare_all_orders(c2, *occt::to_occt(c2), r);
+    // Points at wrapped parameters: de Boor and the evaluator against OCCT.
+    CurveEvaluator<3> ev(c3);
+    for (int k = 0; k < 3; ++k) {
+      const double u = r.uniform(c3.first_param(), c3.last_param()) + c3.period() * r.integer(-3, 3);
+      gp_Pnt P;
+      o3->D0(u, P);
+      BOOST_TEST((ev.point(u) - to_eigen(P)).norm() <= 1e-12 * deriv_scale(c3, 0));
+      BOOST_TEST((c3.point(u) - to_eigen(P)).norm() <= 1e-12 * deriv_scale(c3, 0));
+    }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(clamped_curves_all_derivative_orders) {
+  test::Rng r(5);
+  for (int i = 0; i < 1000; ++i) {
+    const auto c = test::random_curve<3>(r, i % 2 == 1);
+    compare_all_orders(c, *occt::to_occt(c), r);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(batched_evaluator_matches_de_boor) {
+  test::Rng r(6);
+  for (int i = 0; i < 1000; ++i) {
+    const bool rational = i % 2 == 1;
+    // Degrees 1..7 use the compile-time-degree loops; 8..12 the generic one.
+    const int p = i % 10 == 9 ? r.integer(8, 12) : r.integer(1, 7);
+    compare_batched(test::random_curve<3>(r, p, r.integer(p + 1, p + 12), rational), r);
+    compare_batched(test::random_curve<2>(r, p, r.integer(p + 1, p + 12), rational), r);
+    compare_batched(test::random_curve<1>(r, p, r.integer(p + 1, p + 12), rational), r);
+    if (i % 4 == 0) compare_batched(test::random_periodic_bspline<3>(r, rational), r);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(surfaces_higher_orders_and_periodic) {
+  test::Rng r(7);
+  for (int i = 0; i < 1000; ++i) {
+    const bool rational = i % 2 == 1, pu = (i / 2) % 2 == 1, pv = (i / 4) % 2 == 1;
+    const auto s = test::random_periodic_surface(r, rational, pu, pv);
+    const auto os = occt::to_occt(s);
+    double scale = 0;
+    for (int a = 0; a < s.num_poles_u(); ++a)
+      for (int b = 0; b < s.num_poles_v(); ++b) scale = std::max(scale, s.pole(a, b).norm());
+    for (int k = 0; k < 3; ++k) {
+      double u = r.uniform(s.first_u(), s.last_u()), v = r.uniform(s.first_v(), s.last_v());
+      if (pu) u += (s.last_u() - s.first_u()) * r.integer(-3, 3);
+      if (pv) v += (s.last_v() - s.first_v()) * r.integer(-3, 3);
+      Eigen::Vector3d d[16];
+      s.derivatives(u, v, 3, d);
+      // Mixed partials S^(a,b), a + b <= 3, against DN; scale (degree * weight ratio / span)^(a+b).
+      for (int a = 0; a <= 3; ++a)
+        for (int b = 0; a + b <= 3; ++b) {
+          const Eigen::Vector3d ref = a + b == 0 ? [&] { gp_Pnt P; os->D0(u, v, P); return to_eigen(P); }()
+                                                 : to_eigen(os->DN(u, v, a, b));
+          BOOST_TEST((d[a * 4 + b] - ref).norm() <= 1e-11 * scale * std::pow(1e3, a + b),
+                     "S^(" << a << "," << b << ") degrees " << s.degree_u() << "," << s.degree_v());
+        }
+    }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(batched_surface_points_match_de_boor) {
+  // Grid walked row by row (the row cache), then the same pairs shuffled; equal and unequal degrees
+  // (compile-time and generic loops), periodic directions with wrapped parameters.
+  test::Rng r(8);
+  for (int i = 0; i < 300; ++i) {
+    const bool pu = i % 3 == 1, pv = i % 5 == 1;
+    const auto s = test::random_periodic_surface(r, i % 2 == 1, pu, pv);
+    double scale = 0;
+    for (int a = 0; a < s.num_poles_u(); ++a)
+      for (int b = 0; b < s.num_poles_v(); ++b) scale = std::max(scale, s.pole(a, b).norm());
+    const int g = 9;
+    std::vector<double> uv;
+    for (int a = 0; a < g; ++a)
+      for (int b = 0; b < g; ++b) {
+        double u = s.first_u() + (s.last_u() - s.first_u()) * a / (g - 1);
+        double v = s.first_v() + (s.last_v() - s.first_v()) * b / (g - 1);
+        if (pu) u += (s.last_u() - s.first_u()) * (a % 3 - 1);
+        if (pv) v += (s.last_v() - s.first_v()) * (b % 3 - 1);
+        uv.push_back(u);
+        uv.push_back(v);
+      }
+    for (int pass = 0; pass < 2; ++pass) {
+      if (pass == 1) {
+        std::vector<std::size_t> order(uv.size() / 2);
+        for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+        std::shuffle(order.begin(), order.end(), r.gen);
+        std::vector<double> sh;
+        for (std::size_t k : order) {
+          sh.push_back(uv[2 * k]);
+          sh.push_back(uv[2 * k + 1]);
+        }
+        uv = sh;
+      }
+      SurfaceEvaluator<3> ev(s);
+      std::vector<Eigen::Vector3d> P(uv.size() / 2);
+      ev.points(uv.data(), P.size(), P.data());
+      for (std::size_t k = 0; k < P.size(); ++k)
+        BOOST_TEST((P[k] - s.point(uv[2 * k], uv[2 * k + 1])).norm() <= 1e-12 * scale);
     }
   }
 }
