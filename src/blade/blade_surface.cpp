@@ -5,6 +5,7 @@
 #include <sstream>
 #include <type_traits>
 
+#include "src/blade/format.hpp"
 #include "src/core/error.hpp"
 #include "src/fit/interpolate.hpp"
 
@@ -13,12 +14,7 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-std::string fmt(double v) {
-  std::ostringstream s;
-  s.precision(6);
-  s << v;
-  return s.str();
-}
+using detail::fmt;
 
 // p -> A p + b applied to a periodic curve (homogeneous poles: w P -> A (w P) + w b).
 BSplineCurve<2> transformed(const BSplineCurve<2>& c, const Eigen::Matrix2d& A, const Eigen::Vector2d& b) {

@@ -6,14 +6,20 @@
 #include "src/core/error.hpp"
 
 namespace cg::blade::detail {
+
+// 8-point Gauss-Legendre nodes/weights on [-1, 1] (Abramowitz & Stegun 25.4.30).
+const double kGaussLegendre8Nodes[8] = {-0.9602898564975363, -0.7966664774136267, -0.5255324099163290,
+                                        -0.1834346424956498, 0.1834346424956498,  0.5255324099163290,
+                                        0.7966664774136267,  0.9602898564975363};
+const double kGaussLegendre8Weights[8] = {0.1012285362903763, 0.2223810344533745, 0.3137066458778873,
+                                          0.3626837833783620, 0.3626837833783620, 0.3137066458778873,
+                                          0.2223810344533745, 0.1012285362903763};
+
 namespace {
 
 constexpr int kCellsPerSpan = 4;
-// 8-point Gauss-Legendre nodes/weights on [-1, 1] (Abramowitz & Stegun 25.4.30).
-constexpr double kNodes[8] = {-0.9602898564975363, -0.7966664774136267, -0.5255324099163290, -0.1834346424956498,
-                              0.1834346424956498,  0.5255324099163290,  0.7966664774136267,  0.9602898564975363};
-constexpr double kWeights[8] = {0.1012285362903763, 0.2223810344533745, 0.3137066458778873, 0.3626837833783620,
-                                0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
+const double* const kNodes = kGaussLegendre8Nodes;
+const double* const kWeights = kGaussLegendre8Weights;
 
 }  // namespace
 

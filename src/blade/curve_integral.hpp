@@ -12,6 +12,10 @@
 
 namespace cg::blade::detail {
 
+/// 8-point Gauss-Legendre rule on [-1, 1] (exact for polynomials of degree <= 15).
+extern const double kGaussLegendre8Nodes[8];
+extern const double kGaussLegendre8Weights[8];
+
 enum class Integrand { ArcLength, ArcLengthOverRadius };
 
 class CurveIntegral {

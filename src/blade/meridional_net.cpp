@@ -9,18 +9,14 @@
 
 #include "src/algo/intersect_curves.hpp"
 #include "src/blade/planar_polyline.hpp"
+#include "src/blade/format.hpp"
 #include "src/core/error.hpp"
 #include "src/fit/interpolate.hpp"
 
 namespace cg::blade {
 namespace {
 
-std::string fmt(double v) {
-  std::ostringstream s;
-  s.precision(6);
-  s << v;
-  return s.str();
-}
+using detail::fmt;
 
 std::string span_name(double span) { return "streamline at span " + fmt(span); }
 

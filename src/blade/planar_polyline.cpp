@@ -33,6 +33,19 @@ std::vector<SegmentHit> polyline_crossings(const std::vector<Eigen::Vector2d>& a
   return hits;
 }
 
+bool polygon_is_simple(const std::vector<Eigen::Vector2d>& points, int& edge_a, int& edge_b) {
+  std::vector<Eigen::Vector2d> closed = points;
+  closed.push_back(points.front());
+  const int n = static_cast<int>(points.size());
+  for (const auto& h : polyline_crossings(closed, closed, 0.0)) {
+    const int d = std::abs(h.i - h.j);
+    if (d <= 1 || d == n - 1) continue;  // the same or adjacent edges
+    edge_a = h.i, edge_b = h.j;
+    return false;
+  }
+  return true;
+}
+
 std::vector<double> sample_params(const BSplineCurve<2>& curve, int per_span) {
   std::vector<double> u;
   const auto& U = curve.knots();

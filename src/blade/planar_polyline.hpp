@@ -22,6 +22,10 @@ bool segment_intersection(const Eigen::Vector2d& a0, const Eigen::Vector2d& a1, 
 std::vector<SegmentHit> polyline_crossings(const std::vector<Eigen::Vector2d>& a, const std::vector<Eigen::Vector2d>& b,
                                            double eps);
 
+/// True when no two non-adjacent edges of the closed polygon (last point joined to the first) intersect;
+/// otherwise writes the first offending edge pair to edge_a, edge_b.
+bool polygon_is_simple(const std::vector<Eigen::Vector2d>& points, int& edge_a, int& edge_b);
+
 /// Parameters sampling the curve with `per_span` points per non-empty knot span (ends included).
 std::vector<double> sample_params(const BSplineCurve<2>& curve, int per_span);
 

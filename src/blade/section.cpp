@@ -17,11 +17,6 @@ namespace {
 using detail::CurveIntegral;
 using detail::Integrand;
 
-constexpr double kGaussNodes[8] = {-0.9602898564975363, -0.7966664774136267, -0.5255324099163290, -0.1834346424956498,
-                                   0.1834346424956498,  0.5255324099163290,  0.7966664774136267,  0.9602898564975363};
-constexpr double kGaussWeights[8] = {0.1012285362903763, 0.2223810344533745, 0.3137066458778873, 0.3626837833783620,
-                                     0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
-
 double suction_end(const SectionProfile& s) {
   double te = s.te_param;
   while (te <= s.le_param) te += s.curve.period();
@@ -90,17 +85,11 @@ double curvature(const BSplineCurve<2>& c, double u) {
   return std::abs(d[1].x() * d[2].y() - d[1].y() * d[2].x()) / std::pow(d[1].norm(), 3);
 }
 
-// Polygon (closed) with no two non-adjacent edges intersecting.
 void require_simple_polygon(const std::vector<Eigen::Vector2d>& pts, const std::string& what) {
-  std::vector<Eigen::Vector2d> closed = pts;
-  closed.push_back(pts.front());
-  const int n = static_cast<int>(pts.size());
-  for (const auto& h : detail::polyline_crossings(closed, closed, 0.0)) {
-    const int d = std::abs(h.i - h.j);
-    if (d <= 1 || d == n - 1) continue;  // the same or adjacent edges
-    throw InvalidGeometry(what + ": the section outline intersects itself (edges " + std::to_string(h.i) + " and " +
-                          std::to_string(h.j) + ")");
-  }
+  int a = 0, b = 0;
+  if (!detail::polygon_is_simple(pts, a, b))
+    throw InvalidGeometry(what + ": the section outline intersects itself (edges " + std::to_string(a) + " and " +
+                          std::to_string(b) + ")");
 }
 
 struct Detected {
@@ -199,8 +188,8 @@ SectionProperties section_properties(const BSplineCurve<2>& curve) {
     const double mid = 0.5 * (lo + hi), half = 0.5 * (hi - lo);
     for (int k = 0; k < 8; ++k) {
       Eigen::Vector2d d[2];
-      curve.derivatives(mid + half * kGaussNodes[k], 1, d);
-      const double w = kGaussWeights[k] * half;
+      curve.derivatives(mid + half * detail::kGaussLegendre8Nodes[k], 1, d);
+      const double w = detail::kGaussLegendre8Weights[k] * half;
       a2 += w * (d[0].x() * d[1].y() - d[0].y() * d[1].x());
       mx += w * 0.5 * d[0].x() * d[0].x() * d[1].y();
       my -= w * 0.5 * d[0].y() * d[0].y() * d[1].x();

@@ -7,6 +7,7 @@
 #include "src/blade/planar_polyline.hpp"
 #include "src/blade/section.hpp"
 #include "src/core/bezier_curve.hpp"
+#include "src/blade/format.hpp"
 #include "src/core/error.hpp"
 #include "src/fit/interpolate.hpp"
 
@@ -16,12 +17,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 double rad(double deg) { return deg * kPi / 180.0; }
 
-std::string fmt(double v) {
-  std::ostringstream s;
-  s.precision(6);
-  s << v;
-  return s.str();
-}
+using detail::fmt;
 
 // Half-thickness h(t) = L g(t) q(t), g = sqrt(t (1 - t)). q is cubic on each side of the maximum tm:
 // q = q_e + a s + b s^2 + c s^3 with s = t - t_e, t_e = 0 (front) or 1 (rear); q_e fixes the tip radius
@@ -154,11 +150,8 @@ SectionProfile section_from_parameters(const ParametricSectionDefinition& d) {
     const Eigen::Vector2d normal = Eigen::Vector2d(-cd[1].y(), cd[1].x()).normalized();
     pts[static_cast<std::size_t>(k)] = cd[0] + side * L * 0.5 * std::sin(phi) * q_of(t) * normal;
   }
-  std::vector<Eigen::Vector2d> check = pts;
-  for (const auto& h : detail::polyline_crossings(check, check, 0.0)) {
-    const int dd = std::abs(h.i - h.j);
-    require(dd <= 1 || dd == 2 * n - 2, what + ": the outline intersects itself");
-  }
+  int ea = 0, eb = 0;
+  require(detail::polygon_is_simple(pts, ea, eb), what + ": the outline intersects itself");
   const std::vector<double> params = interpolation_parameters<2>(pts, ParamMethod::Centripetal, true);
   const BSplineCurve<2> curve =
       interpolate_closed<2>(pts, 3, params, periodic_interpolation_knots(params, 3));
