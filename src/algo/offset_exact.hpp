@@ -58,7 +58,8 @@ struct OffsetBreakpoints {
   /// Sorted parameters from first to last (both included); pieces of the raw offset are the
   /// intervals between consecutive entries.
   std::vector<double> params;
-  /// Indices into params of the cusps (g changes sign).
+  /// Indices into params of the cusps: g changes sign inside a span, or across a knot where the
+  /// curvature of a C1 base jumps.
   std::vector<int> cusps;
   /// Corner arcs: index into params, and the turning angle (radians, signed, |angle| < pi) from
   /// the left-limit normal to the right-limit normal.
