@@ -6,6 +6,7 @@
 
 #include "src/core/error.hpp"
 #include "src/core/knots.hpp"
+#include "src/core/rational.hpp"  // binomial
 
 namespace cg::bundle {
 namespace {
@@ -150,45 +151,68 @@ PoleBundle elevate_raw(const PoleBundle& B, int t) {
   const int nq = static_cast<int>(Uh.size()) - q - 1;
   out.poles.resize(rows, nq);
 
-  // The p-subsets of q arguments, as bit masks of the t arguments left out.
-  std::vector<unsigned> drops;
-  for (unsigned m = 0; m < (1u << q); ++m)
-    if (__builtin_popcount(m) == t) drops.push_back(m);
-  const double inv_count = 1.0 / static_cast<double>(drops.size());
-
   Eigen::MatrixXd D(rows, p + 1);
-  std::vector<double> x(static_cast<size_t>(q)), xs(static_cast<size_t>(p));
+  Eigen::VectorXd sum(rows);
+  std::vector<double> vals, xs(static_cast<size_t>(p));
+  std::vector<int> mult, count;
+  const double total = binomial(q, p);
+  // Degree-p blossom of span k at xs (de Boor triangle), added to sum with the given weight.
+  auto add_blossom = [&](int k, double weight) {
+    D = B.poles.middleCols(k - p, p + 1);
+    for (int r = 1; r <= p; ++r) {
+      const double xr = xs[static_cast<size_t>(r - 1)];
+      for (int i = p; i >= r; --i) {
+        const double lo = U[static_cast<size_t>(k - p + i)], hi = U[static_cast<size_t>(k + i + 1 - r)];
+        const double alpha = (xr - lo) / (hi - lo);
+        D.col(i) = (1.0 - alpha) * D.col(i - 1) + alpha * D.col(i);
+      }
+    }
+    sum += weight * D.col(p);
+  };
   for (int j = 0; j < nq; ++j) {
     // Non-empty span of Uh among [j, j+q] closest to the middle of the arguments.
     int l = -1;
     for (int off = 0; off <= q && l < 0; ++off)
       for (int cand : {j + q / 2 - off, j + q / 2 + off + 1})
-        if (l < 0 && cand >= j && cand < j + q + 1 && cand + 1 < static_cast<int>(Uh.size()) &&
+        if (l < 0 && cand >= j && cand <= j + q && cand + 1 < static_cast<int>(Uh.size()) &&
             Uh[static_cast<size_t>(cand)] < Uh[static_cast<size_t>(cand + 1)])
           l = cand;
-    const double left = Uh[static_cast<size_t>(l)], right = Uh[static_cast<size_t>(l + 1)];
+    const double left = Uh[static_cast<size_t>(l)], right = Uh[static_cast<size_t>(l + 1)], mid = 0.5 * (left + right);
     const int k = find_span(U.data(), n, p, left);  // the same span in the original knots
-    // Arguments farthest from the span first: the last de Boor levels use the narrowest knot intervals.
-    for (int a = 0; a < q; ++a) x[static_cast<size_t>(a)] = Uh[static_cast<size_t>(j + 1 + a)];
-    const double mid = 0.5 * (left + right);
-    Eigen::VectorXd sum = Eigen::VectorXd::Zero(rows);
-    for (unsigned m : drops) {
-      int c = 0;
-      for (int a = 0; a < q; ++a)
-        if (!(m & (1u << a))) xs[static_cast<size_t>(c++)] = x[static_cast<size_t>(a)];
-      std::stable_sort(xs.begin(), xs.end(), [mid](double a, double b) { return std::abs(a - mid) > std::abs(b - mid); });
-      D = B.poles.middleCols(k - p, p + 1);
-      for (int r = 1; r <= p; ++r) {
-        const double xr = xs[static_cast<size_t>(r - 1)];
-        for (int i = p; i >= r; --i) {
-          const double lo = U[static_cast<size_t>(k - p + i)], hi = U[static_cast<size_t>(k + i + 1 - r)];
-          const double alpha = (xr - lo) / (hi - lo);
-          D.col(i) = (1.0 - alpha) * D.col(i - 1) + alpha * D.col(i);
-        }
-      }
-      sum += D.col(p);
+    // Distinct argument values, farthest from the span first: the last de Boor levels use the narrowest
+    // knot intervals, so the arguments nearest the span go there.
+    vals.clear();
+    mult.clear();
+    for (int a = 0; a < q; ++a) {
+      const double x = Uh[static_cast<size_t>(j + 1 + a)];
+      if (!vals.empty() && vals.back() == x) ++mult.back();
+      else vals.push_back(x), mult.push_back(1);
     }
-    out.poles.col(j) = sum * inv_count;
+    std::vector<size_t> order(vals.size());
+    for (size_t a = 0; a < order.size(); ++a) order[a] = a;
+    std::stable_sort(order.begin(), order.end(),
+                     [&](size_t a, size_t b) { return std::abs(vals[a] - mid) > std::abs(vals[b] - mid); });
+    // The p-element sub-multisets of the arguments; each stands for prod C(mult, count) subsets.
+    count.assign(vals.size(), 0);
+    sum.setZero();
+    auto enumerate = [&](auto&& self, size_t v, int left_over, double weight) -> void {
+      if (v == order.size()) {
+        if (left_over != 0) return;
+        int c = 0;
+        for (size_t o : order)
+          for (int e = 0; e < count[o]; ++e) xs[static_cast<size_t>(c++)] = vals[o];
+        add_blossom(k, weight);
+        return;
+      }
+      const size_t o = order[v];
+      for (int cnt = std::min(mult[o], left_over); cnt >= 0; --cnt) {
+        count[o] = cnt;
+        self(self, v + 1, left_over - cnt, weight * binomial(mult[o], cnt));
+      }
+      count[o] = 0;
+    };
+    enumerate(enumerate, 0, p, 1.0);
+    out.poles.col(j) = sum / total;
   }
   return out;
 }
