@@ -1,0 +1,189 @@
+#include "src/algo/ray_surface.hpp"
+
+#include <Eigen/Geometry>
+#include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <functional>
+
+#include "src/core/error.hpp"
+
+namespace cg {
+
+namespace {
+
+constexpr int kMaxDepth = 60;         // about 30 halvings in each direction
+constexpr double kFlatTol = 0.02;  // "nearly planar": pole deviation / patch box diagonal
+constexpr double kTransversalCos = 0.2;
+
+}  // namespace
+
+RaySurfaceCaster::RaySurfaceCaster(const BSplineSurface<3>& surface, double tolerance)
+    : s_(&surface), pu_(surface.degree_u()), pv_(surface.degree_v()), patches_(surface_bezier_patches(surface)) {
+  BoundingBox<3> all;
+  for (const auto& p : patches_) all.add(p.box);
+  scale_ = all.diagonal();
+  tol_ = tolerance > 0 ? tolerance : 1e-12 * (1.0 + scale_);
+}
+
+std::size_t RaySurfaceCaster::new_block() {
+  if (!free_.empty()) {
+    const std::size_t b = free_.back();
+    free_.pop_back();
+    return b;
+  }
+  const std::size_t size = static_cast<std::size_t>((pu_ + 1) * (pv_ + 1) * 4);
+  pool_.resize(pool_.size() + size);
+  return pool_.size() / size - 1;
+}
+
+// Newton on F(s, u, v) = o + s d - S(u, v) = 0 from the patch centre; (u, v) may leave the patch by a
+// margin while converging, a hit must end inside it.
+bool RaySurfaceCaster::newton(const Item& it, const Eigen::Vector3d& o, const Eigen::Vector3d& d, RaySurfaceHit& hit) {
+  double u = 0.5 * (it.u0 + it.u1), v = 0.5 * (it.v0 + it.v1);
+  const double mu = 0.5 * (it.u1 - it.u0), mv = 0.5 * (it.v1 - it.v0);
+  const double ulo = std::max(s_->first_u(), it.u0 - mu), uhi = std::min(s_->last_u(), it.u1 + mu);
+  const double vlo = std::max(s_->first_v(), it.v0 - mv), vhi = std::min(s_->last_v(), it.v1 + mv);
+  Eigen::Vector3d D[4];
+  s_->derivatives(u, v, 1, D);
+  double s = d.dot(D[0] - o) / d.squaredNorm();
+  for (int k = 0; k < 30; ++k) {
+    const Eigen::Vector3d F = o + s * d - D[0];
+    if (F.norm() <= tol_) {
+      const double eu = 1e-12 * (it.u1 - it.u0), ev = 1e-12 * (it.v1 - it.v0);
+      if (u < it.u0 - eu || u > it.u1 + eu || v < it.v0 - ev || v > it.v1 + ev) return false;
+      hit.found = true;
+      hit.ray_param = s;
+      hit.u = u;
+      hit.v = v;
+      hit.point = D[0];
+      hit.gap = F.norm();
+      return true;
+    }
+    Eigen::Matrix3d J;
+    J.col(0) = d;
+    J.col(1) = -D[2];
+    J.col(2) = -D[1];
+    const auto lu = J.partialPivLu();
+    if (!(std::abs(lu.determinant()) > 1e-300)) return false;
+    const Eigen::Vector3d step = lu.solve(-F);
+    if (!step.allFinite()) return false;
+    s += step[0];
+    u = std::clamp(u + step[1], ulo, uhi);
+    v = std::clamp(v + step[2], vlo, vhi);
+    s_->derivatives(u, v, 1, D);
+  }
+  return false;
+}
+
+RaySurfaceHit RaySurfaceCaster::first_hit(const Eigen::Vector3d& o, const Eigen::Vector3d& d, double s_max) {
+  require(o.allFinite(), "ray origin must have finite coordinates");
+  require(d.allFinite() && d.norm() > 0, "ray direction must be finite and non-zero");
+  require(s_max >= 0, "s_max must be >= 0");
+  const int n = (pu_ + 1) * (pv_ + 1);
+  const std::size_t block_size = static_cast<std::size_t>(n * 4);
+  const double grow = tol_;
+  heap_.clear();
+  free_.clear();
+  pool_.clear();
+  auto push = [&](const double* hp, double u0, double u1, double v0, double v1, int depth) {
+    const auto box = homogeneous_pole_box<3>(hp, n);
+    double e0 = 0.0, e1 = s_max;
+    if (!box.clip_ray(o, d, e0, e1, grow)) return;
+    const std::size_t b = new_block();
+    std::memcpy(&pool_[b * block_size], hp, sizeof(double) * block_size);
+    heap_.push_back(Item{e0, u0, u1, v0, v1, depth, b});
+    std::push_heap(heap_.begin(), heap_.end(), std::greater<Item>());
+  };
+  for (const auto& p : patches_) push(p.hpoles.data(), p.u0, p.u1, p.v0, p.v1, 0);
+
+  RaySurfaceHit best;
+  double best_s = s_max;
+  left_.resize(block_size);
+  right_.resize(block_size);
+  hp_.resize(block_size);
+  double* left = left_.data();
+  double* right = right_.data();
+  double* hp = hp_.data();
+  while (!heap_.empty()) {
+    std::pop_heap(heap_.begin(), heap_.end(), std::greater<Item>());
+    const Item it = heap_.back();
+    heap_.pop_back();
+    if (it.entry > best_s) break;
+    std::memcpy(hp, &pool_[it.block * block_size], sizeof(double) * block_size);
+    free_.push_back(it.block);
+
+    // Flatness: poles within 2% of the patch size from the plane through the corners' centroid with
+    // the mean corner normal, and weights within 2% of each other (a rational patch with unequal
+    // weights can be curved even when its poles are coplanar, e.g. degree 1).
+    auto pole = [&](int k, int l) {
+      const double* h = &hp[static_cast<std::size_t>((k * (pv_ + 1) + l) * 4)];
+      return Eigen::Vector3d(h[0] / h[3], h[1] / h[3], h[2] / h[3]);
+    };
+    const Eigen::Vector3d c00 = pole(0, 0), c01 = pole(0, pv_), c10 = pole(pu_, 0), c11 = pole(pu_, pv_);
+    const Eigen::Vector3d nc[4] = {(c10 - c00).cross(c01 - c00), (c11 - c10).cross(c00 - c10),
+                                   (c01 - c11).cross(c10 - c11), (c00 - c01).cross(c11 - c01)};
+    const Eigen::Vector3d centre = 0.25 * (c00 + c01 + c10 + c11);
+    Eigen::Vector3d mean_n = Eigen::Vector3d::Zero();
+    for (const auto& nv : nc)
+      if (nv.norm() > 0) mean_n += nv.normalized();
+    if (mean_n.norm() > 0) mean_n.normalize();
+    BoundingBox<3> box;
+    double dev = 0, len_u = 0, len_v = 0, wmin = 1e300, wmax = 0;
+    for (int k = 0; k <= pu_; ++k)
+      for (int l = 0; l <= pv_; ++l) {
+        const Eigen::Vector3d q = pole(k, l);
+        const double wq = hp[static_cast<std::size_t>((k * (pv_ + 1) + l) * 4 + 3)];
+        wmin = std::min(wmin, wq);
+        wmax = std::max(wmax, wq);
+        box.add(q);
+        dev = std::max(dev, std::abs((q - centre).dot(mean_n)));
+        if (k < pu_) len_u += (pole(k + 1, l) - q).norm();
+        if (l < pv_) len_v += (pole(k, l + 1) - q).norm();
+      }
+    const bool flat = mean_n.norm() > 0 && dev <= kFlatTol * box.diagonal() && wmax <= (1 + kFlatTol) * wmin;
+    const Eigen::Vector3d dn = d.normalized();
+    bool transversal = true;
+    int side = 0;
+    for (const auto& nv : nc) {
+      const double nn = nv.norm();
+      const double cosang = nn > 0 ? dn.dot(nv) / nn : 0.0;
+      const int sg = cosang > 0 ? 1 : -1;
+      if (std::abs(cosang) < kTransversalCos || (side != 0 && sg != side)) transversal = false;
+      side = sg;
+    }
+    if (flat || it.depth >= kMaxDepth) {
+      RaySurfaceHit h;
+      const bool hit = newton(it, o, d, h) && h.ray_param >= -tol_ / d.norm() && h.ray_param <= best_s;
+      if (hit) {
+        h.ray_param = std::max(h.ray_param, 0.0);
+        best = h;
+        best_s = h.ray_param;
+      }
+      if ((flat && transversal) || it.depth >= kMaxDepth) continue;
+      // Not transversal: the patch may be met twice; examine its halves while the ray runs inside
+      // the box before the best hit.
+      if (hit && (best_s - it.entry) * d.norm() <= 1e3 * tol_) continue;
+    }
+    const bool along_u = len_u * (pv_ + 1) >= len_v * (pu_ + 1);
+    split_bezier_patch(pu_, pv_, 4, hp, along_u, 0.5, left, right);
+    const double um = 0.5 * (it.u0 + it.u1), vm = 0.5 * (it.v0 + it.v1);
+    if (along_u) {
+      push(left, it.u0, um, it.v0, it.v1, it.depth + 1);
+      push(right, um, it.u1, it.v0, it.v1, it.depth + 1);
+    } else {
+      push(left, it.u0, it.u1, it.v0, vm, it.depth + 1);
+      push(right, it.u0, it.u1, vm, it.v1, it.depth + 1);
+    }
+  }
+  return best;
+}
+
+RaySurfaceHit ray_surface_first_hit(const BSplineSurface<3>& surface, const Eigen::Vector3d& origin,
+                                    const Eigen::Vector3d& direction, double s_max) {
+  RaySurfaceCaster caster(surface);
+  return caster.first_hit(origin, direction, s_max);
+}
+
+}  // namespace cg
