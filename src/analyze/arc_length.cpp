@@ -68,7 +68,9 @@ double adaptive(const BSplineCurve<Dim>& c, double a, double b, double whole, do
   const double m = 0.5 * (a + b);
   const double left = gauss_panel(c, a, m), right = gauss_panel(c, m, b);
   const double sum = left + right;
-  if (std::abs(sum - whole) <= tol || depth >= 50 || !(m > a && m < b)) return sum;
+  // The floor 1e-14 |sum| stops refinement at the rounding level of a panel whose speed is far above
+  // the average (its share of the absolute tolerance may be below its own rounding noise).
+  if (std::abs(sum - whole) <= std::max(tol, 1e-14 * std::abs(sum)) || depth >= 40 || !(m > a && m < b)) return sum;
   return adaptive(c, a, m, left, 0.5 * tol, depth + 1) + adaptive(c, m, b, right, 0.5 * tol, depth + 1);
 }
 

@@ -1,0 +1,294 @@
+#include "src/fit/approximate.hpp"
+
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <string>
+
+#include "src/core/basis.hpp"
+#include "src/core/curve_evaluator.hpp"
+#include "src/core/error.hpp"
+
+namespace cg {
+
+namespace {
+
+void check_degree(int p) {
+  require(p >= 1 && p <= kMaxDegree,
+          "degree " + std::to_string(p) + " out of range [1, " + std::to_string(kMaxDegree) + "]");
+}
+
+// Schoenberg-Whitney for the interior poles 1 .. n-1 of a clamped fit against the interior parameters
+// params[1 .. m-1]: each pole needs its own parameter strictly inside its basis support, in increasing
+// order. Supports are ordered intervals (U_i, U_{i+p+1}), so assigning greedily the first free
+// parameter is optimal. Equivalent to full column rank of the least-squares matrix.
+bool schoenberg_whitney(const std::vector<double>& params, int p, const std::vector<double>& U) {
+  const int n = static_cast<int>(U.size()) - p - 2;  // last pole index
+  const std::size_t last = params.size() - 1;      // params[last] is the fixed end point
+  std::size_t j = 1;
+  for (int i = 1; i <= n - 1; ++i) {
+    const double lo = U[static_cast<std::size_t>(i)], hi = U[static_cast<std::size_t>(i + p + 1)];
+    while (j < last && params[j] <= lo) ++j;
+    if (j >= last || params[j] >= hi) return false;
+    ++j;
+  }
+  return true;
+}
+
+template <int Dim>
+double max_error(const BSplineCurve<Dim>& c, const PointList<Dim>& points, const std::vector<double>& params,
+                 std::vector<double>& err) {
+  CurveEvaluator<Dim> ev(c);
+  err.resize(points.size());
+  double e = 0;
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    err[k] = (ev.point(params[k]) - points[k]).norm();
+    e = std::max(e, err[k]);
+  }
+  return e;
+}
+
+// Candidate knots: for every span [U_s, U_s+1) (s = span index into `breaks`) whose data error exceeds
+// tol and which holds at least 2 data points, the mean parameter of its data: both halves then keep
+// data. Worst spans first.
+std::vector<double> refinement_candidates(const std::vector<double>& breaks, const std::vector<double>& params,
+                                          const std::vector<double>& err, double tol) {
+  const std::size_t spans = breaks.size() - 1;
+  std::vector<double> worst(spans, 0.0), sum(spans, 0.0);
+  std::vector<int> count(spans, 0);
+  for (std::size_t k = 0; k < params.size(); ++k) {
+    std::size_t s = static_cast<std::size_t>(std::upper_bound(breaks.begin(), breaks.end(), params[k]) - breaks.begin());
+    s = std::min(std::max<std::size_t>(s, 1), spans) - 1;
+    worst[s] = std::max(worst[s], err[k]);
+    sum[s] += params[k];
+    ++count[s];
+  }
+  std::vector<std::size_t> order;
+  for (std::size_t s = 0; s < spans; ++s)
+    if (worst[s] > tol && count[s] >= 2) order.push_back(s);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return worst[a] > worst[b]; });
+  std::vector<double> cand;
+  for (std::size_t s : order) {
+    const double mean = sum[s] / count[s];
+    if (mean > breaks[s] && mean < breaks[s + 1]) cand.push_back(mean);
+  }
+  return cand;
+}
+
+std::vector<double> distinct_values(const std::vector<double>& U, double a, double b) {
+  std::vector<double> v{a};
+  for (double k : U)
+    if (k > v.back() && k < b) v.push_back(k);
+  v.push_back(b);
+  return v;
+}
+
+void check_tolerance(double tol, int npoints, int p) {
+  require(std::isfinite(tol) && tol > 0, "approximation tolerance must be positive, got " + std::to_string(tol));
+  require(npoints >= p + 1, "approximation of degree " + std::to_string(p) + " needs at least " +
+                                std::to_string(p + 1) + " points, got " + std::to_string(npoints));
+}
+
+// Least-squares solve of the normal equations N^T N X = N^T R (banded, SPD under Schoenberg-Whitney):
+// returns false when numerically rank deficient.
+bool solve_normal(const Eigen::SparseMatrix<double>& N, const Eigen::MatrixXd& R, Eigen::MatrixXd& X) {
+  const Eigen::SparseMatrix<double> NtN = N.transpose() * N;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(NtN);
+  if (ldlt.info() != Eigen::Success) return false;
+  const auto D = ldlt.vectorD();
+  if (!(D.minCoeff() > 1e-13 * D.maxCoeff())) return false;
+  X = ldlt.solve(N.transpose() * R);
+  return ldlt.info() == Eigen::Success && X.allFinite();
+}
+
+}  // namespace
+
+std::vector<double> approximation_knots(const std::vector<double>& params, int p, int num_poles) {
+  check_degree(p);
+  const int m = static_cast<int>(params.size()) - 1;
+  const int n = num_poles - 1;
+  require(num_poles >= p + 1 && n <= m, "approximation with " + std::to_string(num_poles) +
+                                            " poles needs degree + 1 <= poles <= points (" + std::to_string(m + 1) +
+                                            ")");
+  std::vector<double> U(static_cast<std::size_t>(n + p + 2));
+  for (int i = 0; i <= p; ++i) {
+    U[static_cast<std::size_t>(i)] = params.front();
+    U[static_cast<std::size_t>(n + 1 + i)] = params.back();
+  }
+  // eq. 9.68-9.69: d = (m+1)/(n-p+1); u_{p+j} = (1-a) u_{i-1} + a u_i with i = int(j d), a = j d - i.
+  const double d = static_cast<double>(m + 1) / (n - p + 1);
+  for (int j = 1; j <= n - p; ++j) {
+    const int i = static_cast<int>(j * d);
+    const double a = j * d - i;
+    U[static_cast<std::size_t>(p + j)] =
+        (1 - a) * params[static_cast<std::size_t>(i - 1)] + a * params[static_cast<std::size_t>(i)];
+  }
+  return U;
+}
+
+template <int Dim>
+BSplineCurve<Dim> fit_least_squares(const PointList<Dim>& points, const std::vector<double>& params, int p,
+                                    const std::vector<double>& U) {
+  check_degree(p);
+  const int m = static_cast<int>(points.size()) - 1;
+  require(m >= 1 && static_cast<int>(params.size()) == m + 1, "least squares needs >= 2 points and one parameter each");
+  const int n = static_cast<int>(U.size()) - p - 2;
+  validate_knots(U, p, n + 1);
+  require(n <= m, "least squares with " + std::to_string(n + 1) + " poles needs at least as many points, got " +
+                      std::to_string(m + 1));
+  for (int k = 1; k <= m; ++k)
+    require(params[static_cast<std::size_t>(k)] >= params[static_cast<std::size_t>(k - 1)],
+            "least-squares parameters must be non-decreasing");
+  require(params.front() == U.front() && params.back() == U.back(),
+          "least-squares parameters must start and end at the knot domain ends");
+  require(schoenberg_whitney(params, p, U),
+          "least-squares data do not determine the poles: the parameters violate the Schoenberg-Whitney condition "
+          "for these knots (a basis function without its own data point)");
+  PointList<Dim> P(static_cast<std::size_t>(n + 1));
+  P.front() = points.front();
+  P.back() = points.back();
+  if (n >= 2) {
+    // R_k = Q_k - N_0(u_k) Q_0 - N_n(u_k) Q_m for the interior data (eq. 9.63-9.66).
+    std::vector<Eigen::Triplet<double>> trip;
+    Eigen::MatrixXd R(m - 1, Dim);
+    double N[kMaxDegree + 1];
+    for (int k = 1; k < m; ++k) {
+      const double u = params[static_cast<std::size_t>(k)];
+      const int s = find_span(U.data(), n, p, u);
+      basis_funs(s, u, p, U.data(), N);
+      Eigen::Matrix<double, Dim, 1> r = points[static_cast<std::size_t>(k)];
+      for (int j = 0; j <= p; ++j) {
+        const int i = s - p + j;
+        if (i == 0)
+          r -= N[j] * points.front();
+        else if (i == n)
+          r -= N[j] * points.back();
+        else if (N[j] != 0.0)
+          trip.emplace_back(k - 1, i - 1, N[j]);
+      }
+      R.row(k - 1) = r.transpose();
+    }
+    Eigen::SparseMatrix<double> A(m - 1, n - 1);
+    A.setFromTriplets(trip.begin(), trip.end());
+    Eigen::MatrixXd X;
+    if (!solve_normal(A, R, X))
+      throw InvalidGeometry("least-squares system is numerically singular for these parameters and knots");
+    for (int i = 1; i < n; ++i) P[static_cast<std::size_t>(i)] = X.row(i - 1).transpose();
+  }
+  return BSplineCurve<Dim>(p, U, P);
+}
+
+template <int Dim>
+ApproximationResult<Dim> approximate(const PointList<Dim>& points, int p, double tol,
+                                     const ApproximationOptions& options) {
+  check_degree(p);
+  const int npts = static_cast<int>(points.size());
+  check_tolerance(tol, npts, p);
+  ApproximationResult<Dim> res;
+  res.params = interpolation_parameters<Dim>(points, options.method);
+  const int max_poles = options.max_poles > 0 ? std::min(options.max_poles, npts) : npts;
+  require(max_poles >= p + 1, "max_poles must be at least degree + 1");
+  std::vector<double> U(static_cast<std::size_t>(2 * p + 2), 0.0);
+  std::fill(U.begin() + p + 1, U.end(), 1.0);
+  std::vector<double> err;
+  for (;;) {
+    res.curve = fit_least_squares<Dim>(points, res.params, p, U);
+    res.max_error = max_error(res.curve, points, res.params, err);
+    if (res.max_error <= tol) break;
+    int poles = static_cast<int>(U.size()) - p - 1;
+    if (poles >= max_poles) break;
+    bool inserted = false;
+    for (double k : refinement_candidates(distinct_values(U, 0.0, 1.0), res.params, err, tol)) {
+      std::vector<double> V = U;
+      V.insert(std::upper_bound(V.begin(), V.end(), k), k);
+      if (!schoenberg_whitney(res.params, p, V)) continue;
+      U = std::move(V);
+      inserted = true;
+      if (++poles >= max_poles) break;
+    }
+    if (!inserted) {
+      // No span can be split without losing uniqueness: interpolate (one pole per point, error 0).
+      if (npts <= max_poles) {
+        res.curve = interpolate<Dim>(points, p, res.params, averaged_knots(res.params, p));
+        res.max_error = max_error(res.curve, points, res.params, err);
+      }
+      break;
+    }
+  }
+  res.tolerance_met = res.max_error <= tol;
+  return res;
+}
+
+template <int Dim>
+ApproximationResult<Dim> approximate_closed(const PointList<Dim>& points, int p, double tol,
+                                            const ApproximationOptions& options) {
+  check_degree(p);
+  const int npts = static_cast<int>(points.size());
+  check_tolerance(tol, npts, p);
+  ApproximationResult<Dim> res;
+  res.params = interpolation_parameters<Dim>(points, options.method, true);
+  const int max_poles = options.max_poles > 0 ? std::min(options.max_poles, npts) : npts;
+  require(max_poles >= p + 1, "max_poles must be at least degree + 1");
+  // One period of knots starting at 0 (the seam at the first point); p + 1 uniform spans to begin.
+  std::vector<double> t(static_cast<std::size_t>(p + 1));
+  for (int j = 0; j <= p; ++j) t[static_cast<std::size_t>(j)] = static_cast<double>(j) / (p + 1);
+  Eigen::MatrixXd Q(npts, Dim);
+  for (int k = 0; k < npts; ++k) Q.row(k) = points[static_cast<std::size_t>(k)].transpose();
+  std::vector<double> err;
+  bool have_curve = false;
+  for (;;) {
+    const int n = static_cast<int>(t.size());
+    const std::vector<double> U = unwrap_periodic_knots(p, t, 1.0);
+    // Periodic least squares: basis j acts on pole j mod n; all poles free.
+    std::vector<Eigen::Triplet<double>> trip;
+    double N[kMaxDegree + 1];
+    for (int k = 0; k < npts; ++k) {
+      const double u = res.params[static_cast<std::size_t>(k)];
+      const int s = find_span(U.data(), n + p - 1, p, u);
+      basis_funs(s, u, p, U.data(), N);
+      for (int j = 0; j <= p; ++j)
+        if (N[j] != 0.0) trip.emplace_back(k, (s - p + j) % n, N[j]);
+    }
+    Eigen::SparseMatrix<double> A(npts, n);
+    A.setFromTriplets(trip.begin(), trip.end());
+    Eigen::MatrixXd X;
+    if (!solve_normal(A, Q, X)) break;  // rank lost: keep the previous fit, interpolate below if needed
+    PointList<Dim> P(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i) P[static_cast<std::size_t>(i)] = X.row(i).transpose();
+    res.curve = BSplineCurve<Dim>::periodic(p, t, 1.0, P);
+    have_curve = true;
+    res.max_error = max_error(res.curve, points, res.params, err);
+    if (res.max_error <= tol || n >= max_poles) break;
+    // Insert where the error is largest, keeping data strictly inside every span (with one data point
+    // per span and n spans the periodic system has full rank; the LDLT pivots are checked anyway).
+    std::vector<double> breaks = t;
+    breaks.push_back(1.0);
+    int added = 0;
+    for (double k : refinement_candidates(breaks, res.params, err, tol)) {
+      if (n + added >= max_poles) break;
+      t.insert(std::upper_bound(t.begin(), t.end(), k), k);
+      ++added;
+    }
+    if (added == 0) break;
+  }
+  if (!have_curve || (res.max_error > tol && npts <= max_poles)) {
+    res.curve = interpolate_closed<Dim>(points, p, res.params, periodic_interpolation_knots(res.params, p));
+    res.max_error = max_error(res.curve, points, res.params, err);
+  }
+  res.tolerance_met = res.max_error <= tol;
+  return res;
+}
+
+#define CG_FIT_APPROXIMATE_INSTANTIATE(D)                                                                   \
+  template BSplineCurve<D> fit_least_squares<D>(const PointList<D>&, const std::vector<double>&, int,      \
+                                                const std::vector<double>&);                                 \
+  template ApproximationResult<D> approximate<D>(const PointList<D>&, int, double, const ApproximationOptions&); \
+  template ApproximationResult<D> approximate_closed<D>(const PointList<D>&, int, double,                  \
+                                                        const ApproximationOptions&);
+CG_FIT_APPROXIMATE_INSTANTIATE(1)
+CG_FIT_APPROXIMATE_INSTANTIATE(2)
+CG_FIT_APPROXIMATE_INSTANTIATE(3)
+
+}  // namespace cg
