@@ -69,14 +69,42 @@ TopoDS_Face plane_face(const PlaneTrim& t, const PoleBox& box, const char* which
   return mk.Face();
 }
 
-// Face on the surface of revolution of the meridional curve (x, r) about the x axis. The curve is
-// placed at angle theta0, where the surface's seam lies; theta0 is chosen opposite the blade so the
-// end face cut out of this surface carries no seam.
-TopoDS_Face revolved_face(const RevolvedTrim& t, double theta0, const char* which) {
+// Angular sector [start, start + width] about the x axis that holds the blade: the poles' angles
+// about their mean direction. When they span less than pi, the wedge between the extreme angles is
+// convex and contains every pole, hence (convex hull property) the whole surface. A margin keeps
+// the sector's side edges well away from the blade. Returns width = 2 pi (full revolution, seam
+// opposite the blade) when the poles spread too wide.
+struct Sector {
+  double start, width;
+};
+
+Sector blade_sector(const BSplineSurface<3>& s, const PoleBox& box) {
+  const double centre = std::atan2(box.centre().z(), box.centre().y());
+  double lo = 0, hi = 0;
+  for (int i = 0; i < s.num_poles_u(); ++i)
+    for (int j = 0; j < s.num_poles_v(); ++j) {
+      const Eigen::Vector3d p = s.pole(i, j);
+      double a = std::atan2(p.z(), p.y()) - centre;
+      a = std::remainder(a, 2 * kPi);  // into [-pi, pi]
+      if (std::hypot(p.y(), p.z()) == 0) return {centre + kPi, 2 * kPi};
+      lo = std::min(lo, a);
+      hi = std::max(hi, a);
+    }
+  if (hi - lo >= 0.9 * kPi) return {centre + kPi, 2 * kPi};
+  const double margin = 0.05 + 0.25 * (hi - lo);
+  return {centre + lo - margin, hi - lo + 2 * margin};
+}
+
+// Face on the surface of revolution of the meridional curve (x, r) about the x axis, over the
+// angular sector only: a smaller face makes the general fuse ~2.5x faster than a full revolution.
+// The basis curve lies at angle sector.start (for a full revolution that is the seam, opposite the
+// blade, so the end face cut out of it carries no seam).
+TopoDS_Face revolved_face(const RevolvedTrim& t, const Sector& sector, const char* which) {
   const BSplineCurve<2>& c = t.meridional;
   require(c.num_poles() >= 2, std::string(which) + " meridional curve needs at least 2 poles");
   require(!c.is_periodic(), std::string(which) + " meridional curve must not be periodic");
   std::vector<Eigen::Vector3d> poles;
+  const double theta0 = sector.start;
   for (int i = 0; i < c.num_poles(); ++i) {
     const Eigen::Vector2d q = c.pole(i);
     require(q.allFinite() && q.y() > 0.0, std::string(which) + " meridional curve: pole " + std::to_string(i) +
@@ -85,14 +113,17 @@ TopoDS_Face revolved_face(const RevolvedTrim& t, double theta0, const char* whic
   }
   const BSplineCurve<3> c3(c.degree(), c.knots(), poles, c.is_rational() ? c.weights() : std::vector<double>{});
   Handle(Geom_SurfaceOfRevolution) rev = new Geom_SurfaceOfRevolution(occt::to_occt(c3), gp_Ax1(gp::Origin(), gp::DX()));
-  BRepBuilderAPI_MakeFace mk(rev, Precision::Confusion());
+  BRepBuilderAPI_MakeFace mk = sector.width >= 2 * kPi
+                                   ? BRepBuilderAPI_MakeFace(rev, Precision::Confusion())
+                                   : BRepBuilderAPI_MakeFace(rev, 0.0, sector.width, c.first_param(), c.last_param(),
+                                                             Precision::Confusion());
   if (!mk.IsDone()) throw AlgorithmFailure(std::string("cannot make the ") + which + " surface of revolution face");
   return mk.Face();
 }
 
-TopoDS_Face trim_face(const EndTrim& t, const PoleBox& box, double theta0, const char* which) {
+TopoDS_Face trim_face(const EndTrim& t, const PoleBox& box, const Sector& sector, const char* which) {
   if (const auto* p = std::get_if<PlaneTrim>(&t)) return plane_face(*p, box, which);
-  return revolved_face(std::get<RevolvedTrim>(t), theta0, which);
+  return revolved_face(std::get<RevolvedTrim>(t), sector, which);
 }
 
 std::vector<TopoDS_Face> pieces_of(BOPAlgo_Builder& gf, const TopoDS_Face& f) {
@@ -154,16 +185,15 @@ BladeSolid build_blade_solid(const BSplineSurface<3>& surface, const EndTrim& hu
   require(!surface.is_periodic_v(), "blade surface must not be periodic in v (spanwise)");
 
   const PoleBox box = pole_box(surface);
-  // Seam of the revolved trims: opposite the blade's mean circumferential position.
-  const double theta0 = std::atan2(box.centre().z(), box.centre().y()) + kPi;
+  const Sector sector = blade_sector(surface, box);
 
   const TopoDS_Face blade = [&] {
     BRepBuilderAPI_MakeFace mk(occt::to_occt(surface), Precision::Confusion());
     if (!mk.IsDone()) throw AlgorithmFailure("cannot make a face of the blade surface");
     return mk.Face();
   }();
-  const TopoDS_Face hub_face = trim_face(hub, box, theta0, "hub");
-  const TopoDS_Face casing_face = trim_face(casing, box, theta0, "casing");
+  const TopoDS_Face hub_face = trim_face(hub, box, sector, "hub");
+  const TopoDS_Face casing_face = trim_face(casing, box, sector, "casing");
 
   BOPAlgo_Builder gf;
   gf.AddArgument(blade);

@@ -23,9 +23,9 @@ struct SolidCheck {
   Check closed_mesh;      ///< after BRepMesh, every oriented mesh edge has exactly one opposite
   Check positive_volume;  ///< volume > 0 (outward normals)
 
-  double volume = 0;        ///< mm^3, BRepGProp::VolumeProperties with relative accuracy 1e-9
+  double volume = 0;        ///< mm^3, BRepGProp::VolumeProperties with relative accuracy 1e-7
   double volume_error = 0;  ///< error estimate returned by BRepGProp
-  double area = 0;          ///< mm^2, BRepGProp::SurfaceProperties with relative accuracy 1e-12
+  double area = 0;          ///< mm^2, BRepGProp::SurfaceProperties with relative accuracy 1e-7
   std::array<double, 3> bbox_min{}, bbox_max{};  ///< tight box (BRepBndLib::AddOptimal), mm
   int face_count = 0;
   int solid_count = 0;

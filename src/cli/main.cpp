@@ -72,7 +72,7 @@ int run_validate(const std::string& path) {
 
 int run_build(const std::string& path, const fs::path& out_dir, bool quiet) {
   Stopwatch sw;
-  nlohmann::json timings = nlohmann::json::object();
+  nlohmann::ordered_json timings = nlohmann::ordered_json::object();  // stages in run order
   const config::Config c = load(path);
   timings["config"] = sw.lap();
   const blade::BladeModel model = config::build_model(c);
@@ -97,7 +97,7 @@ int run_build(const std::string& path, const fs::path& out_dir, bool quiet) {
     io::write_step(step, solid.solid, solid.faces, {c.output.step_schema, c.output.product_name});
     timings["step"] = sw.lap();
   }
-  report.timings_s = timings;
+  report.timings_s = nlohmann::json(timings);
   io::write_report(json, report);
   if (!ok)
     throw ChecksFailed("solid checks failed (" + report.check.failed_names() + "); wrote " + json.string() +
