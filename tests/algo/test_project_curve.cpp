@@ -204,3 +204,29 @@ BOOST_AUTO_TEST_CASE(search_radius) {
   BOOST_TEST(std::abs(res.distance - 2.0) <= 1e-14);
   BOOST_CHECK_THROW(proj.project(Eigen::Vector2d(NAN, 0)), InvalidGeometry);
 }
+
+BOOST_AUTO_TEST_CASE(periodic_curves) {
+  // Periodic (closed, unwrapped) curves: the seam is not an end, so the global minimum is found across it.
+  test::Rng r(9);
+  for (int i = 0; i < 100; ++i) {
+    const int p = r.integer(2, 5), n = r.integer(p + 2, p + 8);
+    std::vector<double> knots;
+    for (int k = 0; k < n; ++k) knots.push_back(k + r.uniform(-0.3, 0.3));
+    std::sort(knots.begin(), knots.end());
+    std::vector<Eigen::Vector3d> P;
+    std::vector<double> w;
+    for (int k = 0; k < n; ++k) {
+      P.emplace_back(r.uniform(-10, 10), r.uniform(-10, 10), r.uniform(-10, 10));
+      w.push_back(r.uniform(0.3, 3));
+    }
+    const auto c = BSplineCurve<3>::periodic(p, knots, n + 0.0, P, i % 2 ? w : std::vector<double>{});
+    const auto oc = occt::to_occt(c);
+    CurveProjector<3> proj(c);
+    const Eigen::Vector3d X = c.point(c.first_param()) + Eigen::Vector3d(r.uniform(-2, 2), r.uniform(-2, 2), r.uniform(-2, 2));
+    const auto res = proj.project(X);
+    GeomAPI_ProjectPointOnCurve api(gp_Pnt(X.x(), X.y(), X.z()), oc);
+    BOOST_TEST_REQUIRE(api.NbPoints() > 0);
+    BOOST_TEST(res.distance <= api.LowerDistance() + 1e-10);
+    BOOST_TEST(res.distance <= sampled_min(c, X, 400) + 1e-12);
+  }
+}
