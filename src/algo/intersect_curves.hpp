@@ -11,6 +11,7 @@
 // contact is accepted when the gap is within `tol`. Stalled pairs whose one piece lies within `tol`
 // of the other curve at 2(p+q)+3 samples are overlaps. Roots found by neighbouring pairs are merged.
 #include <Eigen/Core>
+#include <ostream>
 #include <vector>
 
 #include "src/core/bspline_curve.hpp"
@@ -18,6 +19,10 @@
 namespace cg {
 
 enum class ContactKind { transversal, tangent };
+
+inline std::ostream& operator<<(std::ostream& os, ContactKind k) {
+  return os << (k == ContactKind::tangent ? "tangent" : "transversal");
+}
 
 /// One isolated intersection: A(s) = B(t) = point.
 struct CurveCurvePoint {

@@ -36,9 +36,28 @@ double tangent_sine(CurveEvaluator<2>& a, CurveEvaluator<2>& b, double s, double
 }
 }  // namespace
 
+namespace {
+// Curve ends and corners (segment junctions where the tangent direction jumps), sorted.
+std::vector<double> ends_and_corners(const std::vector<BezierPiece2>& pieces) {
+  std::vector<double> out;
+  if (pieces.empty()) return out;
+  out.push_back(pieces.front().lo);
+  for (std::size_t i = 0; i + 1 < pieces.size(); ++i) {
+    const BezierPiece2& l = pieces[i];
+    const BezierPiece2& r = pieces[i + 1];
+    const V2 dl = l.pole(l.degree) - l.pole(l.degree - 1), dr = r.pole(1) - r.pole(0);
+    if (std::abs(cross(dl, dr)) > 1e-9 * dl.norm() * dr.norm() || dl.dot(dr) <= 0.0) out.push_back(l.hi);
+  }
+  out.push_back(pieces.back().hi);
+  return out;
+}
+}  // namespace
+
 CurvePairIntersector::CurvePairIntersector(const BSplineCurve<2>& a, const BSplineCurve<2>& b, double tol, bool self)
     : a_(a), b_(b), ea_(a), eb_(b), pieces_a_(bezier_pieces(a)), self_(self) {
   pieces_b_ = self ? pieces_a_ : bezier_pieces(b);
+  ends_a_ = ends_and_corners(pieces_a_);
+  ends_b_ = self ? ends_a_ : ends_and_corners(pieces_b_);
   a0_ = a.first_param();
   a1_ = a.last_param();
   b0_ = b.first_param();
@@ -55,6 +74,7 @@ CurvePairIntersector::CurvePairIntersector(const BSplineCurve<2>& a, const BSpli
   crossing_tol_ = std::min(tol_, 1e-12 * scale_);
   // Pieces smaller than this are not split further: tangential candidates are solved there.
   leaf_ = std::max(tol_, 1e-7 * scale_);
+  near_floor_ = std::max(leaf_, 1e-4 * scale_);
   closed_ = self && a.is_closed(tol_);
   // A cusp's two branches stay within tol of each other over a length ~ (tol^2 scale)^(1/3): contacts
   // on an arc that never leaves a ball of this radius are the curve meeting itself trivially.
@@ -63,11 +83,14 @@ CurvePairIntersector::CurvePairIntersector(const BSplineCurve<2>& a, const BSpli
 }
 
 void CurvePairIntersector::intersect_pieces(const BezierPiece2& x, const BezierPiece2& y) {
-  stack_.push_back({x, y});
+  stack_.push_back({x, y, false});
   while (!stack_.empty()) {
     const Task t = stack_.back();
     stack_.pop_back();
-    process(t.x, t.y);
+    if (t.near)
+      process_near_miss(t.x, t.y);
+    else
+      process(t.x, t.y);
   }
 }
 
@@ -87,27 +110,67 @@ void CurvePairIntersector::self_intersect_piece(const BezierPiece2& x) {
 }
 
 void CurvePairIntersector::split_and_push(const BezierPiece2& x, const BezierPiece2& y, double size_x,
-                                          double size_y) {
+                                          double size_y, bool near) {
   BezierPiece2 l, r;
   if (size_x >= size_y) {
     halve_piece(x, l, r);
-    stack_.push_back({l, y});
-    stack_.push_back({r, y});
+    stack_.push_back({l, y, near});
+    stack_.push_back({r, y, near});
   } else {
     halve_piece(y, l, r);
-    stack_.push_back({x, l});
-    stack_.push_back({x, r});
+    stack_.push_back({x, l, near});
+    stack_.push_back({x, r, near});
+  }
+}
+
+void CurvePairIntersector::count_work() {
+  if (++work_ > kWorkBudget)
+    throw AlgorithmFailure("curve intersection: subdivision budget of " + std::to_string(kWorkBudget) +
+                           " piece pairs exhausted");
+}
+
+void CurvePairIntersector::process_near_miss(BezierPiece2 x, BezierPiece2 y) {
+  // The pair does not meet (it was pruned exactly) but comes within tol: look for a tangential
+  // near-contact, pruning with the tol margin. Within the contact's zone nothing can be pruned, so
+  // instead of splitting down to the leaf size, every stalled pair tries the tangency system and
+  // stops when it holds inside the pair.
+  for (;;) {
+    count_work();
+    const Box2 bx = piece_box(x), by = piece_box(y);
+    if (!bx.overlaps(by, tol_)) return;
+    const double sx = bx.diagonal(), sy = by.diagonal();
+    // A local minimum of the distance inside both pieces needs parallel tangents; with separated
+    // cones the pair can only hold a touching curve end. Below near_floor_ pieces are well inside
+    // the tangency system's basin, which the stalled pairs above have tried: splitting further would
+    // only crawl along zones where the curves run within tol of each other (small-angle crossings).
+    if (std::max(sx, sy) <= near_floor_ || cones_separated(piece_cone(x), piece_cone(y))) {
+      end_touches(x, y);
+      return;
+    }
+    double ya, yb, xa, xb;
+    if (!clip_by_fat_line(x, y, tol_, ya, yb) || !clip_by_fat_line(y, x, tol_, xa, xb)) return;
+    const bool progress = yb - ya < 0.8 || xb - xa < 0.8;
+    if (ya > 0.0 || yb < 1.0) restrict_piece(y, ya, yb);
+    if (xa > 0.0 || xb < 1.0) restrict_piece(x, xa, xb);
+    if (progress) continue;
+    double s = x.param(0.5), t = y.param(0.5), gap = 0.0;
+    if (refine_tangency(ea_, eb_, s, t, gap) && s >= x.lo && s <= x.hi && t >= y.lo && t <= y.hi) {
+      if (gap <= tol_ && !crossed_extremum(s, t)) {
+        record(s, t, ContactKind::tangent);
+        return;
+      }
+    }
+    split_and_push(x, y, sx, sy, true);
+    return;
   }
 }
 
 void CurvePairIntersector::process(BezierPiece2 x, BezierPiece2 y) {
   for (;;) {
-    if (++work_ > kWorkBudget)
-      throw AlgorithmFailure("curve intersection: subdivision budget of " + std::to_string(kWorkBudget) +
-                             " piece pairs exhausted");
+    count_work();
     const Box2 bx = piece_box(x), by = piece_box(y);
     if (!bx.overlaps(by, margin_)) {
-      if (bx.overlaps(by, tol_)) leaf(x, y);
+      if (bx.overlaps(by, tol_)) stack_.push_back({x, y, true});
       return;
     }
     const double sx = bx.diagonal(), sy = by.diagonal();
@@ -120,7 +183,7 @@ void CurvePairIntersector::process(BezierPiece2 x, BezierPiece2 y) {
         // cannot meet anywhere else. Tiny junction pairs are the shared point itself.
         if (small) return;
         if (!(consecutive && seam) && joined_cone(consecutive ? x : y, consecutive ? y : x).narrow) return;
-        split_and_push(x, y, sx, sy);
+        split_and_push(x, y, sx, sy, false);
         return;
       }
     }
@@ -130,13 +193,13 @@ void CurvePairIntersector::process(BezierPiece2 x, BezierPiece2 y) {
         leaf(x, y);
         return;
       }
-      split_and_push(x, y, sx, sy);
+      split_and_push(x, y, sx, sy, false);
       return;
     }
     double ya, yb, xa, xb;
     if (!clip_by_fat_line(x, y, margin_, ya, yb) || !clip_by_fat_line(y, x, margin_, xa, xb)) {
       double a, b;
-      if (clip_by_fat_line(x, y, tol_, a, b) && clip_by_fat_line(y, x, tol_, a, b)) leaf(x, y);
+      if (clip_by_fat_line(x, y, tol_, a, b) && clip_by_fat_line(y, x, tol_, a, b)) stack_.push_back({x, y, true});
       return;
     }
     // Sederberg & Nishita: keep clipping while an interval shrinks by 20 %, split otherwise.
@@ -149,7 +212,7 @@ void CurvePairIntersector::process(BezierPiece2 x, BezierPiece2 y) {
       return;
     }
     if (record_overlap(x, y)) return;
-    split_and_push(x, y, sx, sy);
+    split_and_push(x, y, sx, sy, false);
     return;
   }
 }
@@ -176,7 +239,7 @@ bool CurvePairIntersector::isolated_crossing(const BezierPiece2& x, const Bezier
 
 void CurvePairIntersector::leaf(const BezierPiece2& x, const BezierPiece2& y) {
   double s = x.param(0.5), t = y.param(0.5), gap = 0.0;
-  if (refine_tangency(ea_, eb_, s, t, gap) && gap <= tol_) {
+  if (refine_tangency(ea_, eb_, s, t, gap) && gap <= tol_ && !crossed_extremum(s, t)) {
     record(s, t, ContactKind::tangent);
     return;
   }
@@ -186,11 +249,35 @@ void CurvePairIntersector::leaf(const BezierPiece2& x, const BezierPiece2& y) {
     record(s, t, tangent_sine(ea_, eb_, s, t) <= 1e-6 ? ContactKind::tangent : ContactKind::transversal);
     return;
   }
-  // An end of one curve within tol of the other without a crossing (a touching end).
-  if (x.lo == a0_) end_touch(a0_, true, y.param(0.5));
-  if (x.hi == a1_) end_touch(a1_, true, y.param(0.5));
-  if (y.lo == b0_) end_touch(x.param(0.5), false, b0_);
-  if (y.hi == b1_) end_touch(x.param(0.5), false, b1_);
+  end_touches(x, y);
+}
+
+void CurvePairIntersector::end_touches(const BezierPiece2& x, const BezierPiece2& y) {
+  // An end or a corner of one curve within tol of the other without a crossing: the distance has a
+  // local minimum there without parallel tangents.
+  auto is_end = [](const std::vector<double>& ends, double u) {
+    return std::binary_search(ends.begin(), ends.end(), u);
+  };
+  for (double u : {x.lo, x.hi})
+    if (is_end(ends_a_, u)) end_touch(u, true, y.param(0.5));
+  for (double u : {y.lo, y.hi})
+    if (is_end(ends_b_, u)) end_touch(x.param(0.5), false, u);
+}
+
+bool CurvePairIntersector::crossed_extremum(double s, double t) {
+  // Near a parallel-tangent point, in the frame of A's tangent T and normal N, the signed gap along
+  // the common tangent is h(x) = h* + (kA - kB) x^2 / 2 (kB signed for B's sense relative to A's).
+  // When h* and kA - kB differ in sign the curves cross twice around the point, 2 sqrt(2|h*|/|dk|)
+  // apart: those crossings are the intersections, the extremum between them is not a contact.
+  V2 P, dP, ddP, Q, dQ, ddQ;
+  ea_.d2(s, P, dP, ddP);
+  eb_.d2(t, Q, dQ, ddQ);
+  const V2 N = V2(-dP.y(), dP.x()) / dP.norm();
+  const double h = (P - Q).dot(N);
+  if (std::abs(h) <= crossing_tol_) return false;  // an exact touch (to rounding)
+  const double ka = cross(dP, ddP) / std::pow(dP.norm(), 3);
+  const double kb = (dP.dot(dQ) < 0 ? -1.0 : 1.0) * cross(dQ, ddQ) / std::pow(dQ.norm(), 3);
+  return h * (ka - kb) < 0.0;
 }
 
 void CurvePairIntersector::end_touch(double s, bool s_fixed, double t) {

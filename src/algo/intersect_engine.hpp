@@ -28,27 +28,38 @@ class CurvePairIntersector {
 
  private:
   void process(BezierPiece2 x, BezierPiece2 y);
+  void process_near_miss(BezierPiece2 x, BezierPiece2 y);
+  void count_work();
   bool isolated_crossing(const BezierPiece2& x, const BezierPiece2& y);
   void leaf(const BezierPiece2& x, const BezierPiece2& y);
+  void end_touches(const BezierPiece2& x, const BezierPiece2& y);
   void end_touch(double s, bool s_fixed, double t);
+  bool crossed_extremum(double s, double t);
   bool record_overlap(const BezierPiece2& x, const BezierPiece2& y);
   bool covered(CurveEvaluator<2>& on, const BezierPiece2& x, CurveEvaluator<2>& other, const BezierPiece2& y,
                double& t0, double& t1);
-  void split_and_push(const BezierPiece2& x, const BezierPiece2& y, double size_x, double size_y);
+  void split_and_push(const BezierPiece2& x, const BezierPiece2& y, double size_x, double size_y, bool near);
   void record(double s, double t, ContactKind kind);
   bool trivial_self_contact(double s, double t);
 
   struct Task {
     BezierPiece2 x, y;
+    bool near;  // known not to meet: only tangential near-contacts within tol are sought
   };
   const BSplineCurve<2>& a_;
   const BSplineCurve<2>& b_;
   CurveEvaluator<2> ea_, eb_;
   std::vector<BezierPiece2> pieces_a_, pieces_b_;
+  std::vector<double> ends_a_, ends_b_;  // curve ends and corners (tangent jumps), sorted
   bool self_, closed_;
   double a0_, a1_, b0_, b1_;
-  double scale_, tol_, margin_, crossing_tol_, leaf_, trivial_radius_;
+  double scale_, tol_, margin_, crossing_tol_, leaf_, near_floor_, trivial_radius_;
   long work_ = 0;
+
+ public:
+  long work() const { return work_; }
+
+ private:
   std::vector<Task> stack_;
   std::vector<CurveCurvePoint> points_;
   std::vector<CurveCurveOverlap> overlaps_;

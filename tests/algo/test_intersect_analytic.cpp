@@ -9,19 +9,12 @@
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
-#include <ostream>
 
 #include "src/algo/intersect_curves.hpp"
 #include "src/core/error.hpp"
 
 using namespace cg;
 using V2 = Eigen::Vector2d;
-
-namespace cg {
-std::ostream& operator<<(std::ostream& os, ContactKind k) {
-  return os << (k == ContactKind::tangent ? "tangent" : "transversal");
-}
-}  // namespace cg
 
 namespace {
 
