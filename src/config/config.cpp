@@ -118,9 +118,9 @@ blade::ParametricSectionDefinition parametric_section(const Field& f) {
   d.outlet_angle_deg = f.at("outlet_metal_angle_deg").number(open(-90, 90), "deg");
   d.max_thickness = f.at("max_thickness").number(open(0, d.chord), "mm (0 < max_thickness < chord)");
   d.max_thickness_position = f.number_or("max_thickness_position", d.max_thickness_position, closed(0.1, 0.9));
-  const Range radius{0, d.max_thickness / 2, true, false};
-  d.le_radius = f.at("le_radius").number(radius, "mm (0 < radius <= max_thickness / 2)");
-  d.te_radius = f.at("te_radius").number(radius, "mm (0 < radius <= max_thickness / 2)");
+  const Range radius = open(0, d.max_thickness / 2);
+  d.le_radius = f.at("le_radius").number(radius, "mm (0 < radius < max_thickness / 2)");
+  d.te_radius = f.at("te_radius").number(radius, "mm (0 < radius < max_thickness / 2)");
   d.points_per_side = f.integer_or("points_per_side", d.points_per_side, 8, 2000);
   return d;
 }
