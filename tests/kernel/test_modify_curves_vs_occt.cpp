@@ -207,7 +207,7 @@ void reversal_case(test::Rng&, const BSplineCurve<Dim>& c) {
 
 template <int Dim>
 void non_periodic_case(test::Rng& r, const BSplineCurve<Dim>& any) {
-  const auto c = test::random_periodic_curve<Dim>(r, any.is_rational());  // every case periodic
+  const auto c = test::random_periodic_bspline<Dim>(r, any.is_rational());  // every case periodic
   const auto mine = to_non_periodic(c);
   auto oc = occt::to_occt(c);
   // OCCT keeps the unwrapped knots (end multiplicity = seam multiplicity, ends not clamped); its Segment on

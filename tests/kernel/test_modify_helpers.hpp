@@ -1,5 +1,5 @@
 #pragma once
-// Helpers shared by the test_modify_* tests: random periodic curves, OCCT handle types per dimension,
+// Helpers shared by the test_modify_* tests: random test curves, OCCT handle types per dimension,
 // representation and shape comparisons.
 //
 // Tolerances (used throughout): poles and points agree to 1e-12 relative to the pole scale max|P|. Both
@@ -17,6 +17,7 @@
 
 #include "src/core/bspline_curve.hpp"
 #include "support/random_geometry.hpp"
+#include "support/random_periodic.hpp"
 
 namespace cg::test {
 
@@ -26,36 +27,11 @@ constexpr double kKnotTol = 1e-14;
 template <int Dim>
 using OcctCurve = std::conditional_t<Dim == 3, Geom_BSplineCurve, Geom2d_BSplineCurve>;
 
-/// Random periodic curve: degree 1..7, n = p+1 .. p+10 poles per period, random period knots (some
-/// repeated up to multiplicity p, the seam knot too), random period start and length.
-template <int Dim>
-BSplineCurve<Dim> random_periodic_curve(Rng& r, bool rational) {
-  const int p = r.integer(1, 7), n = r.integer(p + 1, p + 10);
-  const double t0 = r.uniform(-3, 3), T = r.uniform(0.5, 10);
-  std::vector<double> inner;
-  const int seam = (p >= 2 && r.coin(0.3)) ? r.integer(2, p) : 1;
-  for (int i = 0; i < seam; ++i) inner.push_back(t0);
-  while (static_cast<int>(inner.size()) < n) {
-    const double k = t0 + T * r.uniform(0.02, 0.98);
-    int mult = (p >= 2 && r.coin(0.25)) ? r.integer(2, p) : 1;
-    mult = std::min(mult, n - static_cast<int>(inner.size()));
-    for (int m = 0; m < mult; ++m) inner.push_back(k);
-  }
-  std::sort(inner.begin(), inner.end());
-  std::vector<typename BSplineCurve<Dim>::Point> P(static_cast<std::size_t>(n));
-  std::vector<double> w;
-  for (auto& q : P)
-    for (int d = 0; d < Dim; ++d) q[d] = r.uniform(-10, 10);
-  if (rational)
-    for (int i = 0; i < n; ++i) w.push_back(r.uniform(0.2, 5.0));
-  return BSplineCurve<Dim>::periodic(p, inner, T, P, w);
-}
-
 /// Random curve for case i: alternating polynomial/rational, one case in four periodic.
 template <int Dim>
 BSplineCurve<Dim> random_case_curve(Rng& r, int i) {
   const bool rational = i % 2 == 1;
-  if ((i / 2) % 4 == 3) return random_periodic_curve<Dim>(r, rational);
+  if ((i / 2) % 4 == 3) return random_periodic_bspline<Dim>(r, rational);
   return random_curve<Dim>(r, rational);
 }
 

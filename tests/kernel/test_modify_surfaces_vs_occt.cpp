@@ -1,7 +1,7 @@
 // Surface modification operations against OCCT's Geom_BSplineSurface on random surfaces (polynomial and
-// rational, degrees 1..5, repeated interior knots) and on surfaces periodic in u: knot insertion in u/v vs
+// rational, degrees 1..5, repeated interior knots, one in four periodic in u, v or both): insertion in u/v vs
 // InsertUKnot/InsertVKnot, refinement vs InsertUKnots/InsertVKnots, degree elevation vs IncreaseDegree,
-// transformation vs Transform, periodic -> clamped vs SetUNotPeriodic. The shape must be unchanged on a
+// transformation vs Transform, periodic -> clamped vs SetU/VNotPeriodic. The shape must be unchanged on a
 // 7 x 7 parameter grid.
 // Tolerance 1e-12 of the pole scale, as for curves (test_modify_helpers.hpp): each pole row is a curve
 // operation with the same alphas.
@@ -73,30 +73,11 @@ double shape_deviation(const BSplineSurface<3>& a, const BSplineSurface<3>& b) {
   return e / pole_scale(a);
 }
 
-// Surface periodic in u: one period of random knots (seam multiplicity up to the degree) and a pole grid
-// whose last pu rows repeat the first ones; v clamped.
-BSplineSurface<3> random_u_periodic_surface(test::Rng& r, bool rational) {
-  const auto cu = test::random_periodic_curve<1>(r, false);  // supplies degree and unwrapped knots in u
-  const int pu = cu.degree(), nu = cu.num_poles(), n = cu.num_period_poles();
-  const int pv = r.integer(1, 4), nv = r.integer(pv + 1, pv + 5);
-  std::vector<std::vector<Eigen::Vector3d>> P(static_cast<std::size_t>(nu), std::vector<Eigen::Vector3d>(static_cast<std::size_t>(nv)));
-  std::vector<std::vector<double>> W(static_cast<std::size_t>(nu), std::vector<double>(static_cast<std::size_t>(nv), 1.0));
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < nv; ++j) {
-      P[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] = Eigen::Vector3d(r.uniform(-10, 10), r.uniform(-10, 10), r.uniform(-10, 10));
-      if (rational) W[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] = r.uniform(0.2, 5);
-    }
-  for (int i = n; i < nu; ++i) {
-    P[static_cast<std::size_t>(i)] = P[static_cast<std::size_t>(i - n)];
-    W[static_cast<std::size_t>(i)] = W[static_cast<std::size_t>(i - n)];
-  }
-  if (!rational) W.clear();
-  return BSplineSurface<3>::from_poles(pu, pv, cu.knots(), test::random_knots(r, pv, nv), P, W, true, false);
-}
-
 BSplineSurface<3> random_case_surface(test::Rng& r, int i) {
   const bool rational = i % 2 == 1;
-  return (i / 2) % 4 == 3 ? random_u_periodic_surface(r, rational) : test::random_surface(r, rational);
+  if ((i / 2) % 4 != 3) return test::random_surface(r, rational);
+  const int dirs = r.integer(1, 3);  // periodic in u, v or both
+  return test::random_periodic_surface(r, rational, dirs & 1, dirs & 2);
 }
 
 // A parameter inside the domain of knots U (degree p), an existing knot of multiplicity < p in 30% of
@@ -117,7 +98,8 @@ void run(unsigned long seed, Op op) {
   for (int i = 0; i < kCases; ++i) {
     const auto s = random_case_surface(r, i);
     BOOST_TEST_CONTEXT("case " << i << " degrees " << s.degree_u() << "," << s.degree_v()
-                               << (s.is_periodic_u() ? " u-periodic" : "") << (s.is_rational() ? " rational" : "")) {
+                               << (s.is_periodic_u() ? " u-periodic" : "") << (s.is_periodic_v() ? " v-periodic" : "")
+                               << (s.is_rational() ? " rational" : "")) {
       op(r, s);
     }
   }
@@ -184,19 +166,23 @@ BOOST_AUTO_TEST_CASE(degree_elevation_u_and_v_vs_occt) {
     BOOST_TEST(shape_deviation(s, mv) <= kPoleTol);
     BOOST_TEST(mu.degree_u() == s.degree_u() + tu);
     BOOST_TEST(mv.degree_v() == s.degree_v() + tv);
-    auto ou = occt::to_occt(s), ov = occt::to_occt(s);
-    if (s.is_periodic_u()) {
-      // OCCT's periodic IncreaseDegree is unreliable (see the curve test): compare in clamped form.
-      ou->SetUNotPeriodic();
-      ou->Segment(s.first_u(), s.last_u(), s.first_v(), s.last_v());
-      ou->IncreaseDegree(s.degree_u() + tu, s.degree_v());
-      BOOST_TEST(surface_difference(to_non_periodic(mu), occt::from_occt(*ou)) == "");
-    } else {
-      ou->IncreaseDegree(s.degree_u() + tu, s.degree_v());
-      BOOST_TEST(surface_difference(mu, occt::from_occt(*ou)) == "");
-    }
-    ov->IncreaseDegree(s.degree_u(), s.degree_v() + tv);
-    BOOST_TEST(surface_difference(mv, occt::from_occt(*ov)) == "");
+    // OCCT's periodic IncreaseDegree is unreliable (see the curve test): periodic surfaces are compared in
+    // clamped form, OCCT clamping first (SetU/VNotPeriodic + Segment).
+    auto reference = [&](int du, int dv) {
+      auto o = occt::to_occt(s);
+      if (s.is_periodic_u() || s.is_periodic_v()) {
+        if (s.is_periodic_u()) o->SetUNotPeriodic();
+        if (s.is_periodic_v()) o->SetVNotPeriodic();
+        o->Segment(s.first_u(), s.last_u(), s.first_v(), s.last_v());
+      }
+      o->IncreaseDegree(s.degree_u() + du, s.degree_v() + dv);
+      return occt::from_occt(*o);
+    };
+    const bool periodic = s.is_periodic_u() || s.is_periodic_v();
+    BOOST_TEST(surface_difference(periodic ? to_non_periodic(mu) : mu, reference(tu, 0)) == "");
+    BOOST_TEST(surface_difference(periodic ? to_non_periodic(mv) : mv, reference(0, tv)) == "");
+    BOOST_TEST(mu.is_periodic_u() == s.is_periodic_u());
+    BOOST_TEST(mv.is_periodic_v() == s.is_periodic_v());
   });
 }
 
@@ -225,12 +211,15 @@ BOOST_AUTO_TEST_CASE(transform_vs_occt) {
 BOOST_AUTO_TEST_CASE(periodic_to_clamped_vs_occt) {
   test::Rng r(105);
   for (int i = 0; i < kCases; ++i) {
-    const auto s = random_u_periodic_surface(r, i % 2 == 1);
+    const int dirs = r.integer(1, 3);
+    const auto s = test::random_periodic_surface(r, i % 2 == 1, dirs & 1, dirs & 2);
     const auto mine = to_non_periodic(s);
     auto o = occt::to_occt(s);
-    o->SetUNotPeriodic();  // keeps unclamped end knots; Segment clamps them
+    if (s.is_periodic_u()) o->SetUNotPeriodic();  // keeps unclamped end knots; Segment clamps them
+    if (s.is_periodic_v()) o->SetVNotPeriodic();
     o->Segment(s.first_u(), s.last_u(), s.first_v(), s.last_v());
     BOOST_TEST(!mine.is_periodic_u());
+    BOOST_TEST(!mine.is_periodic_v());
     BOOST_TEST(surface_difference(mine, occt::from_occt(*o)) == "");
     BOOST_TEST(shape_deviation(s, mine) <= kPoleTol);
   }
