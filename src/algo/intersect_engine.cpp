@@ -290,8 +290,7 @@ void CurvePairIntersector::end_touch(double s, bool s_fixed, double t) {
 }
 
 bool CurvePairIntersector::covered(CurveEvaluator<2>& on, const BezierPiece2& x, CurveEvaluator<2>& other,
-                                   const BezierPiece2& y, double& t0, double& t1) {
-  const double lo = other.curve().first_param(), hi = other.curve().last_param();
+                                   const BezierPiece2& y, double lo, double hi, double& t0, double& t1) {
   // Cheap rejection at the midpoint first (most stalled pairs are two nearby crossings).
   double t = y.param(0.5);
   if (project_point(other, on.point(x.param(0.5)), t, lo, hi) > tol_) return false;
@@ -338,11 +337,13 @@ bool CurvePairIntersector::covered(CurveEvaluator<2>& on, const BezierPiece2& x,
 
 bool CurvePairIntersector::record_overlap(const BezierPiece2& x, const BezierPiece2& y) {
   double u0, u1;
-  if (piece_box(x).diagonal() > leaf_ && covered(ea_, x, eb_, y, u0, u1)) {
+  // Projections run over the whole other curve (an overlap may straddle its segments); on one curve
+  // they stay on y's side of x, or every piece would cover itself.
+  if (piece_box(x).diagonal() > leaf_ && covered(ea_, x, eb_, y, self_ ? x.hi : b0_, b1_, u0, u1)) {
     overlaps_.push_back({x.lo, x.hi, u0, u1});
     return true;
   }
-  if (piece_box(y).diagonal() > leaf_ && covered(eb_, y, ea_, x, u0, u1)) {
+  if (piece_box(y).diagonal() > leaf_ && covered(eb_, y, ea_, x, a0_, self_ ? y.lo : a1_, u0, u1)) {
     if (u0 < u1)
       overlaps_.push_back({u0, u1, y.lo, y.hi});
     else

@@ -36,8 +36,10 @@ class CurvePairIntersector {
   void end_touch(double s, bool s_fixed, double t);
   bool crossed_extremum(double s, double t);
   bool record_overlap(const BezierPiece2& x, const BezierPiece2& y);
+  /// True when piece x (of `on`) lies within tol of `other` restricted to [lo, hi] (starting near y),
+  /// monotonically along it from other(t0) to other(t1).
   bool covered(CurveEvaluator<2>& on, const BezierPiece2& x, CurveEvaluator<2>& other, const BezierPiece2& y,
-               double& t0, double& t1);
+               double lo, double hi, double& t0, double& t1);
   void split_and_push(const BezierPiece2& x, const BezierPiece2& y, double size_x, double size_y, bool near);
   void record(double s, double t, ContactKind kind);
   bool trivial_self_contact(double s, double t);
