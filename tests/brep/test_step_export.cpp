@@ -22,6 +22,7 @@
 #include <sstream>
 
 #include "brep/synthetic_blade.hpp"
+#include "brep/temp_files.hpp"
 #include "export/atomic_file.hpp"
 #include "export/report.hpp"
 #include "export/step_writer.hpp"
@@ -33,35 +34,12 @@ using namespace cg;
 
 namespace {
 
-// A fresh empty directory per test case, removed afterwards.
-struct TempDir {
-  fs::path path;
-  explicit TempDir(const std::string& tag) {
-    path = fs::temp_directory_path() / ("cg_step_export_" + tag + "_" + std::to_string(::getpid()));
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~TempDir() { fs::remove_all(path); }
-  std::vector<std::string> entries() const {
-    std::vector<std::string> v;
-    for (const auto& e : fs::directory_iterator(path)) v.push_back(e.path().filename().string());
-    return v;
-  }
-};
-
 brep::BladeSolid sample_solid() {
   const test::EllipticBlade e;
   const std::vector<double> U{0, 0, 1, 1};
   const BSplineCurve<2> hub(1, U, {Eigen::Vector2d(-40, 90), Eigen::Vector2d(40, 92)});
   const BSplineCurve<2> casing(1, U, {Eigen::Vector2d(-40, 121), Eigen::Vector2d(40, 119)});
   return brep::build_blade_solid(test::elliptic_blade_surface(e), brep::RevolvedTrim{hub}, brep::RevolvedTrim{casing});
-}
-
-std::string file_text(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 // Face names found on the sub-shape labels of the free shapes of a STEP file read through XCAF.
@@ -95,7 +73,7 @@ void round_trip(io::StepSchema schema) {
   const auto solid = sample_solid();
   const brep::SolidCheck before = brep::verify_solid(solid.solid);
   BOOST_TEST_REQUIRE(before.all_passed());
-  TempDir dir(io::step_schema_name(schema));
+  test::TempDir dir(std::string("step_") + io::step_schema_name(schema));
   const fs::path file = dir.path / "blade.step";
   io::write_step(file, solid.solid, solid.faces, {schema, "synthetic_blade"});
   BOOST_TEST(dir.entries() == std::vector<std::string>{"blade.step"});  // no temporary file left
@@ -109,7 +87,7 @@ void round_trip(io::StepSchema schema) {
   BOOST_TEST(std::abs(after.volume - before.volume) <= 1e-6 * before.volume);
   BOOST_TEST(after.face_count == before.face_count);
 
-  const std::string text = file_text(file);
+  const std::string text = test::read_text(file);
   BOOST_TEST(text.find(schema == io::StepSchema::AP242 ? "AP242" : "AUTOMOTIVE_DESIGN") != std::string::npos);
   BOOST_TEST(text.find("SI_UNIT(.MILLI.,.METRE.)") != std::string::npos);
   for (const char* n : {brep::kWallFaceName, brep::kHubFaceName, brep::kCasingFaceName})
@@ -132,7 +110,7 @@ BOOST_AUTO_TEST_CASE(schema_names) {
 }
 
 BOOST_AUTO_TEST_CASE(atomic_write_leaves_nothing_on_failure) {
-  TempDir dir("atomic");
+  test::TempDir dir("atomic");
   const fs::path target = dir.path / "out.txt";
   {
     std::ofstream(target) << "old";
@@ -144,13 +122,13 @@ BOOST_AUTO_TEST_CASE(atomic_write_leaves_nothing_on_failure) {
                                            throw std::runtime_error("disk full");
                                          }),
                     io::ExportError);
-  BOOST_TEST(file_text(target) == "old");
+  BOOST_TEST(test::read_text(target) == "old");
   BOOST_TEST(dir.entries() == std::vector<std::string>{"out.txt"});
   // A writer producing nothing is an error too.
   BOOST_CHECK_THROW(io::write_atomically(target, [](const fs::path&) {}), io::ExportError);
   BOOST_TEST(dir.entries() == std::vector<std::string>{"out.txt"});
   io::write_atomically(target, [](const fs::path& tmp) { std::ofstream(tmp) << "new"; });
-  BOOST_TEST(file_text(target) == "new");
+  BOOST_TEST(test::read_text(target) == "new");
   BOOST_CHECK_THROW(io::write_atomically(dir.path / "missing" / "x.txt", [](const fs::path& tmp) { std::ofstream(tmp) << "x"; }),
                     io::ExportError);
   // A null shape is refused before anything is written.
@@ -165,9 +143,9 @@ BOOST_AUTO_TEST_CASE(report_json_content) {
   for (const auto& f : solid.faces) ++rc.face_names[f.name];
   rc.model = {{"name", "synthetic"}};
   rc.timings_s = {{"solid", 0.1}};
-  TempDir dir("report");
+  test::TempDir dir("report");
   io::write_report(dir.path / "report.json", rc);
-  const auto j = nlohmann::json::parse(file_text(dir.path / "report.json"));
+  const auto j = nlohmann::json::parse(test::read_text(dir.path / "report.json"));
   BOOST_TEST(j.at("valid").get<bool>());
   BOOST_TEST(j.at("model").at("name").get<std::string>() == "synthetic");
   BOOST_TEST(j.at("solid").at("volume_mm3").get<double>() == rc.check.volume);

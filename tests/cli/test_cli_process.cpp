@@ -14,31 +14,19 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "brep/temp_files.hpp"
 #include "src/blade/section.hpp"
 #include "src/brep/verify.hpp"
 
 namespace fs = std::filesystem;
+using namespace cg;
 
 namespace {
 
 const fs::path kBinary = fs::path(COOLINGGEN_BINARY_DIR) / "coolinggen";
 
-struct TempDir {
-  fs::path path;
-  explicit TempDir(const std::string& tag) {
-    path = fs::temp_directory_path() / ("cg_cli_" + tag + "_" + std::to_string(::getpid()));
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~TempDir() { fs::remove_all(path); }
-};
-
-std::string read(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test::read_text;
+using test::TempDir;
 
 struct Run {
   int exit_code;
@@ -51,7 +39,7 @@ Run run(const std::string& args, const fs::path& dir) {
   const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
   const std::string cmd = "'" + kBinary.string() + "' " + args + " > '" + out.string() + "' 2> '" + err.string() + "'";
   const int status = std::system(cmd.c_str());
-  Run r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, read(out), read(err)};
+  Run r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_text(out), read_text(err)};
   fs::remove(out);
   fs::remove(err);
   return r;
@@ -67,7 +55,7 @@ int lines(const std::string& s) {
 void check_outputs(const fs::path& dir, const std::string& expected_name) {
   BOOST_TEST_REQUIRE(fs::exists(dir / "blade.step"));
   BOOST_TEST_REQUIRE(fs::exists(dir / "report.json"));
-  const auto report = nlohmann::json::parse(read(dir / "report.json"));
+  const auto report = nlohmann::json::parse(read_text(dir / "report.json"));
   BOOST_TEST(report.at("valid").get<bool>());
   BOOST_TEST(report.at("model").at("name").get<std::string>() == expected_name);
   for (const auto& [name, c] : report.at("checks").items()) BOOST_TEST(c.at("passed").get<bool>(), name);
@@ -80,7 +68,7 @@ void check_outputs(const fs::path& dir, const std::string& expected_name) {
   BOOST_TEST(v > 0);
   BOOST_TEST(std::abs(c.volume - v) <= 1e-6 * v, c.volume << " vs " << v);
   BOOST_TEST(c.face_count == report.at("solid").at("face_count").get<int>());
-  const std::string step = read(dir / "blade.step");
+  const std::string step = read_text(dir / "blade.step");
   for (const char* n : {"blade_wall", "hub", "casing"})
     BOOST_TEST(step.find(std::string("ADVANCED_FACE('") + n + "'") != std::string::npos, n);
 }
@@ -88,7 +76,7 @@ void check_outputs(const fs::path& dir, const std::string& expected_name) {
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(builtin_example_builds) {
-  TempDir dir("example");
+  TempDir dir("cli_example");
   const Run r = run("build -o '" + (dir.path / "out").string() + "'", dir.path);
   BOOST_TEST_REQUIRE(r.exit_code == 0, r.err);
   BOOST_TEST(r.err.empty(), r.err);
@@ -101,7 +89,7 @@ BOOST_AUTO_TEST_CASE(builtin_example_builds) {
 }
 
 BOOST_AUTO_TEST_CASE(straight_c3x_vane_builds) {
-  TempDir dir("c3x");
+  TempDir dir("cli_c3x");
   const nlohmann::json cfg = {
       {"name", "c3x_vane"},
       {"units", "mm"},
@@ -115,11 +103,11 @@ BOOST_AUTO_TEST_CASE(straight_c3x_vane_builds) {
   BOOST_TEST_REQUIRE(r.exit_code == 0, r.err);
   BOOST_TEST(r.out.empty());
   check_outputs(dir.path / "out", "c3x_vane");
-  BOOST_TEST(read(dir.path / "out" / "blade.step").find("AP242") != std::string::npos);
+  BOOST_TEST(read_text(dir.path / "out" / "blade.step").find("AP242") != std::string::npos);
   // Prismatic vane: volume = section area x span. The area of the interpolated C3X profile (Green's
   // theorem in our kernel) differs from the blade surface's section only by the surface's
   // re-interpolation at its chordwise samples: 1e-4 relative.
-  const auto report = nlohmann::json::parse(read(dir.path / "out" / "report.json"));
+  const auto report = nlohmann::json::parse(read_text(dir.path / "out" / "report.json"));
   const double volume = report.at("solid").at("volume_mm3").get<double>();
   cg::blade::PointSectionDefinition def;
   def.points = cg::blade::read_section_points(COOLINGGEN_SOURCE_DIR "/data/c3x/profile_table3_cm.csv", cg::blade::LengthUnit::Centimetre);
@@ -129,11 +117,11 @@ BOOST_AUTO_TEST_CASE(straight_c3x_vane_builds) {
 }
 
 BOOST_AUTO_TEST_CASE(bad_config_fails_without_output) {
-  TempDir dir("bad");
+  TempDir dir("cli_bad");
   // Take the built-in example (printed by `coolinggen example`) and break one field.
   nlohmann::json cfg;
   {
-    TempDir ex("example_json");
+    TempDir ex("cli_example_json");
     const Run e = run("example", ex.path);
     BOOST_TEST_REQUIRE(e.exit_code == 0);
     cfg = nlohmann::json::parse(e.out);
@@ -164,7 +152,7 @@ BOOST_AUTO_TEST_CASE(bad_config_fails_without_output) {
 }
 
 BOOST_AUTO_TEST_CASE(help_lists_commands) {
-  TempDir dir("help");
+  TempDir dir("cli_help");
   const Run h = run("--help", dir.path);
   BOOST_TEST(h.exit_code == 0);
   for (const char* cmd : {"build", "validate", "example"}) BOOST_TEST(h.out.find(cmd) != std::string::npos, cmd);

@@ -10,6 +10,7 @@
 #include <set>
 #include <sstream>
 
+#include "brep/temp_files.hpp"
 #include "src/config/builtin_example.hpp"
 #include "src/config/config.hpp"
 
@@ -43,16 +44,6 @@ void expect_error(const std::function<void(json&)>& edit, const std::string& pat
   BOOST_TEST(starts_with(msg, path + ":"), "expected error at " << path << ", got: '" << msg << "'");
   BOOST_TEST(msg.find(detail) != std::string::npos, "expected '" << detail << "' in: '" << msg << "'");
 }
-
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    path = fs::temp_directory_path() / ("cg_config_test_" + std::to_string(::getpid()));
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~TempDir() { fs::remove_all(path); }
-};
 
 }  // namespace
 
@@ -151,7 +142,7 @@ BOOST_AUTO_TEST_CASE(point_sections) {
                "sections[0].points.unit", "\"in\"");
 
   // A file with 3 points, relative to the base directory; and inline values converted from cm.
-  TempDir dir;
+  test::TempDir dir("config");
   std::ofstream(dir.path / "three.csv") << "x,y\n0,0\n1,1\n2,0\n";
   json doc = example();
   doc["sections"][0] = {{"span", 0}, {"points", {{"file", "three.csv"}}}};
@@ -228,10 +219,7 @@ void document_keys(const json& d, std::set<std::string>& keys) {
 // The schema is draft-07 JSON and documents every key the example uses and every key the parser
 // accepts in a point section and the options (those the example does not use).
 BOOST_AUTO_TEST_CASE(schema_documents_the_fields) {
-  std::ifstream in(COOLINGGEN_SOURCE_DIR "/data/schema/coolinggen.schema.json");
-  std::stringstream text;
-  text << in.rdbuf();
-  const json schema = json::parse(text.str());
+  const json schema = json::parse(test::read_text(COOLINGGEN_SOURCE_DIR "/data/schema/coolinggen.schema.json"));
   BOOST_TEST(schema.at("$schema").get<std::string>() == "http://json-schema.org/draft-07/schema#");
   std::set<std::string> names, keys;
   schema_property_names(schema, names);
