@@ -1,7 +1,8 @@
 #include "src/fit/approximate.hpp"
 
-#include <Eigen/SparseCholesky>
+#include <Eigen/OrderingMethods>
 #include <Eigen/SparseCore>
+#include <Eigen/SparseQR>
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -51,19 +52,18 @@ double max_error(const BSplineCurve<Dim>& c, const PointList<Dim>& points, const
 }
 
 // Candidate knots: for every span [U_s, U_s+1) (s = span index into `breaks`) whose data error exceeds
-// tol and which holds at least 2 data points, the mean parameter of its data: both halves then keep
-// data. Worst spans first.
+// tol and which holds at least 2 data points, the midpoint between its two middle data parameters, so
+// both halves keep half of the span's data. Worst spans first. params must be sorted.
 std::vector<double> refinement_candidates(const std::vector<double>& breaks, const std::vector<double>& params,
                                           const std::vector<double>& err, double tol) {
   const std::size_t spans = breaks.size() - 1;
-  std::vector<double> worst(spans, 0.0), sum(spans, 0.0);
-  std::vector<int> count(spans, 0);
+  std::vector<double> worst(spans, 0.0);
+  std::vector<std::size_t> first(spans, params.size()), count(spans, 0);
   for (std::size_t k = 0; k < params.size(); ++k) {
     std::size_t s = static_cast<std::size_t>(std::upper_bound(breaks.begin(), breaks.end(), params[k]) - breaks.begin());
     s = std::min(std::max<std::size_t>(s, 1), spans) - 1;
     worst[s] = std::max(worst[s], err[k]);
-    sum[s] += params[k];
-    ++count[s];
+    if (count[s]++ == 0) first[s] = k;
   }
   std::vector<std::size_t> order;
   for (std::size_t s = 0; s < spans; ++s)
@@ -71,10 +71,17 @@ std::vector<double> refinement_candidates(const std::vector<double>& breaks, con
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return worst[a] > worst[b]; });
   std::vector<double> cand;
   for (std::size_t s : order) {
-    const double mean = sum[s] / count[s];
-    if (mean > breaks[s] && mean < breaks[s + 1]) cand.push_back(mean);
+    const std::size_t mid = first[s] + count[s] / 2;
+    const double k = 0.5 * (params[mid - 1] + params[mid]);
+    if (k > breaks[s] && k < breaks[s + 1]) cand.push_back(k);
   }
   return cand;
+}
+
+double sum_of_squares(const std::vector<double>& e) {
+  double s = 0;
+  for (double x : e) s += x * x;
+  return s;
 }
 
 std::vector<double> distinct_values(const std::vector<double>& U, double a, double b) {
@@ -91,16 +98,19 @@ void check_tolerance(double tol, int npoints, int p) {
                                 std::to_string(p + 1) + " points, got " + std::to_string(npoints));
 }
 
-// Least-squares solve of the normal equations N^T N X = N^T R (banded, SPD under Schoenberg-Whitney):
-// returns false when numerically rank deficient.
-bool solve_normal(const Eigen::SparseMatrix<double>& N, const Eigen::MatrixXd& R, Eigen::MatrixXd& X) {
-  const Eigen::SparseMatrix<double> NtN = N.transpose() * N;
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(NtN);
-  if (ldlt.info() != Eigen::Success) return false;
-  const auto D = ldlt.vectorD();
-  if (!(D.minCoeff() > 1e-13 * D.maxCoeff())) return false;
-  X = ldlt.solve(N.transpose() * R);
-  return ldlt.info() == Eigen::Success && X.allFinite();
+// Least-squares solve by sparse QR of N itself (Householder, COLAMD ordering): the normal equations
+// would square the condition number. Returns false when N is numerically rank deficient or so badly
+// conditioned (|R_ii| spread beyond 1e10) that the poles would be meaningless: that happens with data
+// barely inside some basis supports although Schoenberg-Whitney holds.
+bool solve_least_squares(Eigen::SparseMatrix<double>& N, const Eigen::MatrixXd& R, Eigen::MatrixXd& X) {
+  N.makeCompressed();
+  Eigen::SparseQR<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> qr;
+  qr.compute(N);
+  if (qr.info() != Eigen::Success || qr.rank() < N.cols()) return false;
+  const Eigen::VectorXd d = Eigen::VectorXd(qr.matrixR().diagonal()).cwiseAbs();
+  if (!(d.minCoeff() > 1e-10 * d.maxCoeff())) return false;
+  X = qr.solve(R);
+  return qr.info() == Eigen::Success && X.allFinite();
 }
 
 }  // namespace
@@ -173,7 +183,7 @@ BSplineCurve<Dim> fit_least_squares(const PointList<Dim>& points, const std::vec
     Eigen::SparseMatrix<double> A(m - 1, n - 1);
     A.setFromTriplets(trip.begin(), trip.end());
     Eigen::MatrixXd X;
-    if (!solve_normal(A, R, X))
+    if (!solve_least_squares(A, R, X))
       throw InvalidGeometry("least-squares system is numerically singular for these parameters and knots");
     for (int i = 1; i < n; ++i) P[static_cast<std::size_t>(i)] = X.row(i - 1).transpose();
   }
@@ -193,29 +203,54 @@ ApproximationResult<Dim> approximate(const PointList<Dim>& points, int p, double
   std::vector<double> U(static_cast<std::size_t>(2 * p + 2), 0.0);
   std::fill(U.begin() + p + 1, U.end(), 1.0);
   std::vector<double> err;
-  for (;;) {
-    res.curve = fit_least_squares<Dim>(points, res.params, p, U);
-    res.max_error = max_error(res.curve, points, res.params, err);
-    if (res.max_error <= tol) break;
-    int poles = static_cast<int>(U.size()) - p - 1;
+  res.curve = fit_least_squares<Dim>(points, res.params, p, U);  // one Bezier span: always well posed
+  res.max_error = max_error(res.curve, points, res.params, err);
+  double residual = sum_of_squares(err);
+  while (res.max_error > tol) {
+    const int poles = static_cast<int>(U.size()) - p - 1;
     if (poles >= max_poles) break;
-    bool inserted = false;
-    for (double k : refinement_candidates(distinct_values(U, 0.0, 1.0), res.params, err, tol)) {
+    // Split every span that misses the tolerance; if that fit is ill-posed, retry with the worst span
+    // only; if that fails too, refinement has stalled. Knot insertion nests the spline spaces, so the
+    // least-squares residual cannot grow: a fit whose residual grows was ruined by rounding (an
+    // ill-conditioned matrix although Schoenberg-Whitney holds) and is rejected.
+    const std::vector<double> cand = refinement_candidates(distinct_values(U, 0.0, 1.0), res.params, err, tol);
+    bool refitted = false;
+    for (std::size_t limit : {cand.size(), std::size_t{1}}) {
       std::vector<double> V = U;
-      V.insert(std::upper_bound(V.begin(), V.end(), k), k);
-      if (!schoenberg_whitney(res.params, p, V)) continue;
-      U = std::move(V);
-      inserted = true;
-      if (++poles >= max_poles) break;
-    }
-    if (!inserted) {
-      // No span can be split without losing uniqueness: interpolate (one pole per point, error 0).
-      if (npts <= max_poles) {
-        res.curve = interpolate<Dim>(points, p, res.params, averaged_knots(res.params, p));
-        res.max_error = max_error(res.curve, points, res.params, err);
+      int added = 0;
+      for (std::size_t c = 0; c < cand.size() && static_cast<std::size_t>(added) < limit; ++c) {
+        if (poles + added >= max_poles) break;
+        std::vector<double> W = V;
+        W.insert(std::upper_bound(W.begin(), W.end(), cand[c]), cand[c]);
+        if (!schoenberg_whitney(res.params, p, W)) continue;
+        V = std::move(W);
+        ++added;
       }
+      if (added == 0) break;
+      BSplineCurve<Dim> fit;
+      try {
+        fit = fit_least_squares<Dim>(points, res.params, p, V);
+      } catch (const InvalidGeometry&) {
+        continue;
+      }
+      std::vector<double> e;
+      const double me = max_error(fit, points, res.params, e);
+      const double r = sum_of_squares(e);
+      if (!(r <= residual * (1 + 1e-6) + 1e-300)) continue;
+      U = std::move(V);
+      res.curve = std::move(fit);
+      res.max_error = me;
+      err = std::move(e);
+      residual = r;
+      refitted = true;
       break;
     }
+    if (!refitted) break;
+  }
+  if (res.max_error > tol && npts <= max_poles) {
+    // Refinement stalled or reached one pole per point: interpolate (A9.1, error at rounding level).
+    res.curve = interpolate<Dim>(points, p, res.params, averaged_knots(res.params, p));
+    res.max_error = max_error(res.curve, points, res.params, err);
   }
   res.tolerance_met = res.max_error <= tol;
   return res;
@@ -254,7 +289,7 @@ ApproximationResult<Dim> approximate_closed(const PointList<Dim>& points, int p,
     Eigen::SparseMatrix<double> A(npts, n);
     A.setFromTriplets(trip.begin(), trip.end());
     Eigen::MatrixXd X;
-    if (!solve_normal(A, Q, X)) break;  // rank lost: keep the previous fit, interpolate below if needed
+    if (!solve_least_squares(A, Q, X)) break;  // rank lost: keep the previous fit, interpolate below if needed
     PointList<Dim> P(static_cast<std::size_t>(n));
     for (int i = 0; i < n; ++i) P[static_cast<std::size_t>(i)] = X.row(i).transpose();
     res.curve = BSplineCurve<Dim>::periodic(p, t, 1.0, P);
@@ -262,7 +297,7 @@ ApproximationResult<Dim> approximate_closed(const PointList<Dim>& points, int p,
     res.max_error = max_error(res.curve, points, res.params, err);
     if (res.max_error <= tol || n >= max_poles) break;
     // Insert where the error is largest, keeping data strictly inside every span (with one data point
-    // per span and n spans the periodic system has full rank; the LDLT pivots are checked anyway).
+    // per span and n spans the periodic system has full rank; the QR rank is checked anyway).
     std::vector<double> breaks = t;
     breaks.push_back(1.0);
     int added = 0;
