@@ -4,27 +4,28 @@ namespace cg::config {
 
 const char* builtin_example_json() {
   return R"json({
+  "$schema": "../schema/coolinggen.schema.json",
   "name": "hpt_rotor",
-  "description": "Built-in example: high-pressure turbine rotor blade, three parametric sections on a conical hub and flared casing",
+  "description": "High-pressure turbine rotor blade at engine scale: hub radius ~275 mm, span ~55 mm, axial chord ~36 mm; curved hub and casing contours, three parametric sections with twist and thickness taper, fitted between the LE and TE lines.",
   "units": "mm",
   "flow_path": {
     "type": "meridional",
-    "hub": [[-10.0, 250.0], [45.0, 252.0]],
-    "casing": [[-10.0, 291.0], [17.5, 292.5], [45.0, 295.0]],
-    "streamlines": [0.5],
-    "leading_edge": [[5.0, 248.0], [6.0, 297.5]],
-    "trailing_edge": [[31.0, 248.0], [29.5, 298.0]]
+    "hub": [[-30.0, 272.0], [0.0, 275.0], [20.0, 277.5], [40.0, 279.0], [70.0, 280.0]],
+    "casing": [[-30.0, 334.0], [0.0, 331.0], [20.0, 329.5], [40.0, 329.0], [70.0, 330.0]],
+    "streamlines": [0.25, 0.5, 0.75],
+    "leading_edge": [[0.0, 265.0], [3.0, 340.0]],
+    "trailing_edge": [[36.0, 265.0], [38.0, 340.0]]
   },
   "sections": [
-    {"span": 0.0, "parametric": {"chord": 30.0, "stagger_deg": -30.0, "inlet_metal_angle_deg": 40.0,
-      "outlet_metal_angle_deg": -62.0, "max_thickness": 7.5, "max_thickness_position": 0.3,
-      "le_radius": 1.6, "te_radius": 0.5}},
-    {"span": 0.5, "parametric": {"chord": 30.0, "stagger_deg": -34.0, "inlet_metal_angle_deg": 30.0,
-      "outlet_metal_angle_deg": -64.0, "max_thickness": 6.2, "max_thickness_position": 0.32,
-      "le_radius": 1.4, "te_radius": 0.45}},
-    {"span": 1.0, "parametric": {"chord": 30.0, "stagger_deg": -38.0, "inlet_metal_angle_deg": 20.0,
-      "outlet_metal_angle_deg": -66.0, "max_thickness": 5.0, "max_thickness_position": 0.34,
-      "le_radius": 1.2, "te_radius": 0.4}}
+    {"span": 0.0, "parametric": {"chord": 38.0, "stagger_deg": -22.0, "inlet_metal_angle_deg": 45.0,
+      "outlet_metal_angle_deg": -66.0, "max_thickness": 9.0, "max_thickness_position": 0.3,
+      "le_radius": 2.0, "te_radius": 0.6}},
+    {"span": 0.5, "parametric": {"chord": 38.0, "stagger_deg": -26.0, "inlet_metal_angle_deg": 38.0,
+      "outlet_metal_angle_deg": -64.0, "max_thickness": 7.5, "max_thickness_position": 0.3,
+      "le_radius": 1.65, "te_radius": 0.6}},
+    {"span": 1.0, "parametric": {"chord": 38.0, "stagger_deg": -30.0, "inlet_metal_angle_deg": 30.0,
+      "outlet_metal_angle_deg": -62.0, "max_thickness": 6.0, "max_thickness_position": 0.32,
+      "le_radius": 1.3, "te_radius": 0.5}}
   ],
   "blade": {"overbuild": 0.05, "chordwise_samples": 97, "stacking": "centroid"},
   "output": {"step_schema": "AP214"}

@@ -1,7 +1,7 @@
 #pragma once
-// The example used by `coolinggen build` without a config file: a high-pressure turbine rotor blade
-// with three parametric sections on a meridional flow path (conical hub, flared casing). It needs no
-// data files, so the executable alone can demonstrate the whole pipeline.
+// The example used by `coolinggen build` without a config file: data/examples/hpt_rotor.json (a
+// high-pressure turbine rotor blade, three parametric sections on a meridional flow path), embedded so
+// the executable alone can demonstrate the whole pipeline. A test keeps the two identical.
 #include "src/config/config.hpp"
 
 namespace cg::config {

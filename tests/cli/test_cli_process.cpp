@@ -88,32 +88,40 @@ BOOST_AUTO_TEST_CASE(builtin_example_builds) {
   BOOST_TEST(files == 2);
 }
 
+// data/examples/c3x_vane.json: a straight vane from the C3X points (file path relative to the config).
 BOOST_AUTO_TEST_CASE(straight_c3x_vane_builds) {
   TempDir dir("cli_c3x");
-  const nlohmann::json cfg = {
-      {"name", "c3x_vane"},
-      {"units", "mm"},
-      {"flow_path", {{"type", "straight"}, {"span", 76.2}}},
-      {"sections", {{{"span", 0.0}, {"points", {{"file", COOLINGGEN_SOURCE_DIR "/data/c3x/profile_table3_cm.csv"}, {"unit", "cm"}}}}}},
-      {"output", {{"step_schema", "AP242"}}}};
-  std::ofstream(dir.path / "c3x.json") << cfg.dump(2);
-  const Run v = run("validate '" + (dir.path / "c3x.json").string() + "'", dir.path);
+  const std::string cfg = COOLINGGEN_SOURCE_DIR "/data/examples/c3x_vane.json";
+  const Run v = run("validate '" + cfg + "'", dir.path);
   BOOST_TEST(v.exit_code == 0, v.err);
-  const Run r = run("build '" + (dir.path / "c3x.json").string() + "' -q -o '" + (dir.path / "out").string() + "'", dir.path);
+  const Run r = run("build '" + cfg + "' -q -o '" + (dir.path / "out").string() + "'", dir.path);
   BOOST_TEST_REQUIRE(r.exit_code == 0, r.err);
   BOOST_TEST(r.out.empty());
   check_outputs(dir.path / "out", "c3x_vane");
-  BOOST_TEST(read_text(dir.path / "out" / "blade.step").find("AP242") != std::string::npos);
   // Prismatic vane: volume = section area x span. The area of the interpolated C3X profile (Green's
   // theorem in our kernel) differs from the blade surface's section only by the surface's
   // re-interpolation at its chordwise samples: 1e-4 relative.
+  const double span = nlohmann::json::parse(read_text(cfg)).at("flow_path").at("span").get<double>();
   const auto report = nlohmann::json::parse(read_text(dir.path / "out" / "report.json"));
   const double volume = report.at("solid").at("volume_mm3").get<double>();
   cg::blade::PointSectionDefinition def;
   def.points = cg::blade::read_section_points(COOLINGGEN_SOURCE_DIR "/data/c3x/profile_table3_cm.csv", cg::blade::LengthUnit::Centimetre);
   const double area = std::abs(cg::blade::section_properties(cg::blade::section_from_points(def).curve).area);
-  BOOST_TEST(std::abs(volume / 76.2 - area) < 1e-4 * area, volume / 76.2 << " vs " << area);
-  BOOST_TEST(std::abs(report.at("solid").at("bbox_mm").at("size").at(2).get<double>() - 76.2) < 1e-6);
+  BOOST_TEST(std::abs(volume / span - area) < 1e-4 * area, volume / span << " vs " << area);
+  BOOST_TEST(std::abs(report.at("solid").at("bbox_mm").at("size").at(2).get<double>() - span) < 1e-6);
+}
+
+// The AP242 schema option reaches the file.
+BOOST_AUTO_TEST_CASE(ap242_option) {
+  TempDir dir("cli_ap242");
+  nlohmann::json cfg = nlohmann::json::parse(read_text(COOLINGGEN_SOURCE_DIR "/data/examples/c3x_vane.json"));
+  cfg["sections"][0]["points"]["file"] = COOLINGGEN_SOURCE_DIR "/data/c3x/profile_table3_cm.csv";
+  cfg["output"]["step_schema"] = "AP242";
+  cfg["flow_path"]["span"] = 20.0;
+  std::ofstream(dir.path / "c3x.json") << cfg.dump(2);
+  const Run r = run("build '" + (dir.path / "c3x.json").string() + "' -q -o '" + (dir.path / "out").string() + "'", dir.path);
+  BOOST_TEST_REQUIRE(r.exit_code == 0, r.err);
+  BOOST_TEST(read_text(dir.path / "out" / "blade.step").find("AP242") != std::string::npos);
 }
 
 BOOST_AUTO_TEST_CASE(bad_config_fails_without_output) {

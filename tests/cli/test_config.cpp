@@ -52,18 +52,23 @@ BOOST_AUTO_TEST_CASE(builtin_example_parses_into_structs) {
   BOOST_TEST(c.name == "hpt_rotor");
   const auto* m = std::get_if<blade::MeridionalFlowPath>(&c.blade.flow_path);
   BOOST_TEST_REQUIRE(m != nullptr);
-  BOOST_TEST(m->net.hub.size() == 2u);
-  BOOST_TEST(m->net.casing.size() == 3u);
-  BOOST_TEST(m->net.interpolated_spans == std::vector<double>{0.5});
+  BOOST_TEST(m->net.hub.size() == 5u);
+  BOOST_TEST(m->net.casing.size() == 5u);
+  BOOST_TEST(m->net.interpolated_spans == (std::vector<double>{0.25, 0.5, 0.75}));
   BOOST_TEST(m->net.leading_edge.size() == 2u);
   BOOST_TEST(c.blade.sections.size() == 3u);
   const auto& p = std::get<blade::ParametricSectionDefinition>(c.blade.sections[2].shape);
-  BOOST_TEST(p.inlet_angle_deg == 20.0);
-  BOOST_TEST(p.outlet_angle_deg == -66.0);
-  BOOST_TEST(p.max_thickness == 5.0);
+  BOOST_TEST(p.inlet_angle_deg == 30.0);
+  BOOST_TEST(p.outlet_angle_deg == -62.0);
+  BOOST_TEST(p.max_thickness == 6.0);
   BOOST_TEST(c.blade.sections[2].placement.span == 1.0);
   BOOST_TEST(c.blade.options.overbuild == 0.05);
   BOOST_TEST(c.output.product_name == "hpt_rotor");
+}
+
+// The embedded example is data/examples/hpt_rotor.json.
+BOOST_AUTO_TEST_CASE(builtin_example_is_the_data_example) {
+  BOOST_TEST(example() == json::parse(test::read_text(COOLINGGEN_SOURCE_DIR "/data/examples/hpt_rotor.json")));
 }
 
 BOOST_AUTO_TEST_CASE(missing_fields) {
@@ -78,13 +83,13 @@ BOOST_AUTO_TEST_CASE(missing_fields) {
 
 BOOST_AUTO_TEST_CASE(out_of_range_values) {
   expect_error([](json& d) { d["sections"][2]["parametric"]["max_thickness"] = -1.0; },
-               "sections[2].parametric.max_thickness", "must be (0, 30)");
-  expect_error([](json& d) { d["sections"][0]["parametric"]["max_thickness"] = 31.0; },
+               "sections[2].parametric.max_thickness", "must be (0, 38)");
+  expect_error([](json& d) { d["sections"][0]["parametric"]["max_thickness"] = 39.0; },
                "sections[0].parametric.max_thickness", "< chord");
   expect_error([](json& d) { d["sections"][0]["parametric"]["chord"] = 0.0; }, "sections[0].parametric.chord", "(0, 100000] mm");
   expect_error([](json& d) { d["sections"][1]["parametric"]["stagger_deg"] = 95.0; },
                "sections[1].parametric.stagger_deg", "(-90, 90) deg");
-  expect_error([](json& d) { d["sections"][0]["parametric"]["le_radius"] = 4.0; },
+  expect_error([](json& d) { d["sections"][0]["parametric"]["le_radius"] = 5.0; },
                "sections[0].parametric.le_radius", "max_thickness / 2");
   expect_error([](json& d) { d["sections"][0]["parametric"]["points_per_side"] = 3; },
                "sections[0].parametric.points_per_side", "[8, 2000]");
@@ -175,20 +180,20 @@ BOOST_AUTO_TEST_CASE(model_checks_name_the_field) {
   // An explicit streamline that crosses the casing.
   expect_error(
       [](json& d) {
-        d["flow_path"]["streamlines"] = {{{"span", 0.5}, {"points", {{-10.0, 270.0}, {17.5, 300.0}, {45.0, 270.0}}}}};
+        d["flow_path"]["streamlines"] = {{{"span", 0.5}, {"points", {{-30.0, 300.0}, {20.0, 335.0}, {70.0, 300.0}}}}};
       },
       "flow_path", "", true);
   // A streamline below the hub.
   expect_error(
       [](json& d) {
-        d["flow_path"]["streamlines"] = {{{"span", 0.5}, {"points", {{-10.0, 240.0}, {45.0, 245.0}}}}};
+        d["flow_path"]["streamlines"] = {{{"span", 0.5}, {"points", {{-30.0, 260.0}, {70.0, 265.0}}}}};
       },
       "flow_path", "", true);
   // A parametric section within every field's range whose metal angle is more than 90 deg from its
   // stagger (only the section model checks that combination).
   expect_error([](json& d) { d["sections"][1]["parametric"]["inlet_metal_angle_deg"] = 89.0; },
                "sections[1].parametric", "", true);
-  expect_error([](json& d) { d["sections"][0]["parametric"]["le_radius"] = 3.75; }, "sections[0].parametric.le_radius",
+  expect_error([](json& d) { d["sections"][0]["parametric"]["le_radius"] = 4.5; }, "sections[0].parametric.le_radius",
                "< max_thickness / 2");
 }
 
