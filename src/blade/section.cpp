@@ -7,6 +7,8 @@
 #include <string>
 
 #include "src/blade/curve_integral.hpp"
+#include "src/blade/leading_edge.hpp"
+#include "src/blade/periodic_seam.hpp"
 #include "src/blade/planar_polyline.hpp"
 #include "src/core/error.hpp"
 #include "src/fit/interpolate.hpp"
@@ -23,68 +25,6 @@ double suction_end(const SectionProfile& s) {
   return te;
 }
 
-double cross2(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
-
-// Newton for an extreme of C(u).d: g(u) = C'(u).d = 0, g' = C''(u).d; steps limited to step_limit.
-double extreme_param(const BSplineCurve<2>& c, const Eigen::Vector2d& d, double u, double step_limit) {
-  for (int it = 0; it < 50; ++it) {
-    Eigen::Vector2d q[3];
-    c.derivatives(u, 2, q);
-    const double gp = q[2].dot(d);
-    if (gp == 0) break;
-    const double step = std::clamp(-q[1].dot(d) / gp, -step_limit, step_limit);
-    u += step;
-    if (std::abs(step) <= 1e-15 * (1.0 + std::abs(u))) break;
-  }
-  return u;
-}
-
-// Newton for the bitangent through C(s), C(t): C'(s) and C'(t) both parallel to D = C(t) - C(s).
-bool refine_bitangent(const BSplineCurve<2>& c, double& s, double& t, double step_limit) {
-  for (int it = 0; it < 50; ++it) {
-    Eigen::Vector2d a[3], b[3];
-    c.derivatives(s, 2, a);
-    c.derivatives(t, 2, b);
-    const Eigen::Vector2d D = b[0] - a[0];
-    const Eigen::Vector2d f(cross2(a[1], D), cross2(b[1], D));
-    Eigen::Matrix2d J;
-    J << cross2(a[2], D), cross2(a[1], b[1]), -cross2(b[1], a[1]), cross2(b[2], D);
-    const Eigen::Vector2d step = J.fullPivLu().solve(f);
-    if (!step.allFinite() || step.lpNorm<Eigen::Infinity>() > step_limit) return false;
-    s -= step.x(), t -= step.y();
-    if (step.lpNorm<Eigen::Infinity>() <= 1e-15 * (1.0 + std::abs(s) + std::abs(t))) return true;
-  }
-  return false;
-}
-
-// Indices of the convex hull of p, counter-clockwise (Andrew's monotone chain).
-std::vector<std::size_t> convex_hull(const std::vector<Eigen::Vector2d>& p) {
-  std::vector<std::size_t> idx(p.size());
-  for (std::size_t i = 0; i < idx.size(); ++i) idx[i] = i;
-  std::sort(idx.begin(), idx.end(), [&](std::size_t a, std::size_t b) {
-    return p[a].x() < p[b].x() || (p[a].x() == p[b].x() && p[a].y() < p[b].y());
-  });
-  std::vector<std::size_t> h(2 * idx.size());
-  std::size_t k = 0;
-  auto turn = [&](std::size_t o, std::size_t a, std::size_t b) { return cross2(p[a] - p[o], p[b] - p[o]); };
-  for (std::size_t i : idx) {
-    while (k >= 2 && turn(h[k - 2], h[k - 1], i) <= 0) --k;
-    h[k++] = i;
-  }
-  for (std::size_t n = idx.size(), i = n - 1, lower = k + 1; i-- > 0;) {
-    while (k >= lower && turn(h[k - 2], h[k - 1], idx[i]) <= 0) --k;
-    h[k++] = idx[i];
-  }
-  h.resize(k - 1);
-  return h;
-}
-
-double curvature(const BSplineCurve<2>& c, double u) {
-  Eigen::Vector2d d[3];
-  c.derivatives(u, 2, d);
-  return std::abs(d[1].x() * d[2].y() - d[1].y() * d[2].x()) / std::pow(d[1].norm(), 3);
-}
-
 void require_simple_polygon(const std::vector<Eigen::Vector2d>& pts, const std::string& what) {
   int a = 0, b = 0;
   if (!detail::polygon_is_simple(pts, a, b))
@@ -92,59 +32,17 @@ void require_simple_polygon(const std::vector<Eigen::Vector2d>& pts, const std::
                           std::to_string(b) + ")");
 }
 
-struct Detected {
-  double le, te;
-  Eigen::Vector2d direction;  // chord line, not yet oriented
-};
-
-// LE/TE of a closed curve: the extreme points along the chord line (see section.hpp), the LE at the
-// blunter end.
-Detected detect_le_te(const BSplineCurve<2>& c) {
-  const std::vector<double> u = detail::sample_params(c, 16);
-  std::vector<Eigen::Vector2d> p(u.size() - 1);  // the last sample repeats the first (closed)
-  for (std::size_t k = 0; k < p.size(); ++k) p[k] = c.point(u[k]);
-  std::size_t bi = 0, bj = 0;
-  double diameter = -1;
-  for (std::size_t i = 0; i < p.size(); ++i)
-    for (std::size_t j = i + 1; j < p.size(); ++j) {
-      const double d = (p[i] - p[j]).norm();
-      if (d > diameter) diameter = d, bi = i, bj = j;
-    }
-  const double h = c.period() / static_cast<double>(p.size());
-  Eigen::Vector2d dir = (p[bj] - p[bi]).normalized();
-  // The longest convex-hull edge bridges the concave (pressure) side when there is one.
-  const std::vector<std::size_t> hull = convex_hull(p);
-  double longest = 0;
-  std::size_t hi = 0, hj = 0;
-  for (std::size_t k = 0; k < hull.size(); ++k) {
-    const std::size_t a = hull[k], b = hull[(k + 1) % hull.size()];
-    const double l = (p[b] - p[a]).norm();
-    if (l > longest) longest = l, hi = a, hj = b;
-  }
-  if (longest >= 0.5 * diameter) {
-    double s = u[hi], t = u[hj];
-    dir = (p[hj] - p[hi]).normalized();
-    if (refine_bitangent(c, s, t, 4 * h)) dir = (c.point(t) - c.point(s)).normalized();
-  }
-  std::size_t imin = 0, imax = 0;
-  for (std::size_t k = 0; k < p.size(); ++k) {
-    if (p[k].dot(dir) < p[imin].dot(dir)) imin = k;
-    if (p[k].dot(dir) > p[imax].dot(dir)) imax = k;
-  }
-  const double a = c.check_param(extreme_param(c, dir, u[imin], h));
-  const double b = c.check_param(extreme_param(c, dir, u[imax], h));
-  return curvature(c, a) <= curvature(c, b) ? Detected{a, b, dir} : Detected{b, a, dir};
-}
-
-SectionProfile make_profile(const BSplineCurve<2>& curve, double le, double te, Eigen::Vector2d direction) {
+// The profile with its curve's seam moved to the LE (u = 0 is the LE, period 1) and the chord line
+// from the LE to the TE.
+SectionProfile make_profile(const BSplineCurve<2>& curve, double le, double te) {
   SectionProfile s;
-  s.curve = curve;
-  s.le_param = le;
-  s.te_param = te;
-  while (s.te_param <= s.le_param) s.te_param += curve.period();
-  s.le = curve.point(le);
-  s.te = curve.point(te);
-  s.chord_direction = direction.dot(s.te - s.le) >= 0 ? direction : Eigen::Vector2d(-direction);
+  s.curve = detail::with_seam_at(curve, le);
+  const double t = (te - le) / curve.period();
+  s.le_param = 0;
+  s.te_param = t - std::floor(t);
+  s.le = s.curve.point(s.le_param);
+  s.te = s.curve.point(s.te_param);
+  s.chord_direction = (s.te - s.le).normalized();
   return s;
 }
 
@@ -226,15 +124,14 @@ SectionProfile section_from_points(const PointSectionDefinition& def) {
   for (int attempt = 0; attempt < 2; ++attempt) {
     const std::vector<double> params = interpolation_parameters<2>(pts, ParamMethod::Centripetal, true);
     const BSplineCurve<2> curve = interpolate_closed<2>(pts, 3, ParamMethod::Centripetal);
-    Detected d{};
+    LeadingTrailingEdge d;
     if (le_index >= 0) {
-      d = {curve.check_param(params[static_cast<std::size_t>(le_index)]),
-           curve.check_param(params[static_cast<std::size_t>(te_index)]),
-           (pts[static_cast<std::size_t>(te_index)] - pts[static_cast<std::size_t>(le_index)]).normalized()};
+      d.le_param = curve.check_param(params[static_cast<std::size_t>(le_index)]);
+      d.te_param = curve.check_param(params[static_cast<std::size_t>(te_index)]);
     } else {
-      d = detect_le_te(curve);
+      d = detect_leading_trailing_edge(curve);
     }
-    SectionProfile s = make_profile(curve, d.le, d.te, d.direction);
+    SectionProfile s = make_profile(curve, d.le_param, d.te_param);
     // Side A is reached from the LE with increasing u; it is the suction side or the points are reversed.
     const double la = s.suction_length(), lb = s.pressure_length();
     const bool ccw = section_properties(curve).area > 0;

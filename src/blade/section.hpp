@@ -76,14 +76,14 @@ struct ParametricSectionDefinition {
 
 /// A closed section curve with its LE and TE.
 struct SectionProfile {
-  BSplineCurve<2> curve;  // periodic; LE -> suction side -> TE -> pressure side -> LE
-  double le_param = 0;    // curve parameter of the LE (usually first_param())
+  BSplineCurve<2> curve;  // periodic, period 1; LE -> suction side -> TE -> pressure side -> LE
+  double le_param = 0;    // curve parameter of the LE: 0, the seam (sections built here)
   double te_param = 0;    // curve parameter of the TE, in (le_param, le_param + period)
   Eigen::Vector2d le = Eigen::Vector2d::Zero();
   Eigen::Vector2d te = Eigen::Vector2d::Zero();
-  /// Unit direction of the chord line, LE towards TE (see section_from_points).
+  /// Unit direction of the chord line, LE towards TE.
   Eigen::Vector2d chord_direction = Eigen::Vector2d::UnitX();
-  /// True chord: the profile's extent along the chord line, (te - le) . chord_direction.
+  /// True chord |te - le| (te - le is along chord_direction).
   double chord() const { return (te - le).dot(chord_direction); }
   /// Curve parameter at a chordwise coordinate c in [-1, 1]: c in [0, 1] runs from the LE over the
   /// suction side to the TE at fraction c of that side's arc length; c in [-1, 0] likewise over the
@@ -96,12 +96,11 @@ struct SectionProfile {
 };
 
 /// Closed periodic cubic interpolation of the points (centripetal parameters), reproducing them exactly.
-/// LE/TE detection unless indices are given: the chord line is the bitangent bridging the concave
-/// (pressure) side when the profile has one (the cascade convention: the line touching the pressure side
-/// at LE and TE; found as the longest convex-hull edge, refined by Newton), else the direction of the
-/// profile's diameter; LE and TE are the curve's extreme points along it (so chord() is the projected
-/// length), the LE being the end with the larger radius of curvature. Throws InvalidGeometry for
-/// < 4 points, coincident consecutive points or a self-intersecting polygon.
+/// LE/TE unless indices are given: the maximum-distance definition (leading_edge.hpp): TE = the point of
+/// the thinner end farthest from the LE, LE = the point of the curve farthest from the TE (solved on the
+/// curve by Newton), chord = |LE - TE|. With indices, LE and TE are those data points. The curve's seam
+/// is then moved to the LE (le_param = 0, period 1). Throws InvalidGeometry for < 4 points, coincident
+/// consecutive points or a self-intersecting polygon.
 SectionProfile section_from_points(const PointSectionDefinition& def);
 
 /// The parametric section. Throws InvalidGeometry for chord/thickness/radii <= 0, angles out of range,
