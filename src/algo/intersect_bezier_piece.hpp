@@ -38,8 +38,7 @@ struct BezierPiece2 {
 };
 
 /// The rational Bézier segments of every non-empty knot span of `curve` (periodic curves: one period),
-/// each pole computed as the blossom of the span ends (de Boor's scheme with per-level arguments,
-/// Ramshaw's blossoming principle; equivalent to The NURBS Book A5.6).
+/// from decompose_to_bezier (The NURBS Book A5.6), with their global parameter ranges.
 std::vector<BezierPiece2> bezier_pieces(const BSplineCurve<2>& curve);
 
 /// Keeps the local sub-range [a, b] of the piece (0 <= a < b <= 1) by two de Casteljau splits.

@@ -6,10 +6,13 @@
 // prunes by bounding boxes, clips by fat lines (Bézier clipping, Sederberg & Nishita 1990) and splits
 // where clipping stalls. A pair whose tangent cones are separated holds at most one crossing
 // (Sederberg & Meyers, "Loop detection in surface patch intersections", CAGD 5, 1988): it is solved
-// by Newton on A(s) = B(t). Pairs that shrink below the leaf size with overlapping cones are
-// tangential candidates: Newton on the tangency system (parallel tangents, gap normal to them) and a
-// contact is accepted when the gap is within `tol`. Stalled pairs whose one piece lies within `tol`
-// of the other curve at 2(p+q)+3 samples are overlaps. Roots found by neighbouring pairs are merged.
+// by Newton on A(s) = B(t). Pruning uses only a rounding margin; a pair pruned by less than `tol` is
+// searched for a tangential near-contact (the tangency system: parallel tangents, gap normal to them)
+// and for curve ends or corners within `tol`. Pairs that shrink below the leaf size with overlapping
+// cones solve the tangency system too: a contact is accepted when the gap is within `tol` and the
+// curves do not cross on both sides of it. Stalled pairs whose one piece lies within `tol` of the
+// other curve, with equal curvature, at 2(p+q)+3 samples are overlaps. Roots found by neighbouring
+// pairs are merged.
 #include <Eigen/Core>
 #include <ostream>
 #include <vector>

@@ -34,9 +34,7 @@ double tangent_sine(CurveEvaluator<2>& a, CurveEvaluator<2>& b, double s, double
   b.d1(t, Q, dQ);
   return std::abs(cross(dP, dQ)) / std::max(dP.norm() * dQ.norm(), 1e-300);
 }
-}  // namespace
 
-namespace {
 // Curve ends and corners (segment junctions where the tangent direction jumps), sorted.
 std::vector<double> ends_and_corners(const std::vector<BezierPiece2>& pieces) {
   std::vector<double> out;

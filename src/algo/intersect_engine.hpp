@@ -56,12 +56,7 @@ class CurvePairIntersector {
   bool self_, closed_;
   double a0_, a1_, b0_, b1_;
   double scale_, tol_, margin_, crossing_tol_, leaf_, near_floor_, trivial_radius_;
-  long work_ = 0;
-
- public:
-  long work() const { return work_; }
-
- private:
+  long work_ = 0;  // piece-pair iterations, bounded by a budget
   std::vector<Task> stack_;
   std::vector<CurveCurvePoint> points_;
   std::vector<CurveCurveOverlap> overlaps_;

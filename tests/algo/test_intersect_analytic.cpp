@@ -8,6 +8,7 @@
 #define BOOST_TEST_MODULE intersect_analytic
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 #include "src/algo/intersect_curves.hpp"
@@ -180,6 +181,30 @@ BOOST_AUTO_TEST_CASE(overlaps) {
     BOOST_TEST(std::abs(r.overlaps[0].t0 - 1.0) < 1e-12);
     BOOST_TEST(std::abs(r.overlaps[0].t1 - 0.5) < 1e-12);
   }
+}
+
+BOOST_AUTO_TEST_CASE(curve_with_itself) {
+  // Identical curves: one overlap over the whole domain; the reversed copy (u -> -u): t runs backwards.
+  const auto c = circle({0, 0}, 1);
+  auto r = intersect_curves(c, c);
+  BOOST_TEST(r.points.empty());
+  BOOST_TEST_REQUIRE(r.overlaps.size() == 1u);
+  BOOST_TEST(r.overlaps[0].s0 == 0.0);
+  BOOST_TEST(r.overlaps[0].s1 == 1.0);
+  const BSplineCurve<2> w(3, {0, 0, 0, 0, 0.3, 0.6, 1, 1, 1, 1}, {{0, 0}, {1, 2}, {2, -1}, {3, 1}, {4, 0}, {5, 2}},
+                          {1, 2, 0.5, 1, 3, 1});
+  std::vector<V2> P = w.poles();
+  std::vector<double> wt = w.weights();
+  std::reverse(P.begin(), P.end());
+  std::reverse(wt.begin(), wt.end());
+  const BSplineCurve<2> rev(3, {-1, -1, -1, -1, -0.6, -0.3, 0, 0, 0, 0}, P, wt);
+  r = intersect_curves(w, rev);
+  BOOST_TEST(r.points.empty());
+  BOOST_TEST_REQUIRE(r.overlaps.size() == 1u);
+  BOOST_TEST(std::abs(r.overlaps[0].s0) < 1e-12);
+  BOOST_TEST(std::abs(r.overlaps[0].s1 - 1) < 1e-12);
+  BOOST_TEST(std::abs(r.overlaps[0].t0) < 1e-12);
+  BOOST_TEST(std::abs(r.overlaps[0].t1 + 1) < 1e-12);
 }
 
 BOOST_AUTO_TEST_CASE(bad_input) {

@@ -137,6 +137,30 @@ BOOST_AUTO_TEST_CASE(random_pairs) {
   BOOST_TEST(tally.loose_missed == 0);
 }
 
+// Periodic curves (seams inside the domain of the other curve's crossings) against random curves.
+BOOST_AUTO_TEST_CASE(periodic_random_pairs) {
+  test::Rng r(14);
+  Tally tally;
+  for (int i = 0; i < 200; ++i) {
+    const int p = r.integer(1, 5), n = r.integer(p + 1, p + 8);
+    std::vector<double> knots;
+    for (int k = 0; k < n; ++k) knots.push_back(k + r.uniform(-0.3, 0.3));
+    std::vector<Eigen::Vector2d> P;
+    std::vector<double> w;
+    for (int k = 0; k < n; ++k) {
+      P.emplace_back(r.uniform(-10, 10), r.uniform(-10, 10));
+      w.push_back(i % 2 ? r.uniform(0.2, 5) : 1.0);
+    }
+    const auto a = BSplineCurve<2>::periodic(p, knots, n, P, w);
+    const auto b = test::random_curve<2>(r, i % 4 >= 2);
+    const auto res = compare(a, b, tally);
+    for (const auto& q : res.points) BOOST_TEST((q.s >= a.first_param() && q.s < a.last_param()));
+  }
+  tally.print("periodic pairs");
+  BOOST_TEST(tally.missed == 0);
+  BOOST_TEST(tally.loose_missed == 0);
+}
+
 namespace {
 BSplineCurve<2> moved(const BSplineCurve<2>& c, const Eigen::Vector2d& v) {
   std::vector<Eigen::Vector2d> P;
