@@ -6,22 +6,19 @@
 #include <type_traits>
 
 #include "src/blade/format.hpp"
+#include "src/blade/section_3d.hpp"
 #include "src/core/error.hpp"
-#include "src/fit/interpolate.hpp"
+#include "src/fit/skin.hpp"
+#include "src/modify/transform.hpp"
 
 namespace cg::blade {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+// Largest distance of a stream-surface section curve from the exactly placed section, mm.
+constexpr double kStreamSectionTolerance = 1e-6;
 
 using detail::fmt;
-
-// p -> A p + b applied to a periodic curve (homogeneous poles: w P -> A (w P) + w b).
-BSplineCurve<2> transformed(const BSplineCurve<2>& c, const Eigen::Matrix2d& A, const Eigen::Vector2d& b) {
-  auto h = c.homogeneous_poles();
-  for (Eigen::Index i = 0; i < h.cols(); ++i) h.col(i).head<2>() = A * h.col(i).head<2>() + h(2, i) * b;
-  return BSplineCurve<2>::from_homogeneous(c.degree(), c.knots(), h, c.is_periodic());
-}
 
 Eigen::Vector2d stacking_point(const SectionProfile& s, StackingPoint mode) {
   switch (mode) {
@@ -41,19 +38,10 @@ SectionProfile place_in_frame(const SectionProfile& s, const SectionPlacement& p
   A *= pl.scale;
   const Eigen::Vector2d b = stack - A * stack + (with_offset ? pl.offset : Eigen::Vector2d::Zero());
   SectionProfile r = s;
-  r.curve = transformed(s.curve, A, b);
+  r.curve = transformed(s.curve, A, b);  // exact: B-splines are affinely invariant
   r.le = A * s.le + b;
   r.te = A * s.te + b;
   return r;
-}
-
-// Chordwise sample coordinates around the section: LE, suction side (cosine-clustered at LE and TE),
-// TE (c = 1), pressure side back towards the LE.
-std::vector<double> chordwise_samples(int n) {
-  std::vector<double> c;
-  for (int k = 0; k <= n; ++k) c.push_back(0.5 * (1 - std::cos(kPi * k / n)));
-  for (int k = n - 1; k >= 1; --k) c.push_back(-0.5 * (1 - std::cos(kPi * k / n)));
-  return c;
 }
 
 std::string section_name(std::size_t k) { return "section " + std::to_string(k); }
@@ -72,8 +60,8 @@ double chordwise_at_surface_u(double u, double u_te) {
 
 BladeModel build_blade(const BladeDefinition& def) {
   const BladeOptions& opt = def.options;
-  require(opt.overbuild >= 0 && opt.overbuild <= 0.5, "blade options: overbuild must be in [0, 0.5] of span, got " +
-                                                          fmt(opt.overbuild));
+  require(opt.overbuild > 0 && opt.overbuild <= 0.5, "blade options: overbuild must be in (0, 0.5] of span, got " +
+                                                         fmt(opt.overbuild));
   require(opt.chordwise_samples >= 8 && opt.chordwise_samples <= 2000,
           "blade options: chordwise_samples must be in [8, 2000], got " + std::to_string(opt.chordwise_samples));
   require(!def.sections.empty(), "blade: at least one section is needed");
@@ -141,105 +129,87 @@ BladeModel build_blade(const BladeDefinition& def) {
     placed[1].span = 1;
   }
 
-  const std::vector<double> cs = chordwise_samples(opt.chordwise_samples);
+  // The TE parameter: sections from parameters have it at 0.5, one point section at its own value;
+  // several point sections with different values share their mean (see blade_surface.hpp).
   double u_te = 0;
-  for (const Placed& p : placed) {
-    const double ls = p.profile.suction_length(), lp = p.profile.pressure_length();
-    u_te += ls / (ls + lp);
-  }
+  for (const Placed& p : placed) u_te += p.profile.te_param;
   u_te /= static_cast<double>(placed.size());
-  std::vector<double> us(cs.size());
-  for (std::size_t k = 0; k < cs.size(); ++k) us[k] = surface_u_at_chordwise(cs[k], u_te);
-  const std::vector<double> uknots = periodic_interpolation_knots(us, 3);
 
-  // 3D sample points of every section.
-  std::vector<std::vector<Eigen::Vector3d>> rows;
+  // 3D section curves: exact in the plane z = span * span_mm (straight vane); on the stream surface
+  // interpolated to kStreamSectionTolerance (the map (a, b) -> (x, r cos theta, r sin theta) is not
+  // rational).
+  std::vector<BSplineCurve<3>> sections;
   for (std::size_t k = 0; k < placed.size(); ++k) {
     const Placed& p = placed[k];
-    const std::vector<double> params = p.profile.params_at_chordwise(cs);
-    std::vector<Eigen::Vector3d> pts(cs.size());
     if (straight) {
-      for (std::size_t i = 0; i < cs.size(); ++i) {
-        const Eigen::Vector2d q = p.profile.curve.point(params[i]);
-        pts[i] = Eigen::Vector3d(q.x(), q.y(), p.span * span_mm);
-      }
-    } else {
-      const std::string name = section_name(std::min(k, def.sections.size() - 1)) + " (span " + fmt(p.span) + ")";
-      const MeridionalNet& net = *model.net;
-      const Streamline line = net.streamline_at(p.span);
-      const StationCutResult le = cut_station(net.leading_edge()->curve, line);
-      require(le.found, name + ": the leading-edge line does not cut its streamline");
-      const double mp_le = line.m_prime(le.cut.streamline_param), r_ref = le.cut.point.y();
-      double k_scale = 1;  // section mm -> mm at r_ref
-      if (net.trailing_edge()) {
-        const StationCutResult te = cut_station(net.trailing_edge()->curve, line);
-        require(te.found, name + ": the trailing-edge line does not cut its streamline");
-        const double mp_te = line.m_prime(te.cut.streamline_param);
-        require(mp_te > mp_le, name + ": the trailing-edge line must lie downstream of the leading-edge line");
-        const double da = p.profile.te.x() - p.profile.le.x();
-        require(da > 1e-9 * p.profile.chord(),
-                name + ": the section's TE must lie downstream (+a) of its LE to be fitted between the LE/TE lines");
-        k_scale = (mp_te - mp_le) * r_ref / da;
-      }
-      const Eigen::Vector2d stack = stacking_point(p.profile, opt.stacking);
-      const double theta0 = p.placement->theta_deg * kPi / 180;
-      for (std::size_t i = 0; i < cs.size(); ++i) {
-        const Eigen::Vector2d q = p.profile.curve.point(params[i]);
-        const double mp = mp_le + (k_scale * (q.x() - p.profile.le.x()) + p.placement->offset.x()) / r_ref;
-        const double theta = theta0 + (k_scale * (q.y() - stack.y()) + p.placement->offset.y()) / r_ref;
-        double u = 0;
-        try {
-          u = line.param_at_m_prime(mp);
-        } catch (const InvalidGeometry& e) {
-          throw InvalidGeometry(name + " extends beyond its streamline; extend the hub/casing contours upstream or "
-                                       "downstream (" + e.what() + ")");
-        }
-        const Eigen::Vector2d xr = line.point(u);
-        pts[i] = Eigen::Vector3d(xr.x(), xr.y() * std::cos(theta), xr.y() * std::sin(theta));
-      }
+      sections.push_back(detail::section_in_plane(p.profile.curve, p.span * span_mm));
+      continue;
     }
-    rows.push_back(std::move(pts));
+    const std::string name = section_name(std::min(k, def.sections.size() - 1)) + " (span " + fmt(p.span) + ")";
+    const MeridionalNet& net = *model.net;
+    const Streamline line = net.streamline_at(p.span);
+    const StationCutResult le = cut_station(net.leading_edge()->curve, line);
+    require(le.found, name + ": the leading-edge line does not cut its streamline");
+    const double mp_le = line.m_prime(le.cut.streamline_param), r_ref = le.cut.point.y();
+    double k_scale = 1;  // section mm -> mm at r_ref
+    if (net.trailing_edge()) {
+      const StationCutResult te = cut_station(net.trailing_edge()->curve, line);
+      require(te.found, name + ": the trailing-edge line does not cut its streamline");
+      const double mp_te = line.m_prime(te.cut.streamline_param);
+      require(mp_te > mp_le, name + ": the trailing-edge line must lie downstream of the leading-edge line");
+      const double da = p.profile.te.x() - p.profile.le.x();
+      require(da > 1e-9 * p.profile.chord(),
+              name + ": the section's TE must lie downstream (+a) of its LE to be fitted between the LE/TE lines");
+      k_scale = (mp_te - mp_le) * r_ref / da;
+    }
+    const Eigen::Vector2d stack = stacking_point(p.profile, opt.stacking);
+    const double theta0 = p.placement->theta_deg * kPi / 180;
+    const auto on_stream_surface = [&](const Eigen::Vector2d& q) {
+      const double mp = mp_le + (k_scale * (q.x() - p.profile.le.x()) + p.placement->offset.x()) / r_ref;
+      const double theta = theta0 + (k_scale * (q.y() - stack.y()) + p.placement->offset.y()) / r_ref;
+      double u = 0;
+      try {
+        u = line.param_at_m_prime(mp);
+      } catch (const InvalidGeometry& e) {
+        throw InvalidGeometry(name + " extends beyond its streamline; extend the hub/casing contours upstream or "
+                                     "downstream (" + e.what() + ")");
+      }
+      const Eigen::Vector2d xr = line.point(u);
+      return Eigen::Vector3d(xr.x(), xr.y() * std::cos(theta), xr.y() * std::sin(theta));
+    };
+    sections.push_back(detail::map_closed_section(p.profile.curve, on_stream_surface, kStreamSectionTolerance,
+                                                  2 * opt.chordwise_samples)
+                           .curve);
   }
 
+  // Skinning (The NURBS Book 10.3, src/fit/skin.hpp): the sections become iso-curves v = span exactly.
+  // The over-build sections extrapolate the two end sections linearly, pole by pole in homogeneous
+  // form, which needs them compatible first.
   std::vector<double> spans;
   for (const Placed& p : placed) spans.push_back(p.span);
-  // Over-build: linear extrapolation of corresponding points from the two end sections.
-  auto extrapolate = [&](std::size_t a, std::size_t b, double s) {
-    const double w = (s - spans[a]) / (spans[b] - spans[a]);
-    std::vector<Eigen::Vector3d> pts(rows[a].size());
-    for (std::size_t i = 0; i < pts.size(); ++i) pts[i] = (1 - w) * rows[a][i] + w * rows[b][i];
-    return pts;
+  sections = make_compatible(sections);
+  const auto extrapolate = [&](std::size_t a, std::size_t b, double v) {
+    const double w = (v - spans[a]) / (spans[b] - spans[a]);
+    const BSplineCurve<3>& A = sections[a];
+    auto h = ((1 - w) * A.homogeneous_poles() + w * sections[b].homogeneous_poles()).eval();
+    return BSplineCurve<3>::from_homogeneous(A.degree(), A.knots(), std::move(h), A.is_periodic());
   };
-  if (opt.overbuild > 0) {
-    const std::size_t n = rows.size();
-    auto lo = extrapolate(0, 1, -opt.overbuild);
-    auto hi = extrapolate(n - 2, n - 1, 1 + opt.overbuild);
-    rows.insert(rows.begin(), std::move(lo));
-    rows.push_back(std::move(hi));
-    spans.insert(spans.begin(), -opt.overbuild);
-    spans.push_back(1 + opt.overbuild);
-  }
-
-  std::vector<BSplineCurve<3>> curves;
-  for (const auto& r : rows) curves.push_back(interpolate_closed<3>(r, 3, us, uknots));
-  // Skinning (The NURBS Book 10.3): the sections share degree and knots by construction, so no
-  // compatibility step is needed; each pole column is interpolated across the sections at v = span.
-  const int nu = curves.front().num_poles(), nv = static_cast<int>(curves.size());
-  const int qv = std::min(3, nv - 1);
-  const std::vector<double> vknots = averaged_knots(spans, qv);
-  std::vector<std::vector<Eigen::Vector3d>> poles(static_cast<std::size_t>(nu));
-  for (int i = 0; i < nu; ++i) {
-    std::vector<Eigen::Vector3d> column;
-    for (const auto& c : curves) column.push_back(c.pole(i));
-    poles[static_cast<std::size_t>(i)] = interpolate<3>(column, qv, spans, vknots).poles();
-  }
-  model.surface = BSplineSurface<3>::from_poles(3, qv, curves.front().knots(), vknots, poles, {}, true, false);
+  std::vector<BSplineCurve<3>> rows;
+  rows.push_back(extrapolate(0, 1, -opt.overbuild));
+  rows.insert(rows.end(), sections.begin(), sections.end());
+  rows.push_back(extrapolate(sections.size() - 2, sections.size() - 1, 1 + opt.overbuild));
+  std::vector<double> vs{-opt.overbuild};
+  vs.insert(vs.end(), spans.begin(), spans.end());
+  vs.push_back(1 + opt.overbuild);
+  SkinOptions so;
+  so.degree_v = 3;
+  so.v_params = vs;
+  model.surface = skin(rows, so).surface;
   model.u_te = u_te;
-  const std::size_t first = opt.overbuild > 0 ? 1 : 0;
   for (std::size_t k = 0; k < placed.size(); ++k) {
     model.section_spans.push_back(placed[k].span);
     model.profiles.push_back(placed[k].profile);
-    model.section_curves.push_back(curves[first + k]);
+    model.section_curves.push_back(sections[k]);
   }
   return model;
 }

@@ -6,12 +6,20 @@
 // Surface parametrisation (relied on by blade_coordinates.hpp and the cooling features):
 //  - v = span fraction (0 hub, 1 casing), domain [-overbuild, 1 + overbuild];
 //  - u periodic with period 1: u = 0 is the LE, u in [0, u_te] the suction side, u = u_te the TE,
-//    u in [u_te, 1] the pressure side. Every section is sampled at the same chordwise coordinates
-//    (SectionProfile::param_at_chordwise, clustered at LE and TE) and interpolated in 3D at the same u,
-//    so all sections share one knot vector; the columns are then interpolated in v through the section
-//    spans. The surface passes exactly through the sampled section points.
-//  - straight vane: 3D point (a, b, z) with z = span fraction * span;
-//  - meridional: (x, r cos theta, r sin theta), x axial (see meridional_net.hpp).
+//    u in [u_te, 1] the pressure side. u is the section curves' own parameter (each section curve has
+//    its seam at the LE and period 1), so the iso-curve v = span of a defined section IS that section:
+//    the section curves are skinned as they are (src/fit/skin.hpp: compatible knots by refinement, pole
+//    columns interpolated across the spans; The NURBS Book 10.3). The TE is at u = 0.5 on sections from
+//    parameters (their curve parameter is the angle phi / 2 pi of the thickness construction) and at the
+//    detected te_param on point sections; u_te is the mean of the sections' values, so with several
+//    point sections whose te_param differ, the TE of section k is at profiles[k].te_param, not u_te.
+//  - the over-build sections at v = -overbuild and 1 + overbuild extrapolate the two end sections
+//    linearly (pole by pole).
+//  - straight vane: 3D point (a, b, z) with z = span fraction * span; the 3D sections are the 2D
+//    curves themselves (exact);
+//  - meridional: (x, r cos theta, r sin theta), x axial (see meridional_net.hpp); this placement is not
+//    rational, so each 3D section interpolates the placed 2D section to 1e-6 mm (section_3d.hpp), at
+//    the same parameter (LE at u = 0, TE at the 2D curve's te_param).
 //
 // The JSON form of these structs is data/schema/coolinggen.schema.json (parsed by src/config); examples
 // in data/examples/.
@@ -56,8 +64,11 @@ struct BladeSectionDefinition {
 };
 
 struct BladeOptions {
-  double overbuild = 0.05;       // fraction of span added beyond hub and casing, [0, 0.5]
-  int chordwise_samples = 97;    // samples per side (suction, pressure) per section, [8, 2000]
+  double overbuild = 0.05;       // fraction of span added beyond hub and casing, (0, 0.5]
+  /// Meridional blades: least number of interpolation points per side of each stream-surface section
+  /// (more are used until the 1e-6 mm tolerance is met), [8, 2000]. Unused by straight vanes, whose
+  /// sections are exact.
+  int chordwise_samples = 97;
   StackingPoint stacking = StackingPoint::Centroid;
 };
 
@@ -84,7 +95,7 @@ struct BladeModel {
   double span_length = 0;                 // straight: span; meridional: (x, r) distance of the LE cuts hub-casing
   std::vector<double> section_spans;      // spans of the defined sections
   std::vector<SectionProfile> profiles;   // 2D profiles after placement transforms (section frame)
-  std::vector<BSplineCurve<3>> section_curves;  // 3D section curves (the iso-v curves at section_spans)
+  std::vector<BSplineCurve<3>> section_curves;  // 3D section curves = the iso-curves v = section_spans[k]
   std::optional<MeridionalNet> net;
   BladeOptions options;
 };

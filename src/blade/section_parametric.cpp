@@ -152,14 +152,15 @@ SectionProfile section_from_parameters(const ParametricSectionDefinition& d) {
   }
   int ea = 0, eb = 0;
   require(detail::polygon_is_simple(pts, ea, eb), what + ": the outline intersects itself");
-  const std::vector<double> params = interpolation_parameters<2>(pts, ParamMethod::Centripetal, true);
-  const BSplineCurve<2> curve =
-      interpolate_closed<2>(pts, 3, params, periodic_interpolation_knots(params, 3));
+  // Parameter phi / (2 pi): the profile is a smooth periodic function of phi, so this is its natural
+  // parametrisation, and it puts the LE at 0 and the TE at 0.5 on every parametric section.
+  std::vector<double> params(pts.size());
+  for (std::size_t k = 0; k < params.size(); ++k) params[k] = static_cast<double>(k) / static_cast<double>(2 * n);
+  const BSplineCurve<2> curve = interpolate_closed<2>(pts, 3, params, periodic_interpolation_knots(params, 3));
   SectionProfile s;
   s.curve = curve;
-  s.le_param = curve.check_param(params[0]);
-  s.te_param = params[static_cast<std::size_t>(n)];
-  while (s.te_param <= s.le_param) s.te_param += curve.period();
+  s.le_param = 0;
+  s.te_param = 0.5;
   s.le = curve.point(s.le_param);
   s.te = curve.point(s.te_param);
   s.chord_direction = (s.te - s.le).normalized();

@@ -203,7 +203,8 @@ BOOST_AUTO_TEST_CASE(edge_detection_on_known_profiles) {
   // A symmetric profile (straight camber, LE at the origin, TE at (50, 0)) given as points: by symmetry the
   // edge circle centres lie on the x axis, so the detected LE/TE are the profile's tips, up to the
   // asymmetry of the 60 deg fitting window, which is chosen at sample resolution (16 samples per knot
-  // span): measured 1.2e-4 mm (LE) and 1.3e-6 mm (TE), so 3e-4 mm (6e-6 of the chord). The edge circles: the tip radii are 2 and 0.5 mm, growing away from the tips
+  // span): measured 2.5e-15 mm here (the phi parametrisation samples symmetrically) and 1.2e-4 mm with
+  // the earlier centripetal one, so 3e-4 mm (6e-6 of the chord). The edge circles: the tip radii are 2 and 0.5 mm, growing away from the tips
   // (the fit spans 60 deg of turning), so 25 %.
   ParametricSectionDefinition pd;
   pd.chord = 50;
