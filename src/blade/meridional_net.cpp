@@ -80,8 +80,8 @@ StationCutResult cut_station(const BSplineCurve<2>& station, const Streamline& s
 }
 
 MeridionalNet::MeridionalNet(const MeridionalNetDefinition& def) : samples_(def.samples) {
-  require(def.samples >= 8 && def.samples <= 100000,
-          "meridional net: samples must be in [8, 100000], got " + std::to_string(def.samples));
+  require(def.samples >= 16 && def.samples <= 100000,
+          "meridional net: samples must be in [16, 100000], got " + std::to_string(def.samples));
   require(def.streamlines.size() == def.streamline_spans.size(),
           "meridional net: streamline_spans must give one span per explicit streamline (" +
               std::to_string(def.streamlines.size()) + " streamlines, " + std::to_string(def.streamline_spans.size()) +

@@ -36,7 +36,7 @@ struct MeridionalNetDefinition {
   MeridionalPolyline leading_edge;   // optional (empty = none); required by meridional blades
   MeridionalPolyline trailing_edge;  // optional
   std::vector<MeridionalPolyline> stations;
-  /// Points per streamline used when blending streamlines (interpolated spans, over-build), [8, 100000].
+  /// Points per streamline used when blending streamlines (interpolated spans, over-build), [16, 100000].
   int samples = 129;
 };
 

@@ -69,9 +69,9 @@ struct ParametricSectionDefinition {
   double outlet_angle_deg = 0;       // (-90, 90), within 90 of the stagger
   double max_thickness = 0;          // mm, > 0, < chord
   double max_thickness_position = 0.3;  // fraction of chord, [0.1, 0.9]
-  double le_radius = 0;              // mm, > 0, < max_thickness / 2 ... (checked)
-  double te_radius = 0;              // mm, > 0, <= le_radius is not required
-  int points_per_side = 64;          // sample points per side used for the interpolation, >= 8
+  double le_radius = 0;              // mm, (0, max_thickness / 2] (and a valid thickness, checked)
+  double te_radius = 0;              // mm, (0, max_thickness / 2]; te_radius <= le_radius is not required
+  int points_per_side = 64;          // sample points per side used for the interpolation, [8, 2000]
 };
 
 /// A closed section curve with its LE and TE.

@@ -60,12 +60,12 @@ SectionProfile section_from_parameters(const ParametricSectionDefinition& d) {
           what + ": max_thickness must be in (0, chord) mm, got " + fmt(d.max_thickness));
   require(d.max_thickness_position >= 0.1 && d.max_thickness_position <= 0.9,
           what + ": max_thickness_position must be in [0.1, 0.9] of chord, got " + fmt(d.max_thickness_position));
-  require(d.le_radius > 0 && d.le_radius < 0.5 * d.max_thickness,
-          what + ": le_radius must be in (0, max_thickness / 2) mm, got " + fmt(d.le_radius));
-  require(d.te_radius > 0 && d.te_radius < 0.5 * d.max_thickness,
-          what + ": te_radius must be in (0, max_thickness / 2) mm, got " + fmt(d.te_radius));
-  require(d.points_per_side >= 8 && d.points_per_side <= 5000,
-          what + ": points_per_side must be in [8, 5000], got " + std::to_string(d.points_per_side));
+  require(d.le_radius > 0 && d.le_radius <= 0.5 * d.max_thickness,
+          what + ": le_radius must be in (0, max_thickness / 2] mm, got " + fmt(d.le_radius));
+  require(d.te_radius > 0 && d.te_radius <= 0.5 * d.max_thickness,
+          what + ": te_radius must be in (0, max_thickness / 2] mm, got " + fmt(d.te_radius));
+  require(d.points_per_side >= 8 && d.points_per_side <= 2000,
+          what + ": points_per_side must be in [8, 2000], got " + std::to_string(d.points_per_side));
   auto angle_ok = [](double a) { return a > -90 && a < 90; };
   require(angle_ok(d.stagger_deg), what + ": stagger_deg must be in (-90, 90), got " + fmt(d.stagger_deg));
   require(angle_ok(d.inlet_angle_deg) && std::abs(d.inlet_angle_deg - d.stagger_deg) < 90,

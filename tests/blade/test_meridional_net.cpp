@@ -134,6 +134,11 @@ BOOST_AUTO_TEST_CASE(station_ending_on_the_contours) {
 }
 
 BOOST_AUTO_TEST_CASE(invalid_nets_throw) {
+  for (int n : {15, 100001}) {  // samples in [16, 100000], as the schema
+    MeridionalNetDefinition d = cylinder_net();
+    d.samples = n;
+    BOOST_CHECK_THROW(MeridionalNet{d}, InvalidGeometry);
+  }
   {  // r <= 0
     MeridionalNetDefinition d = cylinder_net();
     d.hub = {{0, -5}, {100, 10}};

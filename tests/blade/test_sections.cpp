@@ -327,7 +327,18 @@ BOOST_AUTO_TEST_CASE(invalid_parametric_sections) {
   bad([](auto& d) { d.max_thickness = -2; });
   bad([](auto& d) { d.max_thickness = 0; });
   bad([](auto& d) { d.le_radius = 0; });
-  bad([](auto& d) { d.te_radius = 3.5; });
+  bad([](auto& d) { d.te_radius = 3.5; });  // > max_thickness / 2
+  bad([](auto& d) { d.le_radius = 3.0001; });
+  bad([](auto& d) { d.points_per_side = 2001; });
+  // le_radius = max_thickness / 2 is allowed (schema: <=) when the thickness distribution stays valid, and
+  // rejected by the thickness check when it does not.
+  {
+    ParametricSectionDefinition d = ok;
+    d.max_thickness = 9;
+    d.le_radius = 4.5;
+    BOOST_CHECK_NO_THROW(section_from_parameters(d));
+  }
+  bad([](auto& d) { d.le_radius = 3; });
   bad([](auto& d) { d.inlet_angle_deg = 95; });
   bad([](auto& d) { d.stagger_deg = -60, d.inlet_angle_deg = 45; });  // 105 deg from the stagger
   bad([](auto& d) { d.max_thickness_position = 0.95; });
