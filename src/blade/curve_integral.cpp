@@ -39,21 +39,12 @@ double CurveIntegral::integrate_cell(const BSplineCurve<2>& curve, double lo, do
 
 CurveIntegral::CurveIntegral(const BSplineCurve<2>& curve, double a, double b, Integrand f) : f_(f) {
   require(b > a, "curve integral: empty parameter interval");
-  // Knot values inside (a, b), also those of following periods for a periodic curve.
+  require(!curve.is_periodic(), "curve integral: the curve must be non-periodic (a streamline)");
+  // The knots inside (a, b): the integrand is smooth between them.
   std::vector<double> cuts{a};
-  const auto& U = curve.knots();
-  const double T = curve.period();
-  const int wraps = curve.is_periodic() ? static_cast<int>(std::ceil((b - curve.first_param()) / T)) + 1 : 1;
-  for (int w = -1; w < wraps; ++w) {
-    const double shift = curve.is_periodic() ? w * T : 0.0;
-    if (!curve.is_periodic() && w != 0) continue;
-    for (int i = curve.degree(); i <= curve.num_poles(); ++i) {
-      const double k = U[static_cast<std::size_t>(i)] + shift;
-      if (k > a && k < b) cuts.push_back(k);
-    }
-  }
+  for (double k : curve.knots())
+    if (k > a && k < b) cuts.push_back(k);
   cuts.push_back(b);
-  std::sort(cuts.begin(), cuts.end());
   cuts.erase(std::unique(cuts.begin(), cuts.end(), [&](double x, double y) { return y - x <= 1e-14 * (b - a); }),
              cuts.end());
   if (cuts.back() != b) cuts.back() = b;

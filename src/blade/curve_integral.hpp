@@ -1,6 +1,8 @@
 #pragma once
-// Cumulative integrals along a planar curve: arc length (integrand |C'|) and the conformal meridional
-// coordinate (integrand |C'| / C_y, with C = (x, r)). Internal to the blade model.
+// Cumulative integrals along a streamline (x, r): meridional length m (integrand |C'|) and the
+// conformal coordinate m' (integrand |C'| / r). Internal to the blade model. Section arc lengths use
+// src/analyze/arc_length.hpp; this table exists because a Streamline is a copyable value (analyze's
+// ArcLength keeps a pointer to its curve) and m' needs the 1/r weight.
 //
 // The domain [a, b] is cut at the knots (the integrand is smooth inside a span) and every span into
 // kCellsPerSpan cells; each cell gets 8-point Gauss-Legendre (exact for polynomials of degree 15, so the
@@ -21,7 +23,7 @@ enum class Integrand { ArcLength, ArcLengthOverRadius };
 class CurveIntegral {
  public:
   CurveIntegral() = default;
-  /// a < b; for a periodic curve b may exceed the period end (the curve wraps).
+  /// a < b inside the domain of a non-periodic curve.
   CurveIntegral(const BSplineCurve<2>& curve, double a, double b, Integrand f);
 
   double first() const { return breaks_.front(); }

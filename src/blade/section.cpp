@@ -6,6 +6,7 @@
 #include <limits>
 #include <string>
 
+#include "src/analyze/arc_length.hpp"
 #include "src/blade/curve_integral.hpp"
 #include "src/blade/leading_edge.hpp"
 #include "src/blade/periodic_seam.hpp"
@@ -16,14 +17,31 @@
 namespace cg::blade {
 namespace {
 
-using detail::CurveIntegral;
-using detail::Integrand;
-
 double suction_end(const SectionProfile& s) {
   double te = s.te_param;
   while (te <= s.le_param) te += s.curve.period();
   return te;
 }
+
+// Arc length along the closed curve continued across the seam: the analyze table covers one period
+// [first, last]; a parameter k periods further adds k perimeters.
+class WrappedArcLength {
+ public:
+  explicit WrappedArcLength(const BSplineCurve<2>& c) : table_(c), first_(c.first_param()), period_(c.period()) {}
+  double perimeter() const { return table_.total(); }
+  double length_to(double u) const {
+    const double k = std::floor((u - first_) / period_);
+    return table_.length_to(std::clamp(u - k * period_, first_, first_ + period_)) + k * table_.total();
+  }
+  double param_at(double s) const {
+    const double k = std::floor(s / table_.total());
+    return table_.param_at(std::clamp(s - k * table_.total(), 0.0, table_.total())) + k * period_;
+  }
+
+ private:
+  ArcLength<2> table_;  // refers to the curve, which outlives this local helper
+  double first_, period_;
+};
 
 void require_simple_polygon(const std::vector<Eigen::Vector2d>& pts, const std::string& what) {
   int a = 0, b = 0;
@@ -49,25 +67,32 @@ SectionProfile make_profile(const BSplineCurve<2>& curve, double le, double te) 
 }  // namespace
 
 double SectionProfile::suction_length() const {
-  return CurveIntegral(curve, le_param, suction_end(*this), Integrand::ArcLength).total();
+  const WrappedArcLength L(curve);
+  return L.length_to(suction_end(*this)) - L.length_to(le_param);
 }
 
 double SectionProfile::pressure_length() const {
-  return CurveIntegral(curve, suction_end(*this), le_param + curve.period(), Integrand::ArcLength).total();
+  const WrappedArcLength L(curve);
+  return L.perimeter() - (L.length_to(suction_end(*this)) - L.length_to(le_param));
 }
 
 std::vector<double> SectionProfile::params_at_chordwise(const std::vector<double>& c) const {
   const double te = suction_end(*this);
-  const CurveIntegral suction(curve, le_param, te, Integrand::ArcLength);
-  const CurveIntegral pressure(curve, te, le_param + curve.period(), Integrand::ArcLength);
+  const WrappedArcLength L(curve);
+  const double at_le = L.length_to(le_param), suction = L.length_to(te) - at_le;
+  const double pressure = L.perimeter() - suction;
   std::vector<double> out(c.size());
   for (std::size_t k = 0; k < c.size(); ++k) {
     const double ck = c[k];
     require(ck >= -1 && ck <= 1, "chordwise coordinate " + std::to_string(ck) + " is outside [-1, 1]");
-    if (ck >= 0)
-      out[k] = ck == 0 ? le_param : suction.inverse(curve, ck * suction.total());
+    if (ck == 0)
+      out[k] = le_param;
+    else if (ck == 1 || ck == -1)
+      out[k] = te;  // exactly the TE, not its arc-length image
+    else if (ck > 0)
+      out[k] = L.param_at(at_le + ck * suction);
     else
-      out[k] = pressure.inverse(curve, (1 + ck) * pressure.total());
+      out[k] = L.param_at(at_le + suction + (1 + ck) * pressure);
   }
   return out;
 }
@@ -95,7 +120,7 @@ SectionProperties section_properties(const BSplineCurve<2>& curve) {
   }
   r.area = 0.5 * a2;
   if (r.area != 0) r.centroid = Eigen::Vector2d(mx, my) / r.area;
-  r.perimeter = CurveIntegral(curve, curve.first_param(), curve.last_param(), Integrand::ArcLength).total();
+  r.perimeter = arc_length(curve);
   return r;
 }
 

@@ -87,7 +87,7 @@ struct SectionProfile {
   double chord() const { return (te - le).dot(chord_direction); }
   /// Curve parameter at a chordwise coordinate c in [-1, 1]: c in [0, 1] runs from the LE over the
   /// suction side to the TE at fraction c of that side's arc length; c in [-1, 0] likewise over the
-  /// pressure side (c = -1 is the TE again). Arc lengths by Gauss-Legendre quadrature + Newton.
+  /// pressure side (c = -1 is the TE again). Arc lengths and their inverse: src/analyze/arc_length.hpp.
   double param_at_chordwise(double c) const;
   /// Batched form (the arc-length tables are built once). Parameters lie in [le_param, le_param + period].
   std::vector<double> params_at_chordwise(const std::vector<double>& c) const;
