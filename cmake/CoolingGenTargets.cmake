@@ -30,9 +30,9 @@ cg_add_library(coolinggen_adaptors DIRS adaptors DEPS coolinggen_kernel coolingg
 # Blade model: meridional net, sections, blade surface, blade-relative coordinates (no OCCT).
 cg_add_library(coolinggen_model DIRS src/blade DEPS coolinggen_kernel)
 # B-rep solids, cooling features and export (OCCT).
-cg_add_library(coolinggen_brep DIRS src/brep features export DEPS coolinggen_model coolinggen_adaptors)
+cg_add_library(coolinggen_brep DIRS src/brep features export DEPS coolinggen_model coolinggen_adaptors nlohmann_json::nlohmann_json)
 # Configuration file (JSON) -> model.
-cg_add_library(coolinggen_config DIRS src/config DEPS coolinggen_brep nlohmann_json::nlohmann_json)
+cg_add_library(coolinggen_config DIRS src/config DEPS coolinggen_brep)
 
 add_library(coolinggen INTERFACE)
 add_library(coolinggen::coolinggen ALIAS coolinggen)
