@@ -53,13 +53,9 @@ void CurveEvaluator<Dim>::relocate(double& u) {
     throw InvalidGeometry("parameter " + std::to_string(u) + " outside the curve domain [" + std::to_string(first_) +
                           ", " + std::to_string(last_) + "] (tolerance " + std::to_string(eps_) + ")");
   }
-  if (u >= span_lo_ && u < span_hi_) return;  // wrapping landed in the current span
+  if (u >= sp_.lo && u < sp_.hi) return;  // wrapping landed in the current span
   span_ = spans_.find(u);
-  const SpanTable::Span& sp = spans_.span(span_);
-  span_lo_ = sp.lo;
-  span_hi_ = sp.hi;
-  mid_ = sp.mid;
-  scale_ = sp.scale;
+  sp_ = spans_.span(span_);
   if (!built_[static_cast<std::size_t>(span_ - p_)]) build_span(span_);
   cur_ = static_cast<std::size_t>((span_ - p_) * (p_ + 1) * (Dim + 1));
 }
@@ -74,19 +70,17 @@ void CurveEvaluator<Dim>::eval_batch(const double* u, std::size_t n, Point* P0, 
   constexpr int W = Dim + 1;
   const int p = P > 0 ? P : p_;
   const bool rational = rational_;
-  double lo = span_lo_, hi = span_hi_, mid = mid_, sc = scale_;
+  SpanTable::Span sp = sp_;
   const double* c = coeffs_.data() + cur_;
   for (std::size_t i = 0; i < n; ++i) {
     double x = u[i];
-    if (!(x >= lo && x < hi)) {
+    if (!(x >= sp.lo && x < sp.hi)) {
       relocate(x);
-      lo = span_lo_;
-      hi = span_hi_;
-      mid = mid_;
-      sc = scale_;
+      sp = sp_;
       c = coeffs_.data() + cur_;
     }
-    const double t = (x - mid) * sc;
+    const double sc = sp.scale;
+    const double t = (x - sp.mid) * sc;
     double r0[W], r1[W], r2[W];
     for (int d = 0; d < W; ++d) {
       r0[d] = c[p * W + d];

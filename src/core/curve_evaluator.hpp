@@ -54,9 +54,9 @@ class CurveEvaluator {
   std::vector<double> coeffs_;  // per span (span - p): (p+1) x (Dim+1)
   std::vector<unsigned char> built_;
   int span_ = -1;
-  // Current span: u in [span_lo_, span_hi_) maps to t = (u - mid_) * scale_, coefficients at
-  // coeffs_[cur_] (an offset, not a pointer, so a copied evaluator stays valid).
-  double span_lo_ = 0, span_hi_ = -1, mid_ = 0, scale_ = 0;
+  // Current span (u in [lo, hi) maps to t = (u - mid) * scale), coefficients at coeffs_[cur_]
+  // (an offset, not a pointer, so a copied evaluator stays valid).
+  SpanTable::Span sp_{0.0, -1.0, 0.0, 0.0};
   std::size_t cur_ = 0;
 };
 

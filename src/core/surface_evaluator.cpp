@@ -55,21 +55,13 @@ void SurfaceEvaluator<Dim>::build_patch(int su, int sv) {
 template <int Dim>
 void SurfaceEvaluator<Dim>::relocate(double& u, double& v) {
   s_->check_params(u, v);  // wraps periodic directions, clamps within the tolerance, throws outside
-  if (!(u >= ulo_ && u < uhi_)) {
+  if (!(u >= su_.lo && u < su_.hi)) {
     cu_ = spans_u_.find(u);
-    const SpanTable::Span& sp = spans_u_.span(cu_);
-    ulo_ = sp.lo;
-    uhi_ = sp.hi;
-    umid_ = sp.mid;
-    uscale_ = sp.scale;
+    su_ = spans_u_.span(cu_);
   }
-  if (!(v >= vlo_ && v < vhi_)) {
+  if (!(v >= sv_.lo && v < sv_.hi)) {
     cv_ = spans_v_.find(v);
-    const SpanTable::Span& sp = spans_v_.span(cv_);
-    vlo_ = sp.lo;
-    vhi_ = sp.hi;
-    vmid_ = sp.mid;
-    vscale_ = sp.scale;
+    sv_ = spans_v_.span(cv_);
   }
   const std::size_t patch = static_cast<std::size_t>((cu_ - pu_) * nspan_v_ + (cv_ - pv_));
   if (!built_[patch]) build_patch(cu_, cv_);
@@ -98,13 +90,13 @@ void SurfaceEvaluator<Dim>::eval_batch(const double* uv, std::size_t n, Point* P
   bool row_valid = false;
   for (std::size_t i = 0; i < n; ++i) {
     double u = uv[2 * i], v = uv[2 * i + 1];
-    if (!(u >= ulo_ && u < uhi_ && v >= vlo_ && v < vhi_)) {
+    if (!(u >= su_.lo && u < su_.hi && v >= sv_.lo && v < sv_.hi)) {
       const std::size_t before = cur_;
       relocate(u, v);
       if (cur_ != before) row_valid = false;
     }
     if (!row_valid || u != row_u) {
-      const double s = (u - umid_) * uscale_;
+      const double s = (u - su_.mid) * su_.scale;
       const double* c = coeffs_.data() + cur_;
       for (int l = 0; l <= pv; ++l) {
         for (int d = 0; d < W; ++d) row[l][d] = c[(pu * (pv + 1) + l) * W + d];
@@ -114,7 +106,7 @@ void SurfaceEvaluator<Dim>::eval_batch(const double* uv, std::size_t n, Point* P
       row_u = u;
       row_valid = true;
     }
-    const double t = (v - vmid_) * vscale_;
+    const double t = (v - sv_.mid) * sv_.scale;
     double r[W];
     for (int d = 0; d < W; ++d) r[d] = row[pv][d];
     for (int l = pv - 1; l >= 0; --l)
@@ -130,8 +122,8 @@ void SurfaceEvaluator<Dim>::eval_batch(const double* uv, std::size_t n, Point* P
 
 template <int Dim>
 void SurfaceEvaluator<Dim>::d1(double u, double v, Point& P, Point& Su, Point& Sv) {
-  if (!(u >= ulo_ && u < uhi_ && v >= vlo_ && v < vhi_)) relocate(u, v);
-  const double s = (u - umid_) * uscale_, t = (v - vmid_) * vscale_;
+  if (!(u >= su_.lo && u < su_.hi && v >= sv_.lo && v < sv_.hi)) relocate(u, v);
+  const double s = (u - su_.mid) * su_.scale, t = (v - sv_.mid) * sv_.scale;
   const double* c = coeffs_.data() + cur_;
   using HMap = Eigen::Map<const HPoint>;
   HPoint r = HPoint::Zero(), ru = HPoint::Zero(), rv = HPoint::Zero();
@@ -147,8 +139,8 @@ void SurfaceEvaluator<Dim>::d1(double u, double v, Point& P, Point& Su, Point& S
     r = r * s + b;
     rv = rv * s + bt;
   }
-  ru *= uscale_;
-  rv *= vscale_;
+  ru *= su_.scale;
+  rv *= sv_.scale;
   if (!s_->is_rational()) {
     P = r.template head<Dim>();
     Su = ru.template head<Dim>();

@@ -42,7 +42,7 @@ class SurfaceEvaluator {
   std::vector<double> coeffs_;  // per patch: (pu+1) x (pv+1) x (Dim+1), index (k*(pv+1)+l)*(Dim+1)
   std::vector<unsigned char> built_;
   int cu_ = -1, cv_ = -1;  // current spans
-  double ulo_ = 0, uhi_ = -1, vlo_ = 0, vhi_ = -1, umid_ = 0, vmid_ = 0, uscale_ = 0, vscale_ = 0;
+  SpanTable::Span su_{0.0, -1.0, 0.0, 0.0}, sv_{0.0, -1.0, 0.0, 0.0};  // current span data
   std::size_t cur_ = 0;  // offset of the current patch's coefficients in coeffs_
 };
 

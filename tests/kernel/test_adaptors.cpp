@@ -25,10 +25,12 @@
 #include "adaptors/occt_convert.hpp"
 #include "src/core/curve_evaluator.hpp"
 #include "src/core/surface_evaluator.hpp"
+#include "support/eval_scales.hpp"
 #include "support/random_geometry.hpp"
 #include "support/random_periodic.hpp"
 
 using namespace cg;
+using test::deriv_scale;
 
 namespace {
 
@@ -195,18 +197,6 @@ Eigen::Vector3d eig(const gp_Vec& v) { return {v.X(), v.Y(), v.Z()}; }
 Eigen::Vector2d eig(const gp_Pnt2d& p) { return {p.X(), p.Y()}; }
 Eigen::Vector2d eig(const gp_Vec2d& v) { return {v.X(), v.Y()}; }
 
-// Scale of the k-th derivative of a curve: |P|max * (p * weight ratio / shortest span)^k * weight ratio.
-template <int Dim>
-double deriv_scale(const BSplineCurve<Dim>& c, int k) {
-  double h = c.period();
-  const auto& U = c.knots();
-  for (std::size_t i = 0; i + 1 < U.size(); ++i)
-    if (U[i + 1] > U[i]) h = std::min(h, U[i + 1] - U[i]);
-  const auto w = c.weights();
-  const double wr = *std::max_element(w.begin(), w.end()) / *std::min_element(w.begin(), w.end());
-  return test::pole_scale(c) * std::pow(c.degree() * wr / h, k) * wr;
-}
-
 // Ours (de Boor, batched evaluator) against OCCT's D2 at parameters up to 3 periods outside the base
 // period (periodic curves) or inside the domain.
 template <int Dim>
@@ -237,9 +227,7 @@ void check_curve_evaluation(const BSplineCurve<Dim>& c, const OcctCurve<Dim>& oc
 
 void check_surface_evaluation(const BSplineSurface<3>& s, const Geom_BSplineSurface& os, test::Rng& r) {
   SurfaceEvaluator<3> ev(s);
-  double scale = 0;
-  for (int a = 0; a < s.num_poles_u(); ++a)
-    for (int b = 0; b < s.num_poles_v(); ++b) scale = std::max(scale, s.pole(a, b).norm());
+  const double scale = test::pole_scale(s);
   const double Tu = s.last_u() - s.first_u(), Tv = s.last_v() - s.first_v();
   for (int k = 0; k < 5; ++k) {
     double u = r.uniform(s.first_u(), s.last_u()), v = r.uniform(s.first_v(), s.last_v());

@@ -16,11 +16,13 @@
 #include "src/core/curve_evaluator.hpp"
 #include "src/core/surface_evaluator.hpp"
 #include "support/random_geometry.hpp"
+#include "support/eval_scales.hpp"
 #include "support/random_periodic.hpp"
 
 #include <algorithm>
 
 using namespace cg;
+using test::deriv_scale;
 
 namespace {
 
@@ -28,21 +30,6 @@ Eigen::Vector3d to_eigen(const gp_Vec& v) { return {v.X(), v.Y(), v.Z()}; }
 Eigen::Vector3d to_eigen(const gp_Pnt& v) { return {v.X(), v.Y(), v.Z()}; }
 Eigen::Vector2d to_eigen(const gp_Vec2d& v) { return {v.X(), v.Y()}; }
 Eigen::Vector2d to_eigen(const gp_Pnt2d& v) { return {v.X(), v.Y()}; }
-
-// Scale of the k-th derivative: |P| * (p / shortest non-empty span)^k, times a weight-ratio factor.
-template <int Dim>
-double deriv_scale(const BSplineCurve<Dim>& c, int k) {
-  double h = c.last_param() - c.first_param();
-  const auto& U = c.knots();
-  for (std::size_t i = 0; i + 1 < U.size(); ++i)
-    if (U[i + 1] > U[i]) h = std::min(h, U[i + 1] - U[i]);
-  double wr = 1;
-  if (c.is_rational()) {
-    const auto w = c.weights();
-    wr = *std::max_element(w.begin(), w.end()) / *std::min_element(w.begin(), w.end());
-  }
-  return test::pole_scale(c) * std::pow(c.degree() * wr / h, k) * std::pow(wr, 1);
-}
 
 template <int Dim, class OcctCurve>
 void compare_curve(const BSplineCurve<Dim>& c, const OcctCurve& oc, test::Rng& r) {
@@ -64,59 +51,6 @@ void compare_curve(const BSplineCurve<Dim>& c, const OcctCurve& oc, test::Rng& r
     BOOST_TEST((q2 - to_eigen(V2)).norm() <= 1e-12 * deriv_scale(c, 2));
   }
 }
-
-}  // namespace
-
-BOOST_AUTO_TEST_CASE(curves_3d_random) {
-  test::Rng r(1);
-  for (int i = 0; i < 1000; ++i) {
-    const auto c = test::random_curve<3>(r, i % 2 == 1);
-    compare_curve(c, *occt::to_occt(c), r);
-  }
-}
-
-BOOST_AUTO_TEST_CASE(curves_2d_random) {
-  test::Rng r(2);
-  for (int i = 0; i < 1000; ++i) {
-    const auto c = test::random_curve<2>(r, i % 2 == 1);
-    compare_curve(c, *occt::to_occt(c), r);
-  }
-}
-
-BOOST_AUTO_TEST_CASE(surfaces_random) {
-  test::Rng r(3);
-  for (int i = 0; i < 1000; ++i) {
-    const auto s = test::random_surface(r, i % 2 == 1);
-    const auto os = occt::to_occt(s);
-    SurfaceEvaluator<3> ev(s);
-    double scale = 0;
-    for (int a = 0; a < s.num_poles_u(); ++a)
-      for (int b = 0; b < s.num_poles_v(); ++b) scale = std::max(scale, s.pole(a, b).norm());
-    for (int k = 0; k < 5; ++k) {
-      const double u = r.uniform(s.first_u(), s.last_u()), v = r.uniform(s.first_v(), s.last_v());
-      gp_Pnt P;
-      gp_Vec Du, Dv, Duu, Dvv, Duv;
-      os->D2(u, v, P, Du, Dv, Duu, Dvv, Duv);
-      Eigen::Vector3d d[9];
-      s.derivatives(u, v, 2, d);
-      BOOST_TEST((d[0] - to_eigen(P)).norm() <= 1e-12 * scale);
-      BOOST_TEST((s.point(u, v) - to_eigen(P)).norm() <= 1e-12 * scale);
-      const double ds = scale * 1e3;  // derivative scale: (degree * weight ratio / span)^k
-      BOOST_TEST((d[3] - to_eigen(Du)).norm() <= 1e-12 * ds);
-      BOOST_TEST((d[1] - to_eigen(Dv)).norm() <= 1e-12 * ds);
-      BOOST_TEST((d[6] - to_eigen(Duu)).norm() <= 1e-12 * ds * 1e3);
-      BOOST_TEST((d[2] - to_eigen(Dvv)).norm() <= 1e-12 * ds * 1e3);
-      BOOST_TEST((d[4] - to_eigen(Duv)).norm() <= 1e-12 * ds * 1e3);
-      Eigen::Vector3d q, qu, qv;
-      ev.d1(u, v, q, qu, qv);
-      BOOST_TEST((q - to_eigen(P)).norm() <= 1e-12 * scale);
-      BOOST_TEST((qu - to_eigen(Du)).norm() <= 1e-12 * ds);
-      BOOST_TEST((qv - to_eigen(Dv)).norm() <= 1e-12 * ds);
-    }
-  }
-}
-
-namespace {
 
 template <int Dim>
 using OcctVec = typename std::conditional<Dim == 3, gp_Vec, gp_Vec2d>::type;
@@ -168,7 +102,60 @@ void compare_batched(const BSplineCurve<Dim>& c, test::Rng& r) {
   }
 }
 
+
 }  // namespace
+
+BOOST_AUTO_TEST_CASE(curves_3d_random) {
+  test::Rng r(1);
+  for (int i = 0; i < 1000; ++i) {
+    const auto c = test::random_curve<3>(r, i % 2 == 1);
+    const auto oc = occt::to_occt(c);
+    compare_curve(c, *oc, r);
+    compare_all_orders(c, *oc, r);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(curves_2d_random) {
+  test::Rng r(2);
+  for (int i = 0; i < 1000; ++i) {
+    const auto c = test::random_curve<2>(r, i % 2 == 1);
+    const auto oc = occt::to_occt(c);
+    compare_curve(c, *oc, r);
+    compare_all_orders(c, *oc, r);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(surfaces_random) {
+  test::Rng r(3);
+  for (int i = 0; i < 1000; ++i) {
+    const auto s = test::random_surface(r, i % 2 == 1);
+    const auto os = occt::to_occt(s);
+    SurfaceEvaluator<3> ev(s);
+    const double scale = test::pole_scale(s);
+    for (int k = 0; k < 5; ++k) {
+      const double u = r.uniform(s.first_u(), s.last_u()), v = r.uniform(s.first_v(), s.last_v());
+      gp_Pnt P;
+      gp_Vec Du, Dv, Duu, Dvv, Duv;
+      os->D2(u, v, P, Du, Dv, Duu, Dvv, Duv);
+      Eigen::Vector3d d[9];
+      s.derivatives(u, v, 2, d);
+      BOOST_TEST((d[0] - to_eigen(P)).norm() <= 1e-12 * scale);
+      BOOST_TEST((s.point(u, v) - to_eigen(P)).norm() <= 1e-12 * scale);
+      const double ds = scale * 1e3;  // derivative scale: (degree * weight ratio / span)^k
+      BOOST_TEST((d[3] - to_eigen(Du)).norm() <= 1e-12 * ds);
+      BOOST_TEST((d[1] - to_eigen(Dv)).norm() <= 1e-12 * ds);
+      BOOST_TEST((d[6] - to_eigen(Duu)).norm() <= 1e-12 * ds * 1e3);
+      BOOST_TEST((d[2] - to_eigen(Dvv)).norm() <= 1e-12 * ds * 1e3);
+      BOOST_TEST((d[4] - to_eigen(Duv)).norm() <= 1e-12 * ds * 1e3);
+      Eigen::Vector3d q, qu, qv;
+      ev.d1(u, v, q, qu, qv);
+      BOOST_TEST((q - to_eigen(P)).norm() <= 1e-12 * scale);
+      BOOST_TEST((qu - to_eigen(Du)).norm() <= 1e-12 * ds);
+      BOOST_TEST((qv - to_eigen(Dv)).norm() <= 1e-12 * ds);
+    }
+  }
+}
+
 
 BOOST_AUTO_TEST_CASE(periodic_curves_3d_and_2d) {
   test::Rng r(4);
@@ -191,14 +178,6 @@ BOOST_AUTO_TEST_CASE(periodic_curves_3d_and_2d) {
   }
 }
 
-BOOST_AUTO_TEST_CASE(clamped_curves_all_derivative_orders) {
-  test::Rng r(5);
-  for (int i = 0; i < 1000; ++i) {
-    const auto c = test::random_curve<3>(r, i % 2 == 1);
-    compare_all_orders(c, *occt::to_occt(c), r);
-  }
-}
-
 BOOST_AUTO_TEST_CASE(batched_evaluator_matches_de_boor) {
   test::Rng r(6);
   for (int i = 0; i < 1000; ++i) {
@@ -218,9 +197,7 @@ BOOST_AUTO_TEST_CASE(surfaces_higher_orders_and_periodic) {
     const bool rational = i % 2 == 1, pu = (i / 2) % 2 == 1, pv = (i / 4) % 2 == 1;
     const auto s = test::random_periodic_surface(r, rational, pu, pv);
     const auto os = occt::to_occt(s);
-    double scale = 0;
-    for (int a = 0; a < s.num_poles_u(); ++a)
-      for (int b = 0; b < s.num_poles_v(); ++b) scale = std::max(scale, s.pole(a, b).norm());
+    const double scale = test::pole_scale(s);
     for (int k = 0; k < 3; ++k) {
       double u = r.uniform(s.first_u(), s.last_u()), v = r.uniform(s.first_v(), s.last_v());
       if (pu) u += (s.last_u() - s.first_u()) * r.integer(-3, 3);
@@ -246,9 +223,7 @@ BOOST_AUTO_TEST_CASE(batched_surface_points_match_de_boor) {
   for (int i = 0; i < 300; ++i) {
     const bool pu = i % 3 == 1, pv = i % 5 == 1;
     const auto s = test::random_periodic_surface(r, i % 2 == 1, pu, pv);
-    double scale = 0;
-    for (int a = 0; a < s.num_poles_u(); ++a)
-      for (int b = 0; b < s.num_poles_v(); ++b) scale = std::max(scale, s.pole(a, b).norm());
+    const double scale = test::pole_scale(s);
     const int g = 9;
     std::vector<double> uv;
     for (int a = 0; a < g; ++a)

@@ -18,6 +18,7 @@
 #include "src/core/error.hpp"
 #include "src/core/knots.hpp"
 #include "src/core/surface_evaluator.hpp"
+#include "support/eval_scales.hpp"
 #include "support/random_geometry.hpp"
 #include "support/random_periodic.hpp"
 
@@ -243,9 +244,7 @@ BOOST_AUTO_TEST_CASE(periodic_wrapping) {
     const double u = r.uniform(s.first_u(), s.last_u()), v = r.uniform(s.first_v(), s.last_v());
     const V3 base = s.point(u, v);
     const double wu = pu ? u - 2 * Tu : u, wv = pv ? v + 3 * Tv : v;
-    double scale = 0;
-    for (int a = 0; a < s.num_poles_u(); ++a)
-      for (int b = 0; b < s.num_poles_v(); ++b) scale = std::max(scale, s.pole(a, b).norm());
+    const double scale = test::pole_scale(s);
     // Surface derivative scale bound as in test_evaluation_vs_occt: pole scale * 1e3 per unit of u.
     const double tol = 1e-12 * scale * 1e3 * (1 + std::abs(wu) + std::abs(wv));
     BOOST_TEST((s.point(wu, wv) - base).norm() <= tol);
