@@ -6,6 +6,7 @@
 #include <cmath>
 #include <random>
 
+#include "blade/blade_fixtures.hpp"
 #include "src/algo/project_point_curve.hpp"
 #include "src/blade/blade_coordinates.hpp"
 #include "src/blade/blade_surface.hpp"
@@ -15,55 +16,7 @@
 using namespace cg;
 using namespace cg::blade;
 
-namespace {
-
-const std::string kC3x = std::string(COOLINGGEN_SOURCE_DIR) + "/data/c3x/profile_table3_cm.csv";
-
-BladeDefinition c3x_vane() {
-  BladeDefinition d;
-  d.flow_path = StraightFlowPath{144.93};
-  PointSectionDefinition p;
-  p.file = kC3x;
-  p.unit = LengthUnit::Centimetre;
-  BladeSectionDefinition s;
-  s.shape = p;
-  d.sections = {s};
-  return d;
-}
-
-ParametricSectionDefinition rotor_section(double tmax, double inlet, double outlet, double stagger) {
-  ParametricSectionDefinition p;
-  p.chord = 38;
-  p.stagger_deg = stagger;
-  p.inlet_angle_deg = inlet;
-  p.outlet_angle_deg = outlet;
-  p.max_thickness = tmax;
-  p.max_thickness_position = 0.3;
-  p.le_radius = 0.22 * tmax;
-  p.te_radius = 0.6;
-  return p;
-}
-
-BladeDefinition hpt_rotor() {
-  BladeDefinition d;
-  MeridionalNetDefinition net;
-  net.hub = {{-30, 272}, {0, 275}, {20, 277.5}, {40, 279}, {70, 280}};
-  net.casing = {{-30, 334}, {0, 331}, {20, 329.5}, {40, 329}, {70, 330}};
-  net.leading_edge = {{0, 265}, {3, 340}};
-  net.trailing_edge = {{36, 265}, {38, 340}};
-  d.flow_path = MeridionalFlowPath{net};
-  const double spans[] = {0.0, 0.5, 1.0};
-  const double tmax[] = {9, 7.5, 6}, inlet[] = {45, 38, 30}, outlet[] = {-66, -64, -62}, stagger[] = {-22, -26, -30};
-  for (int k = 0; k < 3; ++k) {
-    BladeSectionDefinition s;
-    s.shape = rotor_section(tmax[k], inlet[k], outlet[k], stagger[k]);
-    s.placement.span = spans[k];
-    d.sections.push_back(s);
-  }
-  return d;
-}
-
-}  // namespace
+using namespace cg::blade::test;
 
 BOOST_AUTO_TEST_CASE(c3x_vane_surface) {
   const BladeDefinition def = c3x_vane();

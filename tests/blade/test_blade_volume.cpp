@@ -11,15 +11,15 @@
 #include <cmath>
 #include <vector>
 
+#include "blade/blade_fixtures.hpp"
 #include "src/blade/blade_surface.hpp"
 #include "src/brep/blade_solid.hpp"
 
 using namespace cg;
 using namespace cg::blade;
+using namespace cg::blade::test;
 
 namespace {
-
-const std::string kC3x = std::string(COOLINGGEN_SOURCE_DIR) + "/data/c3x/profile_table3_cm.csv";
 
 double solid_volume(const BladeModel& m) {
   const brep::BladeSolid solid = brep::build_blade_solid(m);
@@ -27,17 +27,6 @@ double solid_volume(const BladeModel& m) {
   GProp_GProps props;
   BRepGProp::VolumeProperties(solid.solid, props, 1e-9, /*OnlyClosed=*/true);
   return std::abs(props.Mass());
-}
-
-// Area enclosed by a closed polygon (shoelace).
-double polygon_area(const std::vector<Eigen::Vector2d>& p) {
-  double a = 0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const Eigen::Vector2d& q = p[i];
-    const Eigen::Vector2d& r = p[(i + 1) % p.size()];
-    a += q.x() * r.y() - q.y() * r.x();
-  }
-  return 0.5 * std::abs(a);
 }
 
 // The closed polygon clipped to the strip lo <= x <= hi (Sutherland-Hodgman against both lines; the
@@ -89,14 +78,7 @@ double radius_at(const BSplineCurve<2>& c, double x) {
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(c3x_vane_volume_is_area_times_span) {
-  BladeDefinition d;
-  d.flow_path = StraightFlowPath{144.93};
-  PointSectionDefinition p;
-  p.file = kC3x;
-  p.unit = LengthUnit::Centimetre;
-  BladeSectionDefinition s;
-  s.shape = p;
-  d.sections = {s};
+  const BladeDefinition d = c3x_vane();
   const BladeModel m = build_blade(d);
   const double V = solid_volume(m);
   // Prismatic vane between the planes z = 0 and z = span: V = A * span, with A by Green's theorem on the
@@ -109,29 +91,7 @@ BOOST_AUTO_TEST_CASE(c3x_vane_volume_is_area_times_span) {
 }
 
 BOOST_AUTO_TEST_CASE(hpt_rotor_volume_by_cylindrical_cuts) {
-  BladeDefinition d;
-  MeridionalNetDefinition net;
-  net.hub = {{-30, 272}, {0, 275}, {20, 277.5}, {40, 279}, {70, 280}};
-  net.casing = {{-30, 334}, {0, 331}, {20, 329.5}, {40, 329}, {70, 330}};
-  net.leading_edge = {{0, 265}, {3, 340}};
-  net.trailing_edge = {{36, 265}, {38, 340}};
-  d.flow_path = MeridionalFlowPath{net};
-  const double spans[] = {0.0, 0.5, 1.0};
-  const double tmax[] = {9, 7.5, 6}, inlet[] = {45, 38, 30}, outlet[] = {-66, -64, -62}, stagger[] = {-22, -26, -30};
-  for (int k = 0; k < 3; ++k) {
-    ParametricSectionDefinition p;
-    p.chord = 38;
-    p.stagger_deg = stagger[k];
-    p.inlet_angle_deg = inlet[k];
-    p.outlet_angle_deg = outlet[k];
-    p.max_thickness = tmax[k];
-    p.le_radius = 0.22 * tmax[k];
-    p.te_radius = 0.6;
-    BladeSectionDefinition s;
-    s.shape = p;
-    s.placement.span = spans[k];
-    d.sections.push_back(s);
-  }
+  const BladeDefinition d = hpt_rotor();
   const BladeModel m = build_blade(d);
   const double V = solid_volume(m);
 
@@ -186,7 +146,7 @@ BOOST_AUTO_TEST_CASE(hpt_rotor_volume_by_cylindrical_cuts) {
       if (hi <= lo) continue;
       const double xm = 0.5 * (lo + hi);
       if (radius_at(m.trim.hub, xm) <= R && R <= radius_at(m.trim.casing, xm))
-        area += polygon_area(clip_to_strip(cut, lo, hi));
+        area += std::abs(polygon_area(clip_to_strip(cut, lo, hi)));
     }
     return area;
   };

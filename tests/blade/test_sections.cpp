@@ -5,6 +5,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "blade/blade_fixtures.hpp"
 #include "src/algo/project_point_curve.hpp"
 #include "src/blade/leading_edge.hpp"
 #include "src/blade/section.hpp"
@@ -12,20 +13,9 @@
 
 using namespace cg;
 using namespace cg::blade;
+using namespace cg::blade::test;
 
 namespace {
-
-const std::string kC3x = std::string(COOLINGGEN_SOURCE_DIR) + "/data/c3x/profile_table3_cm.csv";
-
-double polygon_area(const std::vector<Eigen::Vector2d>& p) {
-  double a = 0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const auto& q = p[i];
-    const auto& r = p[(i + 1) % p.size()];
-    a += q.x() * r.y() - q.y() * r.x();
-  }
-  return 0.5 * a;
-}
 
 double polygon_perimeter(const std::vector<Eigen::Vector2d>& p) {
   double l = 0;
@@ -204,16 +194,9 @@ BOOST_AUTO_TEST_CASE(edge_detection_on_known_profiles) {
   // edge circle centres lie on the x axis, so the detected LE/TE are the profile's tips, up to the
   // asymmetry of the 60 deg fitting window, which is chosen at sample resolution (16 samples per knot
   // span): measured 2.5e-15 mm here (the phi parametrisation samples symmetrically) and 1.2e-4 mm with
-  // the earlier centripetal one, so 3e-4 mm (6e-6 of the chord). The edge circles: the tip radii are 2 and 0.5 mm, growing away from the tips
-  // (the fit spans 60 deg of turning), so 25 %.
-  ParametricSectionDefinition pd;
-  pd.chord = 50;
-  pd.max_thickness = 8;
-  pd.max_thickness_position = 0.35;
-  pd.le_radius = 2;
-  pd.te_radius = 0.5;
-  pd.points_per_side = 120;
-  const SectionProfile ref = section_from_parameters(pd);
+  // the earlier centripetal one, so 3e-4 mm (6e-6 of the chord). The edge circles: the tip radii are 2
+  // and 0.5 mm, growing away from the tips (the fit spans 60 deg of turning), so 25 %.
+  const SectionProfile ref = section_from_parameters(symmetric_section(120));
   std::vector<Eigen::Vector2d> pts;
   for (int k = 0; k < 240; ++k) pts.push_back(ref.curve.point(ref.le_param + k / 240.0));
   PointSectionDefinition def;
@@ -267,14 +250,7 @@ BOOST_AUTO_TEST_CASE(invalid_point_sections) {
 BOOST_AUTO_TEST_CASE(parametric_symmetric_section) {
   // Straight camber (all angles 0): the profile is y = +-h(x); checks chord, max thickness and its
   // position, and the tip radii. Tolerances: interpolation of 200 samples per side, ~1e-5 relative.
-  ParametricSectionDefinition d;
-  d.chord = 50;
-  d.max_thickness = 8;
-  d.max_thickness_position = 0.35;
-  d.le_radius = 2;
-  d.te_radius = 0.5;
-  d.points_per_side = 200;
-  const SectionProfile s = section_from_parameters(d);
+  const SectionProfile s = section_from_parameters(symmetric_section(200));
   BOOST_TEST(std::abs(s.chord() - 50) < 1e-12);
   BOOST_TEST(s.le.norm() < 1e-12);
   double ymax = 0, xmax = 0;
