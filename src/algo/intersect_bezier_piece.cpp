@@ -3,12 +3,29 @@
 #include <algorithm>
 #include <cmath>
 
-#include "src/modify/bezier_decomposition.hpp"
-
 namespace cg::detail {
 
 namespace {
 constexpr double kPi = 3.14159265358979323846;
+
+// Blossom of the B-spline on span i at arguments x[0..p-1] (de Boor's triangle with a different
+// argument per level, Ramshaw's blossoming principle), written into out[0..2].
+void blossom(const BSplineCurve<2>& c, int i, const double* x, double* out) {
+  const int p = c.degree();
+  const auto& U = c.knots();
+  const auto& H = c.homogeneous_poles();
+  double d[kMaxDegree + 1][3];
+  for (int j = 0; j <= p; ++j)
+    for (int k = 0; k < 3; ++k) d[j][k] = H(k, i - p + j);
+  for (int r = 1; r <= p; ++r)
+    for (int j = p; j >= r; --j) {
+      const int kk = i - p + j;
+      const double den = U[static_cast<std::size_t>(kk + p - r + 1)] - U[static_cast<std::size_t>(kk)];
+      const double al = (x[r - 1] - U[static_cast<std::size_t>(kk)]) / den;
+      for (int k = 0; k < 3; ++k) d[j][k] = (1.0 - al) * d[j - 1][k] + al * d[j][k];
+    }
+  for (int k = 0; k < 3; ++k) out[k] = d[p][k];
+}
 
 // Interval of abscissae j/p where the convex hull of (j/p, v_j) has points with ordinate >= 0.
 bool nonnegative_hull_range(const double* v, int p, double& lo, double& hi) {
@@ -69,16 +86,24 @@ struct ConeBuilder {
 }  // namespace
 
 std::vector<BezierPiece2> bezier_pieces(const BSplineCurve<2>& curve) {
-  const BezierDecomposition<2> dec = decompose_to_bezier(curve);
-  std::vector<BezierPiece2> out(dec.segments.size());
-  for (std::size_t i = 0; i < dec.segments.size(); ++i) {
-    const auto& H = dec.segments[i].homogeneous_poles();
-    BezierPiece2& pc = out[i];
-    pc.degree = static_cast<int>(H.cols()) - 1;
-    pc.lo = dec.breaks[i];
-    pc.hi = dec.breaks[i + 1];
-    for (int j = 0; j <= pc.degree; ++j)
-      for (int d = 0; d < 3; ++d) pc.h[j][d] = H(d, j);
+  const int p = curve.degree();
+  const auto& U = curve.knots();
+  std::vector<BezierPiece2> out;
+  const int n = curve.num_poles() - 1;
+  out.reserve(static_cast<std::size_t>(n - p + 1));
+  double args[kMaxDegree];
+  for (int i = p; i <= n; ++i) {
+    const double a = U[static_cast<std::size_t>(i)], b = U[static_cast<std::size_t>(i + 1)];
+    if (!(b > a)) continue;
+    BezierPiece2 pc;
+    pc.degree = p;
+    pc.lo = a;
+    pc.hi = b;
+    for (int j = 0; j <= p; ++j) {
+      for (int r = 0; r < p; ++r) args[r] = r < p - j ? a : b;
+      blossom(curve, i, args, pc.h[j]);
+    }
+    out.push_back(pc);
   }
   return out;
 }

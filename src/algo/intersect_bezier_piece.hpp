@@ -38,7 +38,9 @@ struct BezierPiece2 {
 };
 
 /// The rational Bézier segments of every non-empty knot span of `curve` (periodic curves: one period),
-/// from decompose_to_bezier (The NURBS Book A5.6), with their global parameter ranges.
+/// with their global parameter ranges. Each pole is the blossom of the span ends (de Boor's scheme
+/// with per-level arguments), written straight into the fixed-size pieces: decompose_to_bezier
+/// (The NURBS Book A5.6, one heap matrix per segment) took ~40 % of a whole intersection call.
 std::vector<BezierPiece2> bezier_pieces(const BSplineCurve<2>& curve);
 
 /// Keeps the local sub-range [a, b] of the piece (0 <= a < b <= 1) by two de Casteljau splits.
