@@ -90,8 +90,8 @@ std::vector<double> span_breaks(const BSplineCurve<Dim>& c, double a, double b) 
 template <int Dim>
 std::vector<double> span_lengths(const BSplineCurve<Dim>& c, const std::vector<double>& breaks, double rel_tol,
                                  double& abs_tol) {
-  require(rel_tol >= 1e-15 && rel_tol < 1, "arc length tolerance " + std::to_string(rel_tol) +
-                                               " out of range [1e-15, 1)");
+  require(rel_tol >= 1e-15 && rel_tol < 1,
+          "arc length tolerance " + std::to_string(rel_tol) + " out of range [1e-15, 1)");
   std::vector<double> len(breaks.size() - 1);
   double estimate = 0;
   for (std::size_t i = 0; i < len.size(); ++i) estimate += len[i] = gauss_panel(c, breaks[i], breaks[i + 1]);
@@ -128,7 +128,8 @@ double ArcLength<Dim>::length_to(double u) const {
                                             std::to_string(a) + ", " + std::to_string(b) + "]");
   u = std::clamp(u, a, b);
   if (u == b) return cumulative_.back();
-  const std::size_t i = static_cast<std::size_t>(std::upper_bound(breaks_.begin(), breaks_.end(), u) - breaks_.begin()) - 1;
+  const std::size_t i =
+      static_cast<std::size_t>(std::upper_bound(breaks_.begin(), breaks_.end(), u) - breaks_.begin()) - 1;
   return cumulative_[i] + integrate(breaks_[i], u);
 }
 
@@ -138,7 +139,8 @@ double ArcLength<Dim>::param_at(double s) const {
   require(s >= -tol_ && s <= L + tol_, "arc length " + std::to_string(s) + " outside [0, " + std::to_string(L) + "]");
   if (s <= 0) return breaks_.front();
   if (s >= L) return breaks_.back();
-  std::size_t i = static_cast<std::size_t>(std::upper_bound(cumulative_.begin(), cumulative_.end(), s) - cumulative_.begin()) - 1;
+  std::size_t i =
+      static_cast<std::size_t>(std::upper_bound(cumulative_.begin(), cumulative_.end(), s) - cumulative_.begin()) - 1;
   i = std::min(i, breaks_.size() - 2);
   double lo = breaks_[i], hi = breaks_[i + 1];
   const double span_len = cumulative_[i + 1] - cumulative_[i];
@@ -185,7 +187,7 @@ double param_at_arc_length(const BSplineCurve<Dim>& curve, double u0, double s, 
 template class ArcLength<1>;
 template class ArcLength<2>;
 template class ArcLength<3>;
-#define CG_ARC_LENGTH_INSTANTIATE(D)                                            \
+#define CG_ARC_LENGTH_INSTANTIATE(D)                                             \
   template double arc_length<D>(const BSplineCurve<D>&, double, double, double); \
   template double arc_length<D>(const BSplineCurve<D>&, double);                 \
   template double param_at_arc_length<D>(const BSplineCurve<D>&, double, double, double);

@@ -32,9 +32,9 @@ class ArcLength {
  private:
   double integrate(double a, double b) const;
   const BSplineCurve<Dim>* curve_;
-  double tol_;                       // absolute tolerance (rel_tol * total)
-  std::vector<double> breaks_;       // distinct knots in [first, last]
-  std::vector<double> cumulative_;   // length from first to breaks_[i]
+  double tol_;                      // absolute tolerance (rel_tol * total)
+  std::vector<double> breaks_;      // distinct knots in [first, last]
+  std::vector<double> cumulative_;  // length from first to breaks_[i]
 };
 
 /// Length of the curve between parameters a and b (a <= b, both in the domain) to relative tolerance.
@@ -50,7 +50,7 @@ double param_at_arc_length(const BSplineCurve<Dim>& curve, double u0, double s, 
 extern template class ArcLength<1>;
 extern template class ArcLength<2>;
 extern template class ArcLength<3>;
-#define CG_ARC_LENGTH_EXTERN(D)                                                        \
+#define CG_ARC_LENGTH_EXTERN(D)                                                         \
   extern template double arc_length<D>(const BSplineCurve<D>&, double, double, double); \
   extern template double arc_length<D>(const BSplineCurve<D>&, double);                 \
   extern template double param_at_arc_length<D>(const BSplineCurve<D>&, double, double, double);

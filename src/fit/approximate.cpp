@@ -27,7 +27,7 @@ void check_degree(int p) {
 // parameter is optimal. Equivalent to full column rank of the least-squares matrix.
 bool schoenberg_whitney(const std::vector<double>& params, int p, const std::vector<double>& U) {
   const int n = static_cast<int>(U.size()) - p - 2;  // last pole index
-  const std::size_t last = params.size() - 1;      // params[last] is the fixed end point
+  const std::size_t last = params.size() - 1;        // params[last] is the fixed end point
   std::size_t j = 1;
   for (int i = 1; i <= n - 1; ++i) {
     const double lo = U[static_cast<std::size_t>(i)], hi = U[static_cast<std::size_t>(i + p + 1)];
@@ -60,7 +60,8 @@ std::vector<double> refinement_candidates(const std::vector<double>& breaks, con
   std::vector<double> worst(spans, 0.0);
   std::vector<std::size_t> first(spans, params.size()), count(spans, 0);
   for (std::size_t k = 0; k < params.size(); ++k) {
-    std::size_t s = static_cast<std::size_t>(std::upper_bound(breaks.begin(), breaks.end(), params[k]) - breaks.begin());
+    std::size_t s =
+        static_cast<std::size_t>(std::upper_bound(breaks.begin(), breaks.end(), params[k]) - breaks.begin());
     s = std::min(std::max<std::size_t>(s, 1), spans) - 1;
     worst[s] = std::max(worst[s], err[k]);
     if (count[s]++ == 0) first[s] = k;
@@ -316,12 +317,11 @@ ApproximationResult<Dim> approximate_closed(const PointList<Dim>& points, int p,
   return res;
 }
 
-#define CG_FIT_APPROXIMATE_INSTANTIATE(D)                                                                   \
-  template BSplineCurve<D> fit_least_squares<D>(const PointList<D>&, const std::vector<double>&, int,      \
-                                                const std::vector<double>&);                                 \
+#define CG_FIT_APPROXIMATE_INSTANTIATE(D)                                                                        \
+  template BSplineCurve<D> fit_least_squares<D>(const PointList<D>&, const std::vector<double>&, int,            \
+                                                const std::vector<double>&);                                     \
   template ApproximationResult<D> approximate<D>(const PointList<D>&, int, double, const ApproximationOptions&); \
-  template ApproximationResult<D> approximate_closed<D>(const PointList<D>&, int, double,                  \
-                                                        const ApproximationOptions&);
+  template ApproximationResult<D> approximate_closed<D>(const PointList<D>&, int, double, const ApproximationOptions&);
 CG_FIT_APPROXIMATE_INSTANTIATE(1)
 CG_FIT_APPROXIMATE_INSTANTIATE(2)
 CG_FIT_APPROXIMATE_INSTANTIATE(3)

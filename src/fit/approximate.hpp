@@ -54,12 +54,12 @@ template <int Dim>
 ApproximationResult<Dim> approximate_closed(const PointList<Dim>& points, int degree, double tolerance,
                                             const ApproximationOptions& options = {});
 
-#define CG_FIT_APPROXIMATE_EXTERN(D)                                                                           \
-  extern template BSplineCurve<D> fit_least_squares<D>(const PointList<D>&, const std::vector<double>&, int,  \
-                                                       const std::vector<double>&);                             \
-  extern template ApproximationResult<D> approximate<D>(const PointList<D>&, int, double,                     \
-                                                        const ApproximationOptions&);                           \
-  extern template ApproximationResult<D> approximate_closed<D>(const PointList<D>&, int, double,              \
+#define CG_FIT_APPROXIMATE_EXTERN(D)                                                                         \
+  extern template BSplineCurve<D> fit_least_squares<D>(const PointList<D>&, const std::vector<double>&, int, \
+                                                       const std::vector<double>&);                          \
+  extern template ApproximationResult<D> approximate<D>(const PointList<D>&, int, double,                    \
+                                                        const ApproximationOptions&);                        \
+  extern template ApproximationResult<D> approximate_closed<D>(const PointList<D>&, int, double,             \
                                                                const ApproximationOptions&);
 CG_FIT_APPROXIMATE_EXTERN(1)
 CG_FIT_APPROXIMATE_EXTERN(2)

@@ -54,14 +54,16 @@ Eigen::MatrixXd solve_collocation(int p, const std::vector<double>& U, bool peri
   Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
   lu.compute(A);
   if (lu.info() != Eigen::Success)
-    throw InvalidGeometry("interpolation system is singular: the parameters violate the Schoenberg-Whitney "
-                          "condition for these knots");
+    throw InvalidGeometry(
+        "interpolation system is singular: the parameters violate the Schoenberg-Whitney "
+        "condition for these knots");
   Eigen::MatrixXd x = lu.solve(rhs);
   // A nearly singular system (parameters almost outside a basis support) shows as a large residual.
   const double scale = rhs.cwiseAbs().maxCoeff() + x.cwiseAbs().maxCoeff() * A.coeffs().cwiseAbs().maxCoeff();
   if (!x.allFinite() || (A * x - rhs).cwiseAbs().maxCoeff() > 1e-9 * scale)
-    throw InvalidGeometry("interpolation system is numerically singular: the parameters violate the "
-                          "Schoenberg-Whitney condition for these knots");
+    throw InvalidGeometry(
+        "interpolation system is numerically singular: the parameters violate the "
+        "Schoenberg-Whitney condition for these knots");
   return x;
 }
 

@@ -34,8 +34,8 @@ void check_params(const std::vector<double>& params, const char* what) {
   for (std::size_t k = 0; k < params.size(); ++k) {
     require(std::isfinite(params[k]), std::string(what) + " parameter " + std::to_string(k) + " is not finite");
     if (k > 0)
-      require(params[k] > params[k - 1], std::string(what) + " parameters must be strictly increasing (parameter " +
-                                             std::to_string(k) + ")");
+      require(params[k] > params[k - 1],
+              std::string(what) + " parameters must be strictly increasing (parameter " + std::to_string(k) + ")");
   }
 }
 
@@ -60,7 +60,9 @@ std::vector<double> interpolation_parameters(const PointList<Dim>& points, Param
                                             "); consecutive points must be distinct");
   std::vector<double> step(segments);
   for (std::size_t k = 0; k < segments; ++k)
-    step[k] = method == ParamMethod::Uniform ? 1.0 : method == ParamMethod::ChordLength ? chord[k] : std::sqrt(chord[k]);
+    step[k] = method == ParamMethod::Uniform       ? 1.0
+              : method == ParamMethod::ChordLength ? chord[k]
+                                                   : std::sqrt(chord[k]);
   double total = 0;
   for (double s : step) total += s;
   std::vector<double> t(n);
@@ -124,8 +126,8 @@ BSplineCurve<Dim> interpolate(const PointList<Dim>& points, int degree, const st
   require(static_cast<int>(params.size()) == n, "one parameter per point needed");
   check_params(params, "interpolation");
   validate_knots(knots, degree, n);
-  const Eigen::MatrixXd P =
-      solve_collocation(degree, knots, false, params, std::vector<int>(static_cast<std::size_t>(n), 0), to_rows<Dim>(points));
+  const Eigen::MatrixXd P = solve_collocation(degree, knots, false, params,
+                                              std::vector<int>(static_cast<std::size_t>(n), 0), to_rows<Dim>(points));
   return BSplineCurve<Dim>(degree, knots, to_points<Dim>(P));
 }
 
@@ -207,8 +209,8 @@ BSplineCurve<Dim> interpolate_closed(const PointList<Dim>& points, int degree, c
   require(params.back() < params.front() + 1.0, "periodic parameters must lie within one period of length 1");
   const std::vector<double> U = unwrap_periodic_knots(degree, period_knots, 1.0);
   validate_knots(U, degree, n + degree);
-  const Eigen::MatrixXd P =
-      solve_collocation(degree, U, true, params, std::vector<int>(static_cast<std::size_t>(n), 0), to_rows<Dim>(points));
+  const Eigen::MatrixXd P = solve_collocation(degree, U, true, params, std::vector<int>(static_cast<std::size_t>(n), 0),
+                                              to_rows<Dim>(points));
   return BSplineCurve<Dim>::periodic(degree, period_knots, 1.0, to_points<Dim>(P));
 }
 
@@ -222,18 +224,18 @@ BSplineCurve<Dim> interpolate_closed(const PointList<Dim>& points, int degree, P
   return interpolate_closed<Dim>(points, degree, t, periodic_interpolation_knots(t, degree));
 }
 
-#define CG_FIT_INTERPOLATE_INSTANTIATE(D)                                                                         \
-  template std::vector<double> interpolation_parameters<D>(const PointList<D>&, ParamMethod, bool);              \
-  template BSplineCurve<D> interpolate<D>(const PointList<D>&, int, const std::vector<double>&,                   \
-                                          const std::vector<double>&);                                            \
-  template BSplineCurve<D> interpolate<D>(const PointList<D>&, int, ParamMethod);                                \
+#define CG_FIT_INTERPOLATE_INSTANTIATE(D)                                                                          \
+  template std::vector<double> interpolation_parameters<D>(const PointList<D>&, ParamMethod, bool);                \
+  template BSplineCurve<D> interpolate<D>(const PointList<D>&, int, const std::vector<double>&,                    \
+                                          const std::vector<double>&);                                             \
+  template BSplineCurve<D> interpolate<D>(const PointList<D>&, int, ParamMethod);                                  \
   template BSplineCurve<D> interpolate_end_derivatives<D>(const PointList<D>&, const Eigen::Matrix<double, D, 1>&, \
-                                                          const Eigen::Matrix<double, D, 1>&, int, ParamMethod);  \
+                                                          const Eigen::Matrix<double, D, 1>&, int, ParamMethod);   \
   template BSplineCurve<D> interpolate_end_derivatives<D>(const PointList<D>&, const Eigen::Matrix<double, D, 1>&, \
-                                                          const Eigen::Matrix<double, D, 1>&, int,                \
+                                                          const Eigen::Matrix<double, D, 1>&, int,                 \
                                                           const std::vector<double>&, const std::vector<double>&); \
-  template BSplineCurve<D> interpolate_closed<D>(const PointList<D>&, int, ParamMethod);                         \
-  template BSplineCurve<D> interpolate_closed<D>(const PointList<D>&, int, const std::vector<double>&,            \
+  template BSplineCurve<D> interpolate_closed<D>(const PointList<D>&, int, ParamMethod);                           \
+  template BSplineCurve<D> interpolate_closed<D>(const PointList<D>&, int, const std::vector<double>&,             \
                                                  const std::vector<double>&);
 CG_FIT_INTERPOLATE_INSTANTIATE(1)
 CG_FIT_INTERPOLATE_INSTANTIATE(2)

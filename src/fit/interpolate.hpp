@@ -49,8 +49,7 @@ BSplineCurve<Dim> interpolate(const PointList<Dim>& points, int degree, const st
 /// Throws InvalidGeometry for degree outside [1, 25], fewer than degree + 1 points or coincident
 /// consecutive points.
 template <int Dim>
-BSplineCurve<Dim> interpolate(const PointList<Dim>& points, int degree,
-                              ParamMethod method = ParamMethod::ChordLength);
+BSplineCurve<Dim> interpolate(const PointList<Dim>& points, int degree, ParamMethod method = ParamMethod::ChordLength);
 
 /// Interpolation with first derivatives D0 = C'(t_0), Dn = C'(t_n) given at both ends (9.2.2): two
 /// extra poles P1 = Q0 + (u_{p+1} / p) D0 and P_{n+1} = Qn - ((1 - u_{m-p-1}) / p) Dn (for [0,1]),
@@ -90,18 +89,18 @@ template <int Dim>
 BSplineCurve<Dim> interpolate_closed(const PointList<Dim>& points, int degree, const std::vector<double>& params,
                                      const std::vector<double>& period_knots);
 
-#define CG_FIT_INTERPOLATE_EXTERN(D)                                                                              \
-  extern template std::vector<double> interpolation_parameters<D>(const PointList<D>&, ParamMethod, bool);       \
-  extern template BSplineCurve<D> interpolate<D>(const PointList<D>&, int, const std::vector<double>&,            \
-                                                 const std::vector<double>&);                                     \
-  extern template BSplineCurve<D> interpolate<D>(const PointList<D>&, int, ParamMethod);                         \
-  extern template BSplineCurve<D> interpolate_end_derivatives<D>(                                                \
+#define CG_FIT_INTERPOLATE_EXTERN(D)                                                                                  \
+  extern template std::vector<double> interpolation_parameters<D>(const PointList<D>&, ParamMethod, bool);            \
+  extern template BSplineCurve<D> interpolate<D>(const PointList<D>&, int, const std::vector<double>&,                \
+                                                 const std::vector<double>&);                                         \
+  extern template BSplineCurve<D> interpolate<D>(const PointList<D>&, int, ParamMethod);                              \
+  extern template BSplineCurve<D> interpolate_end_derivatives<D>(                                                     \
       const PointList<D>&, const Eigen::Matrix<double, D, 1>&, const Eigen::Matrix<double, D, 1>&, int, ParamMethod); \
-  extern template BSplineCurve<D> interpolate_end_derivatives<D>(                                                \
-      const PointList<D>&, const Eigen::Matrix<double, D, 1>&, const Eigen::Matrix<double, D, 1>&, int,           \
-      const std::vector<double>&, const std::vector<double>&);                                                   \
-  extern template BSplineCurve<D> interpolate_closed<D>(const PointList<D>&, int, ParamMethod);                  \
-  extern template BSplineCurve<D> interpolate_closed<D>(const PointList<D>&, int, const std::vector<double>&,     \
+  extern template BSplineCurve<D> interpolate_end_derivatives<D>(                                                     \
+      const PointList<D>&, const Eigen::Matrix<double, D, 1>&, const Eigen::Matrix<double, D, 1>&, int,               \
+      const std::vector<double>&, const std::vector<double>&);                                                        \
+  extern template BSplineCurve<D> interpolate_closed<D>(const PointList<D>&, int, ParamMethod);                       \
+  extern template BSplineCurve<D> interpolate_closed<D>(const PointList<D>&, int, const std::vector<double>&,         \
                                                         const std::vector<double>&);
 CG_FIT_INTERPOLATE_EXTERN(1)
 CG_FIT_INTERPOLATE_EXTERN(2)

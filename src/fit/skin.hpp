@@ -32,7 +32,7 @@ struct SkinOptions {
 
 struct SkinResult {
   BSplineSurface<3> surface;
-  std::vector<double> v_params;  ///< v of each section: surface.iso_u... section k is S(., v_params[k])
+  std::vector<double> v_params;  ///< v of each section: section k is the iso-curve S(., v_params[k])
 };
 
 /// Skins the sections (at least 2) into a surface S(u, v) with S(u, v_params[k]) = section k (after
