@@ -114,6 +114,56 @@ bool solve_least_squares(Eigen::SparseMatrix<double>& N, const Eigen::MatrixXd& 
   return qr.info() == Eigen::Success && X.allFinite();
 }
 
+// Parameter correction (Hoschek 1988; The NURBS Book 9.4.1 remarks): one Newton step of the foot-point
+// equation (C(u) - Q) . C'(u) = 0 per interior point, kept strictly between its neighbours so the
+// parameters stay increasing. End parameters stay 0 and 1 (the end points are interpolated).
+template <int Dim>
+std::vector<double> corrected_parameters(const BSplineCurve<Dim>& c, const PointList<Dim>& points,
+                                         const std::vector<double>& params) {
+  CurveEvaluator<Dim> ev(c);
+  std::vector<double> t = params;
+  for (std::size_t k = 1; k + 1 < t.size(); ++k) {
+    typename BSplineCurve<Dim>::Point P, D1, D2;
+    ev.d2(params[k], P, D1, D2);
+    const auto r = P - points[k];
+    const double denom = D1.squaredNorm() + r.dot(D2);
+    if (!(denom > 0)) continue;
+    const double u = params[k] - r.dot(D1) / denom;
+    const double lo = t[k - 1], hi = params[k + 1];
+    // Stay inside (lo, hi) with a margin so consecutive parameters never merge.
+    if (u > lo + 1e-3 * (params[k] - lo) && u < hi - 1e-3 * (hi - params[k])) t[k] = u;
+  }
+  return t;
+}
+
+// Alternates parameter correction and refitting on the knots U while the residual drops by more than
+// 1 %, at most `rounds` times. Updates the fit, its parameters, errors and residual in place.
+template <int Dim>
+void improve_parameters(const PointList<Dim>& points, int p, const std::vector<double>& U, int rounds,
+                        ApproximationResult<Dim>& res, std::vector<double>& err, double& residual) {
+  for (int it = 0; it < rounds; ++it) {
+    std::vector<double> t = corrected_parameters(res.curve, points, res.params);
+    if (!schoenberg_whitney(t, p, U)) return;
+    BSplineCurve<Dim> fit;
+    try {
+      fit = fit_least_squares<Dim>(points, t, p, U);
+    } catch (const InvalidGeometry&) {
+      return;
+    }
+    std::vector<double> e;
+    const double me = max_error(fit, points, t, e);
+    const double r = sum_of_squares(e);
+    if (!(r < residual)) return;
+    const bool small_gain = r > 0.99 * residual;
+    res.curve = std::move(fit);
+    res.params = std::move(t);
+    res.max_error = me;
+    err = std::move(e);
+    residual = r;
+    if (small_gain) return;
+  }
+}
+
 }  // namespace
 
 std::vector<double> approximation_knots(const std::vector<double>& params, int p, int num_poles) {
@@ -207,6 +257,7 @@ ApproximationResult<Dim> approximate(const PointList<Dim>& points, int p, double
   res.curve = fit_least_squares<Dim>(points, res.params, p, U);  // one Bezier span: always well posed
   res.max_error = max_error(res.curve, points, res.params, err);
   double residual = sum_of_squares(err);
+  improve_parameters(points, p, U, options.parameter_corrections, res, err, residual);
   while (res.max_error > tol) {
     const int poles = static_cast<int>(U.size()) - p - 1;
     if (poles >= max_poles) break;
@@ -247,6 +298,7 @@ ApproximationResult<Dim> approximate(const PointList<Dim>& points, int p, double
       break;
     }
     if (!refitted) break;
+    improve_parameters(points, p, U, options.parameter_corrections, res, err, residual);
   }
   if (res.max_error > tol && npts <= max_poles) {
     // Refinement stalled or reached one pole per point: interpolate (A9.1, error at rounding level).

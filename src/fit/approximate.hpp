@@ -35,14 +35,17 @@ struct ApproximationOptions {
   ParamMethod method = ParamMethod::ChordLength;
   /// Upper bound on the pole count (0 = number of points, where the fit becomes interpolation).
   int max_poles = 0;
+  /// Rounds of parameter correction (Hoschek: each data parameter moved to the foot point of its
+  /// point on the current fit, then refitted) after every refinement; 0 keeps the initial parameters.
+  int parameter_corrections = 5;
 };
 
 /// Approximation to a tolerance: starts from a single Bezier segment (degree + 1 poles) and inserts a
 /// knot in every span whose data error exceeds `tolerance` (at the mean parameter of the data in the
 /// span, only where Schoenberg-Whitney stays satisfied), refitting by fit_least_squares until
-/// max_error <= tolerance. If no knot can be inserted any more, falls back to interpolation
-/// (error 0). End points are reproduced exactly. Throws InvalidGeometry for fewer than degree + 1
-/// points, coincident consecutive points, degree outside [1, 25] or tolerance <= 0.
+/// max_error <= tolerance, with parameter correction between refinements (options). If no knot can be
+/// inserted any more, falls back to interpolation (error ~0). End points are reproduced exactly. Throws InvalidGeometry
+/// for fewer than degree + 1 points, coincident consecutive points, degree outside [1, 25] or tolerance <= 0.
 template <int Dim>
 ApproximationResult<Dim> approximate(const PointList<Dim>& points, int degree, double tolerance,
                                      const ApproximationOptions& options = {});
