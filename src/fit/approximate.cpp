@@ -164,6 +164,19 @@ void improve_parameters(const PointList<Dim>& points, int p, const std::vector<d
   }
 }
 
+// Shared input checks of the drivers; sets the data parameters and returns the pole limit.
+template <int Dim>
+int start_approximation(const PointList<Dim>& points, int p, double tol, const ApproximationOptions& options,
+                        bool closed, ApproximationResult<Dim>& res) {
+  check_degree(p);
+  const int npts = static_cast<int>(points.size());
+  check_tolerance(tol, npts, p);
+  res.params = interpolation_parameters<Dim>(points, options.method, closed);
+  const int max_poles = options.max_poles > 0 ? std::min(options.max_poles, npts) : npts;
+  require(max_poles >= p + 1, "max_poles must be at least degree + 1");
+  return max_poles;
+}
+
 }  // namespace
 
 std::vector<double> approximation_knots(const std::vector<double>& params, int p, int num_poles) {
@@ -244,13 +257,9 @@ BSplineCurve<Dim> fit_least_squares(const PointList<Dim>& points, const std::vec
 template <int Dim>
 ApproximationResult<Dim> approximate(const PointList<Dim>& points, int p, double tol,
                                      const ApproximationOptions& options) {
-  check_degree(p);
   const int npts = static_cast<int>(points.size());
-  check_tolerance(tol, npts, p);
   ApproximationResult<Dim> res;
-  res.params = interpolation_parameters<Dim>(points, options.method);
-  const int max_poles = options.max_poles > 0 ? std::min(options.max_poles, npts) : npts;
-  require(max_poles >= p + 1, "max_poles must be at least degree + 1");
+  const int max_poles = start_approximation(points, p, tol, options, false, res);
   std::vector<double> U(static_cast<std::size_t>(2 * p + 2), 0.0);
   std::fill(U.begin() + p + 1, U.end(), 1.0);
   std::vector<double> err;
@@ -312,13 +321,9 @@ ApproximationResult<Dim> approximate(const PointList<Dim>& points, int p, double
 template <int Dim>
 ApproximationResult<Dim> approximate_closed(const PointList<Dim>& points, int p, double tol,
                                             const ApproximationOptions& options) {
-  check_degree(p);
   const int npts = static_cast<int>(points.size());
-  check_tolerance(tol, npts, p);
   ApproximationResult<Dim> res;
-  res.params = interpolation_parameters<Dim>(points, options.method, true);
-  const int max_poles = options.max_poles > 0 ? std::min(options.max_poles, npts) : npts;
-  require(max_poles >= p + 1, "max_poles must be at least degree + 1");
+  const int max_poles = start_approximation(points, p, tol, options, true, res);
   // One period of knots starting at 0 (the seam at the first point); p + 1 uniform spans to begin.
   std::vector<double> t(static_cast<std::size_t>(p + 1));
   for (int j = 0; j <= p; ++j) t[static_cast<std::size_t>(j)] = static_cast<double>(j) / (p + 1);

@@ -16,6 +16,14 @@ void check_degree(int p) {
           "degree " + std::to_string(p) + " out of range [1, " + std::to_string(kMaxDegree) + "]");
 }
 
+// Degree in range and at least degree + 1 points (`what` names the operation in the message).
+void check_point_count(std::size_t n, int p, const char* what) {
+  check_degree(p);
+  require(n >= static_cast<std::size_t>(p + 1), std::string(what) + " of degree " + std::to_string(p) +
+                                                    " needs at least " + std::to_string(p + 1) + " points, got " +
+                                                    std::to_string(n));
+}
+
 template <int Dim>
 Eigen::MatrixXd to_rows(const PointList<Dim>& points) {
   Eigen::MatrixXd M(static_cast<Eigen::Index>(points.size()), Dim);
@@ -119,10 +127,8 @@ std::vector<double> averaged_knots_end_derivatives(const std::vector<double>& pa
 template <int Dim>
 BSplineCurve<Dim> interpolate(const PointList<Dim>& points, int degree, const std::vector<double>& params,
                               const std::vector<double>& knots) {
-  check_degree(degree);
   const int n = static_cast<int>(points.size());
-  require(n >= degree + 1, "interpolation of degree " + std::to_string(degree) + " needs at least " +
-                               std::to_string(degree + 1) + " points, got " + std::to_string(n));
+  check_point_count(points.size(), degree, "interpolation");
   require(static_cast<int>(params.size()) == n, "one parameter per point needed");
   check_params(params, "interpolation");
   validate_knots(knots, degree, n);
@@ -133,10 +139,7 @@ BSplineCurve<Dim> interpolate(const PointList<Dim>& points, int degree, const st
 
 template <int Dim>
 BSplineCurve<Dim> interpolate(const PointList<Dim>& points, int degree, ParamMethod method) {
-  check_degree(degree);
-  require(static_cast<int>(points.size()) >= degree + 1, "interpolation of degree " + std::to_string(degree) +
-                                                             " needs at least " + std::to_string(degree + 1) +
-                                                             " points, got " + std::to_string(points.size()));
+  check_point_count(points.size(), degree, "interpolation");
   const std::vector<double> t = interpolation_parameters<Dim>(points, method);
   return interpolate<Dim>(points, degree, t, averaged_knots(t, degree));
 }
@@ -181,11 +184,8 @@ BSplineCurve<Dim> interpolate_end_derivatives(const PointList<Dim>& points, cons
 }
 
 std::vector<double> periodic_interpolation_knots(const std::vector<double>& params, int p) {
-  check_degree(p);
   const std::size_t n = params.size();
-  require(n >= static_cast<std::size_t>(p + 1), "periodic interpolation of degree " + std::to_string(p) +
-                                                    " needs at least " + std::to_string(p + 1) + " points, got " +
-                                                    std::to_string(n));
+  check_point_count(n, p, "periodic interpolation");
   check_params(params, "periodic interpolation");
   require(params.back() < params.front() + 1.0, "periodic parameters must lie within one period of length 1");
   if (p % 2 == 1) return params;
@@ -199,10 +199,8 @@ std::vector<double> periodic_interpolation_knots(const std::vector<double>& para
 template <int Dim>
 BSplineCurve<Dim> interpolate_closed(const PointList<Dim>& points, int degree, const std::vector<double>& params,
                                      const std::vector<double>& period_knots) {
-  check_degree(degree);
   const int n = static_cast<int>(points.size());
-  require(n >= degree + 1, "closed interpolation of degree " + std::to_string(degree) + " needs at least " +
-                               std::to_string(degree + 1) + " points, got " + std::to_string(n));
+  check_point_count(points.size(), degree, "closed interpolation");
   require(static_cast<int>(params.size()) == n && static_cast<int>(period_knots.size()) == n,
           "closed interpolation needs one parameter and one knot per point");
   check_params(params, "periodic interpolation");
@@ -216,10 +214,7 @@ BSplineCurve<Dim> interpolate_closed(const PointList<Dim>& points, int degree, c
 
 template <int Dim>
 BSplineCurve<Dim> interpolate_closed(const PointList<Dim>& points, int degree, ParamMethod method) {
-  check_degree(degree);
-  require(static_cast<int>(points.size()) >= degree + 1, "closed interpolation of degree " + std::to_string(degree) +
-                                                             " needs at least " + std::to_string(degree + 1) +
-                                                             " points, got " + std::to_string(points.size()));
+  check_point_count(points.size(), degree, "closed interpolation");
   const std::vector<double> t = interpolation_parameters<Dim>(points, method, true);
   return interpolate_closed<Dim>(points, degree, t, periodic_interpolation_knots(t, degree));
 }

@@ -12,6 +12,7 @@
 #include "src/analyze/frenet.hpp"
 #include "src/core/error.hpp"
 #include "src/fit/interpolate.hpp"
+#include "support/eval_scales.hpp"
 #include "support/random_geometry.hpp"
 
 using namespace cg;
@@ -20,23 +21,15 @@ namespace {
 
 // Curvature is a ratio of derivative expressions; both sides compute it from derivatives that agree
 // to ~1e-13 of their scale, and the ratio amplifies that by its condition number, roughly
-// (scale of C' / |C'|) + (scale of C'' / |C'' normal part|). Points where that number exceeds 1e3
-// (|C'| or the normal part of C'' almost zero) are ill-posed for any implementation and skipped; the
-// rest must agree to 1e-8 relative (1e-13 x 1e3 x a margin of 100 for the factor 3 in |C'|^3).
+// (scale of C' / |C'|) + (scale of C'' / |C'' normal part|), with the (pessimistic) scales of
+// support/eval_scales.hpp. Points where that number exceeds 1e4 (|C'| or the normal part of C''
+// almost zero) are ill-posed for any implementation and skipped; the rest must agree to 1e-8
+// relative (1e-13 x 1e4 x a margin of 10 for the factor 3 in |C'|^3).
 template <int Dim, class Vec>
 bool well_conditioned(const Vec& d1, const Vec& d2, double s1, double s2) {
   const double n1 = d1.norm();
   const double normal_part = (d2 - d2.dot(d1) / (n1 * n1) * d1).norm();
-  return n1 > 1e-3 * s1 && normal_part > 1e-3 * s2;
-}
-
-template <int Dim>
-double deriv_scale(const BSplineCurve<Dim>& c, int k) {
-  double h = c.last_param() - c.first_param();
-  const auto& U = c.knots();
-  for (std::size_t i = 0; i + 1 < U.size(); ++i)
-    if (U[i + 1] > U[i]) h = std::min(h, U[i + 1] - U[i]);
-  return test::pole_scale(c) * std::pow(c.degree() / h, k);
+  return n1 > 1e-4 * s1 && normal_part > 1e-4 * s2;
 }
 
 }  // namespace
@@ -58,7 +51,7 @@ BOOST_AUTO_TEST_CASE(frame_3d_vs_occt_random) {
         BOOST_TEST((f.status == FrameStatus::ZeroCurvature && f.curvature == 0.0));
         continue;
       }
-      if (!well_conditioned<3>(d[1], d[2], deriv_scale(c, 1), deriv_scale(c, 2))) continue;
+      if (!well_conditioned<3>(d[1], d[2], test::deriv_scale(c, 1), test::deriv_scale(c, 2))) continue;
       ++compared;
       BOOST_TEST_REQUIRE((f.status == FrameStatus::Regular));
       gp_Dir T, N;
@@ -86,7 +79,7 @@ BOOST_AUTO_TEST_CASE(frame_2d_vs_occt_random) {
     for (int sample = 0; sample < 3; ++sample) {
       const double u = r.uniform(c.first_param(), c.last_param());
       const auto d = c.derivatives(u, 2);
-      if (!well_conditioned<2>(d[1], d[2], deriv_scale(c, 1), deriv_scale(c, 2))) continue;
+      if (!well_conditioned<2>(d[1], d[2], test::deriv_scale(c, 1), test::deriv_scale(c, 2))) continue;
       ++compared;
       const PlanarFrame f = frenet_frame(c, u);
       Geom2dLProp_CLProps2d props(oc, u, 2, 1e-14);
