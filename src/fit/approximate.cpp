@@ -116,52 +116,92 @@ bool solve_least_squares(Eigen::SparseMatrix<double>& N, const Eigen::MatrixXd& 
 
 // Parameter correction (Hoschek 1988; The NURBS Book 9.4.1 remarks): one Newton step of the foot-point
 // equation (C(u) - Q) . C'(u) = 0 per interior point, kept strictly between its neighbours so the
-// parameters stay increasing. End parameters stay 0 and 1 (the end points are interpolated).
+// parameters stay increasing. End parameters stay 0 and 1 (the end points are interpolated); a closed
+// list keeps its first parameter 0 at the seam and the last below 1.
 template <int Dim>
 std::vector<double> corrected_parameters(const BSplineCurve<Dim>& c, const PointList<Dim>& points,
-                                         const std::vector<double>& params) {
+                                         const std::vector<double>& params, bool closed) {
   CurveEvaluator<Dim> ev(c);
   std::vector<double> t = params;
-  for (std::size_t k = 1; k + 1 < t.size(); ++k) {
+  const std::size_t last = closed ? t.size() : t.size() - 1;  // closed: only the seam point stays at 0
+  for (std::size_t k = 1; k < last; ++k) {
     typename BSplineCurve<Dim>::Point P, D1, D2;
     ev.d2(params[k], P, D1, D2);
     const auto r = P - points[k];
     const double denom = D1.squaredNorm() + r.dot(D2);
     if (!(denom > 0)) continue;
     const double u = params[k] - r.dot(D1) / denom;
-    const double lo = t[k - 1], hi = params[k + 1];
+    const double lo = t[k - 1], hi = k + 1 < t.size() ? params[k + 1] : 1.0;
     // Stay inside (lo, hi) with a margin so consecutive parameters never merge.
     if (u > lo + 1e-3 * (params[k] - lo) && u < hi - 1e-3 * (hi - params[k])) t[k] = u;
   }
   return t;
 }
 
-// Alternates parameter correction and refitting on the knots U while the residual drops by more than
-// 1 %, at most `rounds` times. Updates the fit, its parameters, errors and residual in place.
-template <int Dim>
-void improve_parameters(const PointList<Dim>& points, int p, const std::vector<double>& U, int rounds,
-                        ApproximationResult<Dim>& res, std::vector<double>& err, double& residual) {
+// Alternates parameter correction and refitting while the residual drops by more than 1 %, at most
+// `rounds` times; fit(params, curve) refits on fixed knots and returns false when ill-posed. Updates
+// the fit, its parameters, errors and residual in place.
+template <int Dim, class Fit>
+void improve_parameters(const PointList<Dim>& points, bool closed, int rounds, Fit fit, ApproximationResult<Dim>& res,
+                        std::vector<double>& err, double& residual) {
   for (int it = 0; it < rounds; ++it) {
-    std::vector<double> t = corrected_parameters(res.curve, points, res.params);
-    if (!schoenberg_whitney(t, p, U)) return;
-    BSplineCurve<Dim> fit;
-    try {
-      fit = fit_least_squares<Dim>(points, t, p, U);
-    } catch (const InvalidGeometry&) {
-      return;
-    }
+    std::vector<double> t = corrected_parameters(res.curve, points, res.params, closed);
+    BSplineCurve<Dim> c;
+    if (!fit(t, c)) return;
     std::vector<double> e;
-    const double me = max_error(fit, points, t, e);
+    const double me = max_error(c, points, t, e);
     const double r = sum_of_squares(e);
     if (!(r < residual)) return;
     const bool small_gain = r > 0.99 * residual;
-    res.curve = std::move(fit);
+    res.curve = std::move(c);
     res.params = std::move(t);
     res.max_error = me;
     err = std::move(e);
     residual = r;
     if (small_gain) return;
   }
+}
+
+// Open fit on fixed knots for improve_parameters.
+template <int Dim>
+bool fit_open(const PointList<Dim>& points, const std::vector<double>& t, int p, const std::vector<double>& U,
+              BSplineCurve<Dim>& out) {
+  if (!schoenberg_whitney(t, p, U)) return false;
+  try {
+    out = fit_least_squares<Dim>(points, t, p, U);
+  } catch (const InvalidGeometry&) {
+    return false;
+  }
+  return true;
+}
+
+// Periodic least squares on one period of knots `period` (period 1): basis j acts on pole j mod n,
+// all poles free. False when the matrix is numerically rank deficient.
+template <int Dim>
+bool fit_periodic(const PointList<Dim>& points, const std::vector<double>& params, int p,
+                  const std::vector<double>& period, BSplineCurve<Dim>& out) {
+  const int n = static_cast<int>(period.size());
+  const int npts = static_cast<int>(points.size());
+  const std::vector<double> U = unwrap_periodic_knots(p, period, 1.0);
+  std::vector<Eigen::Triplet<double>> trip;
+  double N[kMaxDegree + 1];
+  Eigen::MatrixXd Q(npts, Dim);
+  for (int k = 0; k < npts; ++k) {
+    Q.row(k) = points[static_cast<std::size_t>(k)].transpose();
+    const double u = params[static_cast<std::size_t>(k)];
+    const int s = find_span(U.data(), n + p - 1, p, u);
+    basis_funs(s, u, p, U.data(), N);
+    for (int j = 0; j <= p; ++j)
+      if (N[j] != 0.0) trip.emplace_back(k, (s - p + j) % n, N[j]);
+  }
+  Eigen::SparseMatrix<double> A(npts, n);
+  A.setFromTriplets(trip.begin(), trip.end());
+  Eigen::MatrixXd X;
+  if (!solve_least_squares(A, Q, X)) return false;
+  PointList<Dim> P(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) P[static_cast<std::size_t>(i)] = X.row(i).transpose();
+  out = BSplineCurve<Dim>::periodic(p, period, 1.0, P);
+  return true;
 }
 
 // Shared input checks of the drivers; sets the data parameters and returns the pole limit.
@@ -266,7 +306,8 @@ ApproximationResult<Dim> approximate(const PointList<Dim>& points, int p, double
   res.curve = fit_least_squares<Dim>(points, res.params, p, U);  // one Bezier span: always well posed
   res.max_error = max_error(res.curve, points, res.params, err);
   double residual = sum_of_squares(err);
-  improve_parameters(points, p, U, options.parameter_corrections, res, err, residual);
+  auto refit = [&](const std::vector<double>& t, BSplineCurve<Dim>& c) { return fit_open(points, t, p, U, c); };
+  improve_parameters(points, false, options.parameter_corrections, refit, res, err, residual);
   while (res.max_error > tol) {
     const int poles = static_cast<int>(U.size()) - p - 1;
     if (poles >= max_poles) break;
@@ -307,7 +348,7 @@ ApproximationResult<Dim> approximate(const PointList<Dim>& points, int p, double
       break;
     }
     if (!refitted) break;
-    improve_parameters(points, p, U, options.parameter_corrections, res, err, residual);
+    improve_parameters(points, false, options.parameter_corrections, refit, res, err, residual);
   }
   if (res.max_error > tol && npts <= max_poles) {
     // Refinement stalled or reached one pole per point: interpolate (A9.1, error at rounding level).
@@ -327,32 +368,26 @@ ApproximationResult<Dim> approximate_closed(const PointList<Dim>& points, int p,
   // One period of knots starting at 0 (the seam at the first point); p + 1 uniform spans to begin.
   std::vector<double> t(static_cast<std::size_t>(p + 1));
   for (int j = 0; j <= p; ++j) t[static_cast<std::size_t>(j)] = static_cast<double>(j) / (p + 1);
-  Eigen::MatrixXd Q(npts, Dim);
-  for (int k = 0; k < npts; ++k) Q.row(k) = points[static_cast<std::size_t>(k)].transpose();
+  auto refit = [&](const std::vector<double>& params, BSplineCurve<Dim>& c) {
+    return fit_periodic(points, params, p, t, c);
+  };
   std::vector<double> err;
   bool have_curve = false;
+  double residual = HUGE_VAL;
   for (;;) {
     const int n = static_cast<int>(t.size());
-    const std::vector<double> U = unwrap_periodic_knots(p, t, 1.0);
-    // Periodic least squares: basis j acts on pole j mod n; all poles free.
-    std::vector<Eigen::Triplet<double>> trip;
-    double N[kMaxDegree + 1];
-    for (int k = 0; k < npts; ++k) {
-      const double u = res.params[static_cast<std::size_t>(k)];
-      const int s = find_span(U.data(), n + p - 1, p, u);
-      basis_funs(s, u, p, U.data(), N);
-      for (int j = 0; j <= p; ++j)
-        if (N[j] != 0.0) trip.emplace_back(k, (s - p + j) % n, N[j]);
-    }
-    Eigen::SparseMatrix<double> A(npts, n);
-    A.setFromTriplets(trip.begin(), trip.end());
-    Eigen::MatrixXd X;
-    if (!solve_least_squares(A, Q, X)) break;  // rank lost: keep the previous fit, interpolate below if needed
-    PointList<Dim> P(static_cast<std::size_t>(n));
-    for (int i = 0; i < n; ++i) P[static_cast<std::size_t>(i)] = X.row(i).transpose();
-    res.curve = BSplineCurve<Dim>::periodic(p, t, 1.0, P);
+    BSplineCurve<Dim> c;
+    if (!refit(res.params, c)) break;  // rank lost: keep the previous fit, interpolate below if needed
+    std::vector<double> e;
+    const double me = max_error(c, points, res.params, e);
+    const double r = sum_of_squares(e);
+    if (have_curve && !(r <= residual * (1 + 1e-6) + 1e-300)) break;  // ruined by rounding (see approximate)
+    res.curve = std::move(c);
+    res.max_error = me;
+    err = std::move(e);
+    residual = r;
     have_curve = true;
-    res.max_error = max_error(res.curve, points, res.params, err);
+    improve_parameters(points, true, options.parameter_corrections, refit, res, err, residual);
     if (res.max_error <= tol || n >= max_poles) break;
     // Insert where the error is largest, keeping data strictly inside every span (with one data point
     // per span and n spans the periodic system has full rank; the QR rank is checked anyway).
