@@ -18,7 +18,8 @@ std::vector<double> approximation_knots(const std::vector<double>& params, int d
 /// Least-squares fit (9.4.1): the curve of degree p on `knots` whose end poles are the first and last
 /// data points and whose interior poles minimise sum_k |C(params[k]) - points[k]|^2 over the interior
 /// points. Throws InvalidGeometry if sizes mismatch, params are not non-decreasing on the knot domain,
-/// or the data do not determine the poles (Schoenberg-Whitney fails: singular normal equations).
+/// or the data do not determine the poles (Schoenberg-Whitney fails, or the least-squares matrix is
+/// numerically rank deficient / conditioned beyond 1e10).
 template <int Dim>
 BSplineCurve<Dim> fit_least_squares(const PointList<Dim>& points, const std::vector<double>& params, int degree,
                                     const std::vector<double>& knots);
@@ -41,11 +42,13 @@ struct ApproximationOptions {
 };
 
 /// Approximation to a tolerance: starts from a single Bezier segment (degree + 1 poles) and inserts a
-/// knot in every span whose data error exceeds `tolerance` (at the mean parameter of the data in the
-/// span, only where Schoenberg-Whitney stays satisfied), refitting by fit_least_squares until
-/// max_error <= tolerance, with parameter correction between refinements (options). If no knot can be
-/// inserted any more, falls back to interpolation (error ~0). End points are reproduced exactly. Throws InvalidGeometry
-/// for fewer than degree + 1 points, coincident consecutive points, degree outside [1, 25] or tolerance <= 0.
+/// knot in every span whose data error exceeds `tolerance` (midway between the span's two middle data
+/// parameters, only where Schoenberg-Whitney stays satisfied), refitting by fit_least_squares (sparse
+/// QR) until max_error <= tolerance, with parameter correction between refinements (options). A refit
+/// whose residual grows (impossible in exact arithmetic, the spaces are nested: rounding in an
+/// ill-conditioned system) is rejected. When refinement stalls or reaches one pole per point, falls
+/// back to interpolation (error ~0). End points are reproduced exactly. Throws InvalidGeometry for
+/// fewer than degree + 1 points, coincident consecutive points, degree outside [1, 25] or tolerance <= 0.
 template <int Dim>
 ApproximationResult<Dim> approximate(const PointList<Dim>& points, int degree, double tolerance,
                                      const ApproximationOptions& options = {});
