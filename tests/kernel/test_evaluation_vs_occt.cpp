@@ -76,7 +76,7 @@ void compare_all_orders(const BSplineCurve<Dim>& c, const OcctCurve& oc, test::R
 template <int Dim>
 void compare_batched(const BSplineCurve<Dim>& c, test::Rng& r) {
   using Point = typename BSplineCurve<Dim>::Point;
-  std::vector<double> u(64);
+  std::vector<double> u(32);
   const double a = c.first_param(), T = c.last_param() - a;
   // Periodic: samples off the seam (derivatives are one-sided there), shifted by up to 2 periods.
   const double off = c.is_periodic() ? 0.5 : 0.0;
