@@ -7,6 +7,7 @@
 
 #include "src/core/error.hpp"
 #include "src/core/rational.hpp"
+#include "src/algo/distinct_minima.hpp"
 
 namespace cg {
 
@@ -239,14 +240,7 @@ CurveProjection<Dim> CurveProjector<Dim>::run(const Point& P, double max_distanc
   }
   // Distinct minima: greedy by distance, a candidate joins a kept one when their points are within
   // merge_tol_ (the candidates of one minimum lie that close, see the constructor).
-  std::sort(cands_.begin(), cands_.end(), [](const Candidate& x, const Candidate& y) { return x.dist < y.dist; });
-  const double limit = best_ + tol_;
-  std::size_t kept = 0;
-  for (std::size_t i = 0; i < cands_.size() && cands_[i].dist <= limit; ++i) {
-    bool dup = false;
-    for (std::size_t j = 0; j < kept && !dup; ++j) dup = (cands_[i].point - cands_[j].point).norm() <= merge_tol_;
-    if (!dup) cands_[kept++] = cands_[i];
-  }
+  const std::size_t kept = detail::keep_distinct_minima(cands_, best_ + tol_, merge_tol_);
   res.found = true;
   res.param = cands_[0].u;
   res.point = cands_[0].point;

@@ -7,6 +7,7 @@
 #include "src/core/basis.hpp"
 #include "src/core/error.hpp"
 #include "src/core/rational.hpp"
+#include "src/algo/distinct_minima.hpp"
 
 namespace cg {
 
@@ -437,14 +438,7 @@ SurfaceProjection SurfaceProjector::run(const Eigen::Vector3d& P, double max_dis
     if (params) params->clear();
     return res;
   }
-  std::sort(cands_.begin(), cands_.end(), [](const Candidate& x, const Candidate& y) { return x.dist < y.dist; });
-  const double limit = best_ + tol_;
-  std::size_t kept = 0;
-  for (std::size_t i = 0; i < cands_.size() && cands_[i].dist <= limit; ++i) {
-    bool dup = false;
-    for (std::size_t j = 0; j < kept && !dup; ++j) dup = (cands_[i].point - cands_[j].point).norm() <= merge_tol_;
-    if (!dup) cands_[kept++] = cands_[i];
-  }
+  const std::size_t kept = detail::keep_distinct_minima(cands_, best_ + tol_, merge_tol_);
   res.found = true;
   res.u = cands_[0].u;
   res.v = cands_[0].v;
