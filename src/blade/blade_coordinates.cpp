@@ -1,6 +1,8 @@
 #include "src/blade/blade_coordinates.hpp"
 
 #include <Eigen/Geometry>
+#include <Eigen/LU>
+#include <algorithm>
 #include <cmath>
 
 #include "src/algo/project_point_surface.hpp"
@@ -58,14 +60,41 @@ BladeLocateResult BladeCoordinates::locate(const Eigen::Vector3d& p) const {
   // surface's span range): report not found unless the point is on the surface itself.
   const double vtol = 1e-12 * (s.last_v() - s.first_v());
   if ((pr.v <= s.first_v() + vtol || pr.v >= s.last_v() - vtol) && pr.distance > projector_->tolerance()) return r;
+  // The projector stops at its tolerance; a few Newton steps on grad |S - p|^2 / 2 = 0 with exact second
+  // derivatives take the foot point to rounding, so coordinates round-trip to ~1e-12.
+  double u = pr.u, v = pr.v, dist = pr.distance;
+  for (int it = 0; it < 4; ++it) {
+    Eigen::Vector3d e[9];  // e[k * 3 + l] = d^(k+l) S / du^k dv^l
+    s.derivatives(u, v, 2, e);
+    const Eigen::Vector3d g = e[0] - p;
+    Eigen::Matrix2d H;
+    H << e[3].dot(e[3]) + g.dot(e[6]), e[3].dot(e[1]) + g.dot(e[4]), e[3].dot(e[1]) + g.dot(e[4]),
+        e[1].dot(e[1]) + g.dot(e[2]);
+    const Eigen::Vector2d step = H.fullPivLu().solve(-Eigen::Vector2d(g.dot(e[3]), g.dot(e[1])));
+    if (!step.allFinite()) break;
+    double un = u + step.x(), vn = std::clamp(v + step.y(), s.first_v(), s.last_v());
+    if (s.is_periodic_u()) {
+      double dummy = vn;
+      s.check_params(un, dummy);
+    } else {
+      un = std::clamp(un, s.first_u(), s.last_u());
+    }
+    const double dn = (s.point(un, vn) - p).norm();
+    if (!(dn <= dist * (1 + 1e-12) + 1e-300)) break;
+    const bool converged = step.norm() <= 1e-15 * (1 + std::abs(u) + std::abs(v));
+    u = un;
+    v = vn;
+    dist = dn;
+    if (converged) break;
+  }
   Eigen::Vector3d d[4];
-  s.derivatives(pr.u, pr.v, 1, d);
+  s.derivatives(u, v, 1, d);
   const Eigen::Vector3d n = (normal_sign_ * d[2].cross(d[1])).normalized();
   r.found = true;
-  r.u = pr.u;
-  r.v = pr.v;
-  r.coordinate.span = pr.v;
-  r.coordinate.chord = chordwise_at_surface_u(pr.u - s.first_u(), model_->u_te);
+  r.u = u;
+  r.v = v;
+  r.coordinate.span = v;
+  r.coordinate.chord = chordwise_at_surface_u(u - s.first_u(), model_->u_te);
   r.coordinate.depth = (d[0] - p).dot(n);
   return r;
 }
