@@ -20,6 +20,11 @@ blade::MeridionalPolyline polyline(const Field& f, std::size_t min_points) {
     const Field p = f.item(i);
     p.expect_array(2, 2);
     out.emplace_back(p.item(0).number(kAny, "mm"), p.item(1).number(positive(), "mm"));
+    // Points must run along the contour: an unsorted list would zig-zag and the interpolated curve fold.
+    if (i >= 1 && out[i] == out[i - 1]) fail(p.path(), "coincides with the previous point");
+    if (i >= 2 && (out[i] - out[i - 1]).dot(out[i - 1] - out[i - 2]) <= 0.0)
+      fail(p.path(), "the contour turns back here (more than 90 deg between consecutive segments): list the "
+                     "points in order along the contour");
   }
   return out;
 }
@@ -35,7 +40,11 @@ blade::MeridionalNetDefinition meridional_net(const Field& f) {
     for (std::size_t i = 0; i < n; ++i) {
       const Field e = s.item(i);
       if (e.is_number()) {
-        net.interpolated_spans.push_back(e.number(open(0, 1)));
+        const double span = e.number(open(0, 1));
+        if (!net.interpolated_spans.empty() && span <= net.interpolated_spans.back())
+          fail(e.path(), "streamline span fractions must be strictly increasing, got " + std::to_string(span) +
+                             " after " + std::to_string(net.interpolated_spans.back()));
+        net.interpolated_spans.push_back(span);
         continue;
       }
       if (!e.is_object()) fail(e.path(), "must be a span fraction in (0, 1) or an object {\"span\", \"points\"}, got " +

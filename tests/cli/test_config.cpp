@@ -97,6 +97,13 @@ BOOST_AUTO_TEST_CASE(out_of_range_values) {
   expect_error([](json& d) { d["sections"][1]["span"] = 0.0; }, "sections[1].span", "strictly increasing");
   expect_error([](json& d) { d["flow_path"]["hub"][1][1] = -5.0; }, "flow_path.hub[1][1]", "> 0 mm");
   expect_error([](json& d) { d["flow_path"]["streamlines"] = {1.2}; }, "flow_path.streamlines[0]", "(0, 1)");
+  // Unsorted input: span fractions out of order, contour points out of order or repeated.
+  expect_error([](json& d) { d["flow_path"]["streamlines"] = {0.5, 0.25}; }, "flow_path.streamlines[1]",
+               "strictly increasing");
+  expect_error([](json& d) { std::swap(d["flow_path"]["hub"][1], d["flow_path"]["hub"][2]); }, "flow_path.hub[2]",
+               "turns back");
+  expect_error([](json& d) { d["flow_path"]["casing"][2] = d["flow_path"]["casing"][1]; }, "flow_path.casing[2]",
+               "coincides");
   expect_error([](json& d) { d["blade"]["overbuild"] = 0.0; }, "blade.overbuild", "(0, 0.5]");
   expect_error([](json& d) { d["units"] = "cm"; }, "units", "\"mm\"");
   expect_error([](json& d) { d["output"]["step_schema"] = "AP203"; }, "output.step_schema", "\"AP242\"");
