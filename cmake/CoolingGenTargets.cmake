@@ -22,21 +22,30 @@ function(cg_add_library name)
   target_link_libraries(${name} PUBLIC ${A_DEPS})
 endfunction()
 
-# NURBS kernel and geometric algorithms: Eigen only, no OCCT.
-cg_add_library(coolinggen_kernel DIRS src/core src/modify src/analyze src/fit src/algo DEPS Eigen3::Eigen)
+# NURBS kernel, geometric algorithms and edge-orthogonal patches: Eigen only, no OCCT.
+cg_add_library(coolinggen_kernel DIRS src/core src/modify src/analyze src/fit src/algo src/ortho DEPS Eigen3::Eigen)
 # Exact conversion to and from OCCT geometry.
 cg_add_library(coolinggen_adaptors DIRS adaptors DEPS coolinggen_kernel coolinggen_occt_deps)
 
-# Blade model: meridional net, sections, blade surface, blade-relative coordinates (no OCCT).
-cg_add_library(coolinggen_model DIRS src/blade DEPS coolinggen_kernel)
-# B-rep solids, cooling features and export (OCCT).
-cg_add_library(coolinggen_brep DIRS src/brep features export DEPS coolinggen_model coolinggen_adaptors nlohmann_json::nlohmann_json)
-# Configuration file (JSON) -> model.
-cg_add_library(coolinggen_config DIRS src/config DEPS coolinggen_brep)
+# Blade model: meridional net, sections, blade surface, blade-relative coordinates, structured grids
+# (no OCCT).
+cg_add_library(coolinggen_model DIRS src/blade src/grid DEPS coolinggen_kernel)
+# B-rep solids, verification and the cooling features (OCCT).
+cg_add_library(coolinggen_brep DIRS src/brep features DEPS coolinggen_model coolinggen_adaptors nlohmann_json::nlohmann_json)
+# Output files: STEP, IGES, BREP, STL, VTK, previews, reports, grid files (OCCT, VTK, CGNS).
+cg_add_library(coolinggen_export DIRS export DEPS coolinggen_brep coolinggen_vtk_deps coolinggen_cgns_deps nlohmann_json::nlohmann_json)
+vtk_module_autoinit(TARGETS coolinggen_export MODULES ${VTK_LIBRARIES})
+# Meshing through gmsh's C++ API (gmsh takes the OCCT shape).
+cg_add_library(coolinggen_mesh DIRS src/mesh DEPS coolinggen_brep coolinggen_gmsh_deps)
+# Configuration file (JSON) -> model and feature definitions.
+cg_add_library(coolinggen_config DIRS src/config DEPS coolinggen_brep coolinggen_export)
+# The whole job (config -> verified, exported model) as a library call; the CLI is a thin layer on it.
+cg_add_library(coolinggen_pipeline DIRS src/pipeline DEPS coolinggen_config coolinggen_export coolinggen_mesh)
 
 add_library(coolinggen INTERFACE)
 add_library(coolinggen::coolinggen ALIAS coolinggen)
-target_link_libraries(coolinggen INTERFACE coolinggen_config coolinggen_brep coolinggen_model coolinggen_adaptors coolinggen_kernel)
+target_link_libraries(coolinggen INTERFACE coolinggen_pipeline coolinggen_config coolinggen_mesh coolinggen_export
+  coolinggen_brep coolinggen_model coolinggen_adaptors coolinggen_kernel)
 
 file(GLOB cli_srcs CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/cli/*.cpp)
 if(cli_srcs)
@@ -46,7 +55,9 @@ if(cli_srcs)
   install(TARGETS coolinggen_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 endif()
 
-install(TARGETS coolinggen coolinggen_config coolinggen_brep coolinggen_model coolinggen_kernel coolinggen_adaptors coolinggen_occt_deps
+install(TARGETS coolinggen coolinggen_pipeline coolinggen_config coolinggen_mesh coolinggen_export coolinggen_brep
+  coolinggen_model coolinggen_kernel coolinggen_adaptors coolinggen_occt_deps coolinggen_vtk_deps coolinggen_gmsh_deps
+  coolinggen_cgns_deps
   EXPORT CoolingGenTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 foreach(d src adaptors features export)
   install(DIRECTORY ${d}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/coolinggen/${d}

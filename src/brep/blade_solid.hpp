@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "src/blade/blade_surface.hpp"
+#include "src/brep/named_shape.hpp"
 #include "src/core/bspline_curve.hpp"
 #include "src/core/bspline_surface.hpp"
 
@@ -45,11 +46,6 @@ using EndTrim = std::variant<PlaneTrim, RevolvedTrim>;
 inline constexpr const char* kWallFaceName = "blade_wall";
 inline constexpr const char* kHubFaceName = "hub";
 inline constexpr const char* kCasingFaceName = "casing";
-
-struct NamedFace {
-  TopoDS_Face face;  ///< a face of BladeSolid::solid (same TShape)
-  std::string name;  ///< kWallFaceName, kHubFaceName or kCasingFaceName
-};
 
 struct BladeSolid {
   TopoDS_Solid solid;
