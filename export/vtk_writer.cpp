@@ -1,0 +1,62 @@
+#include "export/vtk_writer.hpp"
+
+#include <vtkXMLPolyDataWriter.h>
+
+#include <fstream>
+
+#include "export/atomic_file.hpp"
+#include "export/vtk_polydata.hpp"
+
+namespace cg::io {
+namespace {
+
+// XML attribute text: the body names follow the naming scheme, but escape anyway.
+std::string xml_escape(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+VtkFiles write_vtk(const std::filesystem::path& dir, const std::string& stem, const brep::Part& part,
+                   const PartTriangles& triangles) {
+  if (part.empty()) throw ExportError("cannot export an empty part (no bodies)");
+  VtkFiles files;
+  files.multiblock = dir / (stem + ".vtm");
+  for (std::size_t b = 0; b < part.size(); ++b) {
+    const std::filesystem::path piece = dir / (stem + "_" + part[b].name + ".vtp");
+    const auto pd = body_polydata(triangles, static_cast<int>(b), part[b].name);
+    write_atomically(piece, [&](const std::filesystem::path& tmp) {
+      auto w = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
+      w->SetFileName(tmp.string().c_str());
+      w->SetInputData(pd);
+      w->SetDataModeToAppended();
+      w->SetCompressorTypeToZLib();
+      if (w->Write() != 1) throw ExportError("cannot write VTK file " + tmp.string());
+    });
+    files.pieces.push_back(piece);
+  }
+  write_atomically(files.multiblock, [&](const std::filesystem::path& tmp) {
+    std::ofstream out(tmp, std::ios::binary);
+    out << "<?xml version=\"1.0\"?>\n"
+        << "<VTKFile type=\"vtkMultiBlockDataSet\" version=\"1.0\" byte_order=\"LittleEndian\">\n"
+        << "  <vtkMultiBlockDataSet>\n";
+    for (std::size_t b = 0; b < part.size(); ++b)
+      out << "    <DataSet index=\"" << b << "\" name=\"" << xml_escape(part[b].name) << "\" file=\""
+          << xml_escape(files.pieces[b].filename().string()) << "\"/>\n";
+    out << "  </vtkMultiBlockDataSet>\n</VTKFile>\n";
+    if (!out) throw ExportError("cannot write " + tmp.string());
+  });
+  return files;
+}
+
+}  // namespace cg::io
