@@ -2,7 +2,6 @@
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
-#include <vtkCellData.h>
 #include <vtkLight.h>
 #include <vtkPNGWriter.h>
 #include <vtkPolyDataMapper.h>
@@ -11,11 +10,10 @@
 #include <vtkRenderer.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
-#include <vtkThreshold.h>
 #include <vtkWindowToImageFilter.h>
-#include <vtkGeometryFilter.h>
 
 #include <Eigen/Dense>
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <sstream>
 
@@ -25,20 +23,6 @@
 
 namespace cg::io {
 namespace {
-
-// The cells of one feature kind as polydata.
-vtkSmartPointer<vtkPolyData> kind_cells(vtkPolyData* all, int kind) {
-  auto threshold = vtkSmartPointer<vtkThreshold>::New();
-  threshold->SetInputData(all);
-  threshold->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, "feature_id");
-  threshold->SetLowerThreshold(kind - 0.5);
-  threshold->SetUpperThreshold(kind + 0.5);
-  threshold->SetThresholdFunction(vtkThreshold::THRESHOLD_BETWEEN);
-  auto surface = vtkSmartPointer<vtkGeometryFilter>::New();
-  surface->SetInputConnection(threshold->GetOutputPort());
-  surface->Update();
-  return surface->GetOutput();
-}
 
 // Principal axes of the triangulation's points (largest extent first): the camera looks along the
 // smallest (blade thickness), with the largest (span) up.
@@ -60,8 +44,10 @@ Eigen::Matrix3d principal_axes(const PartTriangles& t, Eigen::Vector3d& centre, 
 
 }  // namespace
 
-bool is_outer_metal_kind(const std::string& kind) {
-  return kind == "blade_wall" || kind == "hub" || kind == "casing" || kind == "tip_cap" || kind == "hub_floor";
+double kind_opacity(const std::string& kind, double wall_opacity) {
+  if (kind == "blade_wall" || kind == "hub" || kind == "casing" || kind == "tip_cap" || kind == "hub_floor") return wall_opacity;
+  if (kind == "chamber" || kind == "turnaround") return 0.55;
+  return 1.0;
 }
 
 PreviewResult write_preview(const std::filesystem::path& file, const PartTriangles& t, const PreviewOptions& o) {
@@ -74,16 +60,15 @@ PreviewResult write_preview(const std::filesystem::path& file, const PartTriangl
   }
   result.message = display.message;
 
-  const auto all = body_polydata(t, -1, "part");
   auto renderer = vtkSmartPointer<vtkRenderer>::New();
   renderer->SetBackground(1, 1, 1);
   renderer->SetUseDepthPeeling(1);
   renderer->SetMaximumNumberOfPeels(12);
   renderer->SetOcclusionRatio(0.0);
-  std::ostringstream legend;
+  std::vector<std::pair<std::string, Colour>> legend;
   for (std::size_t k = 0; k < t.table.kinds.size(); ++k) {
     const std::string& kind = t.table.kinds[k];
-    const auto cells = kind_cells(all, static_cast<int>(k));
+    const auto cells = body_polydata(t, -1, "part", static_cast<int>(k));
     if (cells->GetNumberOfCells() == 0) continue;
     auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
     mapper->SetInputData(cells);
@@ -94,17 +79,25 @@ PreviewResult write_preview(const std::filesystem::path& file, const PartTriangl
     actor->GetProperty()->SetColor(c[0], c[1], c[2]);
     actor->GetProperty()->SetSpecular(0.25);
     actor->GetProperty()->SetSpecularPower(30);
-    const bool outer = is_outer_metal_kind(kind);
-    if (outer) actor->GetProperty()->SetOpacity(o.wall_opacity);
+    const double opacity = kind_opacity(kind, o.wall_opacity);
+    actor->GetProperty()->SetOpacity(opacity);
     renderer->AddActor(actor);
-    legend << (legend.tellp() > 0 ? "\n" : "") << kind << (outer ? " (transparent)" : "");
+    legend.emplace_back(kind + (opacity < 1 ? " (transparent)" : ""), c);
   }
 
   Eigen::Vector3d centre;
   double radius = 1;
   const Eigen::Matrix3d axes = principal_axes(t, centre, radius);
   // Look mostly along the thinnest direction, from 35 deg off it towards the chord, 20 deg from above.
-  const Eigen::Vector3d up = axes.col(0), chord = axes.col(1), thin = axes.col(2);
+  Eigen::Vector3d up = axes.col(0), chord = axes.col(1), thin = axes.col(2);
+  if (o.up.norm() > 0) {
+    // Up as given; the view direction stays the thinnest principal direction, made normal to up.
+    up = o.up.normalized();
+    thin = (thin - thin.dot(up) * up).normalized();
+    chord = up.cross(thin);
+  } else if (up.cwiseAbs().maxCoeff() != up.maxCoeff()) {
+    up = -up;  // no hint: the longest axis with its largest component positive (z up for a straight vane)
+  }
   const Eigen::Vector3d dir = (thin * std::cos(0.61) + chord * std::sin(0.61) + up * 0.35).normalized();
   vtkCamera* cam = renderer->GetActiveCamera();
   cam->SetFocalPoint(centre.x(), centre.y(), centre.z());
@@ -116,17 +109,23 @@ PreviewResult write_preview(const std::filesystem::path& file, const PartTriangl
   cam->Zoom(1.15);
   renderer->ResetCameraClippingRange();
 
-  auto add_text = [&](const std::string& text, int x, int y, int size, bool top) {
+  auto add_text = [&](const std::string& text, int x, int y, int size, bool top, const Colour& colour = {0.1, 0.1, 0.1}) {
     auto a = vtkSmartPointer<vtkTextActor>::New();
     a->SetInput(text.c_str());
     a->GetTextProperty()->SetFontSize(size);
-    a->GetTextProperty()->SetColor(0.1, 0.1, 0.1);
+    a->GetTextProperty()->SetColor(colour[0], colour[1], colour[2]);
+    a->GetTextProperty()->SetBold(size > 20);
     if (top) a->GetTextProperty()->SetVerticalJustificationToTop();
     a->SetDisplayPosition(x, y);
     renderer->AddActor2D(a);
   };
   if (!o.title.empty()) add_text(o.title, 16, o.height - 16, 26, true);
-  add_text(legend.str(), 16, 16, 18, false);
+  // Legend, one line per kind in its colour (darkened so light greys stay readable), bottom up.
+  for (std::size_t k = 0; k < legend.size(); ++k) {
+    const Colour& c = legend[legend.size() - 1 - k].second;
+    add_text(legend[legend.size() - 1 - k].first, 16, 16 + 24 * static_cast<int>(k), 18, false,
+             {0.75 * c[0], 0.75 * c[1], 0.75 * c[2]});
+  }
 
   auto window = vtkSmartPointer<vtkRenderWindow>::New();
   window->SetOffScreenRendering(1);

@@ -15,6 +15,8 @@ struct PreviewOptions {
   int width = 1280, height = 960;  ///< pixels
   double wall_opacity = 0.22;      ///< opacity of the outer metal faces, (0, 1]
   std::string title;               ///< drawn top left (e.g. the product name)
+  /// Direction drawn upwards (hub -> casing); zero: the longest principal axis of the part.
+  Eigen::Vector3d up = Eigen::Vector3d::Zero();
 };
 
 struct PreviewResult {
@@ -27,7 +29,9 @@ struct PreviewResult {
 PreviewResult write_preview(const std::filesystem::path& file, const PartTriangles& triangles,
                             const PreviewOptions& options = {});
 
-/// True for the kinds drawn as (semi-transparent) outer metal: blade_wall, hub, casing, tip_cap, hub_floor.
-bool is_outer_metal_kind(const std::string& kind);
+/// Opacity a kind is drawn with: outer metal (blade_wall, hub, casing, tip_cap, hub_floor) at
+/// `wall_opacity`, the walls of large cavities (chamber, turnaround) half transparent so inserts and
+/// pin fins inside them show, every other feature opaque.
+double kind_opacity(const std::string& kind, double wall_opacity);
 
 }  // namespace cg::io

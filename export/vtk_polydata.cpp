@@ -29,7 +29,7 @@ vtkSmartPointer<vtkStringArray> string_table(const char* name, const std::vector
 
 }  // namespace
 
-vtkSmartPointer<vtkPolyData> body_polydata(const PartTriangles& t, int body, const std::string& body_name) {
+vtkSmartPointer<vtkPolyData> body_polydata(const PartTriangles& t, int body, const std::string& body_name, int kind) {
   auto points = vtkSmartPointer<vtkPoints>::New();
   points->SetDataTypeToDouble();
   auto normals = vtkSmartPointer<vtkDoubleArray>::New();
@@ -39,7 +39,7 @@ vtkSmartPointer<vtkPolyData> body_polydata(const PartTriangles& t, int body, con
   auto feature = int_array("feature_id"), name = int_array("face_name_id"), face = int_array("face_id");
   std::unordered_map<int, vtkIdType> node_of;  // part node -> polydata point (only the body's nodes)
   for (std::size_t k = 0; k < t.triangles.size(); ++k) {
-    if (body >= 0 && t.body[k] != body) continue;
+    if ((body >= 0 && t.body[k] != body) || (kind >= 0 && t.kind_id[k] != kind)) continue;
     vtkIdType ids[3];
     for (int c = 0; c < 3; ++c) {
       const int n = t.triangles[k][static_cast<std::size_t>(c)];

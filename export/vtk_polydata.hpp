@@ -11,7 +11,8 @@
 
 namespace cg::io {
 
-/// Polydata of the triangles of body `body` (all bodies when body < 0).
-vtkSmartPointer<vtkPolyData> body_polydata(const PartTriangles& t, int body, const std::string& body_name);
+/// Polydata of the triangles of body `body` (all bodies when body < 0), only of feature kind id `kind`
+/// when kind >= 0.
+vtkSmartPointer<vtkPolyData> body_polydata(const PartTriangles& t, int body, const std::string& body_name, int kind = -1);
 
 }  // namespace cg::io

@@ -6,26 +6,9 @@
 
 #include "export/atomic_file.hpp"
 #include "export/vtk_polydata.hpp"
+#include "export/xml_text.hpp"
 
 namespace cg::io {
-namespace {
-
-// XML attribute text: the body names follow the naming scheme, but escape anyway.
-std::string xml_escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
-
-}  // namespace
 
 VtkFiles write_vtk(const std::filesystem::path& dir, const std::string& stem, const brep::Part& part,
                    const PartTriangles& triangles) {

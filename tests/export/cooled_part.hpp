@@ -32,6 +32,8 @@ struct CooledPart {
   double uncooled_volume = 0;  ///< mm^3
   double removed_volume = 0;   ///< V(uncooled) - V(blade), mm^3
   int chambers = 0, holes = 0;
+  std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> chamber_axes;  ///< end points of each chamber's axis
+  std::vector<double> chamber_radii;                                      ///< mm
   blade::BladeModel model;
 };
 
@@ -41,6 +43,8 @@ struct CooledPartOptions {
   bool insert = true;       ///< an insert tube in the last chamber (a second body)
   double hole_radius = 0.3; ///< mm
 };
+
+constexpr double kPi = 3.14159265358979323846;
 
 inline double volume_of(const TopoDS_Shape& s) {
   GProp_GProps g;
@@ -154,6 +158,8 @@ inline CooledPart make_cooled_part(const config::Config& c, const CooledPartOpti
                                    numbered("film_row_1_hole_", j + 1, 3)));
   }
   cp.chambers = o.chambers;
+  cp.chamber_axes = axes;
+  cp.chamber_radii = radii;
   cp.holes = o.chambers > 0 ? o.holes : 0;
   brep::NamedShape blade{solid.solid, solid.faces};
   cp.uncooled = solid.solid;
