@@ -29,6 +29,7 @@ namespace cg::test {
 struct CooledPart {
   brep::Part part;             ///< bodies[0] "blade" (cut), optional "insert_1"
   TopoDS_Shape uncooled;       ///< the blade solid before the cut
+  std::vector<brep::NamedFace> uncooled_faces;
   double uncooled_volume = 0;  ///< mm^3
   double removed_volume = 0;   ///< V(uncooled) - V(blade), mm^3
   int chambers = 0, holes = 0;
@@ -42,6 +43,7 @@ struct CooledPartOptions {
   int holes = 4;            ///< film holes into chamber 1 (pressure side)
   bool insert = true;       ///< an insert tube in the last chamber (a second body)
   double hole_radius = 0.3; ///< mm
+  double chamber_top = 0.85;///< span fraction where the chambers end (they open at the hub)
 };
 
 constexpr double kPi = 3.14159265358979323846;
@@ -122,7 +124,7 @@ inline CooledPart make_cooled_part(const config::Config& c, const CooledPartOpti
     if (thickness) *thickness = (a - b).norm();
     return Eigen::Vector3d(0.5 * (a + b));
   };
-  const double v0 = -0.04, v1 = 0.85;  // from below the hub (open there) to 85 % span
+  const double v0 = -0.04, v1 = o.chamber_top;  // from below the hub (open there) to chamber_top
   std::vector<brep::NamedShape> tools;
   std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> axes;
   std::vector<double> radii;
@@ -147,7 +149,7 @@ inline CooledPart make_cooled_part(const config::Config& c, const CooledPartOpti
   }
   const double c1 = 0.2;
   for (int j = 0; j < o.holes && o.chambers > 0; ++j) {
-    const double v = 0.2 + 0.5 * j / std::max(1, o.holes - 1);
+    const double v = 0.2 + (v1 - 0.35) * j / std::max(1, o.holes - 1);  // 0.2 .. 0.5 at the default top
     const Eigen::Vector3d p = s.point(blade::surface_u_at_chordwise(-c1, ute), v);
     // Into the chamber axis point nearest the wall point: the hole ends inside the chamber.
     const auto& [a, b] = axes[0];
@@ -163,6 +165,7 @@ inline CooledPart make_cooled_part(const config::Config& c, const CooledPartOpti
   cp.holes = o.chambers > 0 ? o.holes : 0;
   brep::NamedShape blade{solid.solid, solid.faces};
   cp.uncooled = solid.solid;
+  cp.uncooled_faces = solid.faces;
   cp.uncooled_volume = volume_of(solid.solid);
   cp.part.push_back({"blade", tools.empty() ? blade : cut_named(blade, tools)});
   cp.removed_volume = cp.uncooled_volume - volume_of(cp.part[0].geometry.shape);
