@@ -69,43 +69,43 @@ HandoffResult write_handoff(const std::filesystem::path& dir, const brep::Part& 
   HandoffResult r;
   nlohmann::json timings = nlohmann::json::object();
   auto has = [&](OutputFormat f) { return o.formats.count(f) > 0; };
-  auto timed = [&](OutputFormat f, const auto& write) {
+  auto timed = [&](const char* stage, const auto& write) {
     const auto t0 = std::chrono::steady_clock::now();
     write();
-    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    timings[output_format_name(f)] = timings.value(output_format_name(f), 0.0) + s;  // vtk: mesh + files
+    timings[stage] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   };
   if (has(OutputFormat::Step))
-    timed(OutputFormat::Step, [&] {
+    timed(output_format_name(OutputFormat::Step), [&] {
       write_step(dir / "blade.step", part, {o.step_schema, o.product_name});
       r.files.push_back(dir / "blade.step");
     });
   if (has(OutputFormat::Iges))
-    timed(OutputFormat::Iges, [&] {
+    timed(output_format_name(OutputFormat::Iges), [&] {
       write_iges(dir / "blade.igs", part, {o.product_name});
       r.files.push_back(dir / "blade.igs");
     });
   if (has(OutputFormat::Brep))
-    timed(OutputFormat::Brep, [&] {
+    timed(output_format_name(OutputFormat::Brep), [&] {
       write_brep(dir / "blade.brep", part);
       r.files.push_back(dir / "blade.brep");
     });
+  // One triangulation for STL, VTK and the preview.
+  PartTriangles t;
+  if (has(OutputFormat::Stl) || has(OutputFormat::Vtk) || has(OutputFormat::Preview))
+    timed("triangulation", [&] { t = triangulate_part(part, {o.stl_deflection, o.stl_angular_deflection_deg * kDeg}); });
   if (has(OutputFormat::Stl))
-    timed(OutputFormat::Stl, [&] {
-      r.summary["stl_triangles"] = write_stl(dir / "blade.stl", part, {o.stl_deflection, o.stl_angular_deflection_deg * kDeg});
+    timed(output_format_name(OutputFormat::Stl), [&] {
+      r.summary["stl_triangles"] = write_stl(dir / "blade.stl", t, o.product_name);
       r.files.push_back(dir / "blade.stl");
     });
-  if (has(OutputFormat::Vtk) || has(OutputFormat::Preview)) {
-    PartTriangles t;
-    timed(OutputFormat::Vtk, [&] { t = triangulate_part(part, {o.stl_deflection, o.stl_angular_deflection_deg * kDeg}); });
-    if (has(OutputFormat::Vtk))
-      timed(OutputFormat::Vtk, [&] {
+  if (has(OutputFormat::Vtk))
+      timed(output_format_name(OutputFormat::Vtk), [&] {
         const VtkFiles v = write_vtk(dir, "blade", part, t);
         r.files.insert(r.files.end(), v.pieces.begin(), v.pieces.end());
         r.files.push_back(v.multiblock);
       });
     if (has(OutputFormat::Preview))
-      timed(OutputFormat::Preview, [&] {
+      timed(output_format_name(OutputFormat::Preview), [&] {
         PreviewOptions po{o.preview_width, o.preview_height, 0.22, o.product_name, Eigen::Vector3d::Zero()};
         // Hub -> casing along the leading edge (u = 0 at the LE): the blade stands upright.
         if (model) po.up = model->surface.point(0, 1) - model->surface.point(0, 0);
@@ -115,12 +115,11 @@ HandoffResult write_handoff(const std::filesystem::path& dir, const brep::Part& 
         else
           r.notes.push_back(p.message);
       });
-  }
   if (has(OutputFormat::Sections)) {
     if (!model) {
       r.notes.push_back("sections.svg skipped: no blade model to place the section surfaces");
     } else {
-      timed(OutputFormat::Sections, [&] {
+      timed(output_format_name(OutputFormat::Sections), [&] {
         r.sections = cut_sections(part, blade_section_surfaces(*model, o.section_spans));
         write_sections_svg(dir / "sections.svg", r.sections, o.product_name);
         r.files.push_back(dir / "sections.svg");

@@ -1,18 +1,20 @@
 #pragma once
-// Binary STL of a brep::Part: every body triangulated with BRepMesh (on a copy, so the part keeps no
-// mesh) to the given deflection, then StlAPI_Writer. One file for all bodies.
+// Binary STL of a brep::Part: the triangulation of export/triangulation.hpp (BRepMesh on a copy of
+// every body to the given deflection, outward-oriented triangles) written as little-endian binary STL
+// (80-byte header naming the tool, unit and product; triangle count; per triangle the unit normal and
+// three vertices as float32, attribute 0). One file for all bodies.
 #include <filesystem>
+#include <string>
 
-#include "src/brep/named_shape.hpp"
+#include "export/triangulation.hpp"
 
 namespace cg::io {
 
-struct StlOptions {
-  double linear_deflection = 0.01;  ///< mm, largest distance between triangle and surface, > 0
-  double angular_deflection = 0.35; ///< rad, largest angle between normals of adjacent triangles, > 0
-};
+/// Writes the triangles atomically; returns the triangle count. Throws ExportError on failure.
+std::size_t write_stl(const std::filesystem::path& file, const PartTriangles& triangles, const std::string& product_name = "blade");
 
-/// Writes the binary STL atomically; returns the triangle count. Throws ExportError on failure.
-std::size_t write_stl(const std::filesystem::path& file, const brep::Part& part, const StlOptions& options = {});
+/// Triangulates `part` (deflections from `options`) and writes it.
+std::size_t write_stl(const std::filesystem::path& file, const brep::Part& part, const TriangulationOptions& options = {},
+                      const std::string& product_name = "blade");
 
 }  // namespace cg::io

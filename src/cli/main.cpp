@@ -1,5 +1,6 @@
 // coolinggen: command-line front end.
 //   coolinggen build [CONFIG] -o DIR   config (or the built-in example) -> DIR/blade.step + DIR/report.json
+//   coolinggen mesh [CONFIG] -o DIR    tetrahedral meshes of metal and coolant (gmsh) + report
 //   coolinggen validate CONFIG         parse and check the config (builds the blade model), writes nothing
 //   coolinggen example                 prints the built-in example config
 // Exit codes: 0 success, 1 command-line error, 2 invalid config, 3 model/solid failure (a failed check
@@ -20,6 +21,7 @@
 #include "export/report.hpp"
 #include "export/step_writer.hpp"
 #include "src/brep/blade_solid.hpp"
+#include "src/cli/handoff_commands.hpp"
 #include "src/brep/verify.hpp"
 #include "src/config/builtin_example.hpp"
 #include "src/config/config.hpp"
@@ -93,12 +95,14 @@ int run_build(const std::string& path, const fs::path& out_dir, bool quiet) {
   if (ec) throw io::ExportError("cannot create output directory " + out_dir.string() + ": " + ec.message());
   const fs::path step = out_dir / "blade.step", json = out_dir / "report.json";
   const bool ok = report.check.all_passed();
+  nlohmann::json outputs = nlohmann::json::object();
   if (ok) {
-    io::write_step(step, solid.solid, solid.faces, {c.output.step_schema, c.output.product_name});
-    timings["step"] = sw.lap();
+    outputs = cli::write_build_outputs(out_dir, c, model, solid);  // blade.step, .igs, .brep, ... (output.formats)
+    timings["outputs"] = sw.lap();
   }
   report.timings_s = nlohmann::json(timings);
-  io::write_report(json, report);
+  cli::write_reports(out_dir, report, {{"outputs", outputs}},
+                     ok && c.output.handoff.formats.count(io::OutputFormat::ReportMarkdown) > 0);
   if (!ok)
     throw ChecksFailed("solid checks failed (" + report.check.failed_names() + "); wrote " + json.string() +
                        " only, no STEP file");
@@ -120,7 +124,10 @@ int run_build(const std::string& path, const fs::path& out_dir, bool quiet) {
     }
     std::printf(" total %.3f s\n", total);
     for (const auto& w : solid.warnings) std::printf("  warning: %s\n", w.c_str());
-    std::printf("  wrote %s, %s\n", step.string().c_str(), json.string().c_str());
+    for (const auto& n : outputs.value("notes", nlohmann::json::array())) std::printf("  note: %s\n", n.get<std::string>().c_str());
+    std::printf("  wrote %s:", out_dir.string().c_str());
+    for (const auto& f : outputs.value("files", nlohmann::json::array())) std::printf(" %s", f.get<std::string>().c_str());
+    std::printf(" report.json%s\n", c.output.handoff.formats.count(io::OutputFormat::ReportMarkdown) ? " report.md" : "");
   }
   return kOk;
 }
@@ -143,6 +150,14 @@ int main(int argc, char** argv) {
   CLI::App* validate = app.add_subcommand("validate", "Parse and check a config (builds the blade model); writes nothing");
   validate->add_option("config", validate_config, "Config file (JSON)")->required();
   CLI::App* example = app.add_subcommand("example", "Print the built-in example config (JSON) to stdout");
+  std::string mesh_config;
+  fs::path mesh_out;
+  bool mesh_quiet = false;
+  CLI::App* meshc = app.add_subcommand("mesh", "Mesh the blade metal and its coolant domain with gmsh; write DIR/mesh.msh, "
+                                               "DIR/mesh_*.vtu, DIR/report.json and DIR/report.md");
+  meshc->add_option("config", mesh_config, "Config file (JSON); without it the built-in example");
+  meshc->add_option("-o,--output", mesh_out, "Output directory (created if missing)")->required();
+  meshc->add_flag("-q,--quiet", mesh_quiet, "Print nothing on success (and no progress)");
 
   try {
     app.parse(argc, argv);
@@ -163,6 +178,7 @@ int main(int argc, char** argv) {
       return kOk;
     }
     if (*validate) return run_validate(validate_config);
+    if (*meshc) return cli::run_mesh(mesh_config, mesh_out, mesh_quiet);
     return run_build(build_config, out_dir, quiet);
   } catch (const config::ConfigError& e) {
     return error_exit(kBadConfig, e.what());

@@ -169,7 +169,7 @@ blade::BladeOptions blade_options(const Field& f) {
 
 Config parse_config(const nlohmann::json& document, const std::filesystem::path& base_dir, const std::string& default_name) {
   const Field root(document, "");
-  root.expect_object({"$schema", "name", "description", "units", "flow_path", "sections", "blade", "output"});
+  root.expect_object({"$schema", "name", "description", "units", "flow_path", "sections", "blade", "output", "mesh"});
   Config c;
   c.source = document;
   c.name = root.has("name") ? root.at("name").string() : default_name;
@@ -191,11 +191,14 @@ Config parse_config(const nlohmann::json& document, const std::filesystem::path&
   c.output.product_name = c.name;
   if (root.has("output")) {
     const Field out = root.at("output");
-    out.expect_object({"step_schema", "product_name"});
+    out.expect_object({"step_schema", "product_name", "formats", "stl_deflection", "stl_angular_deflection_deg",
+                       "section_spans"});
     if (out.has("step_schema"))
       c.output.step_schema = out.at("step_schema").choice({"AP214", "AP242"}) == 1 ? io::StepSchema::AP242 : io::StepSchema::AP214;
     if (out.has("product_name")) c.output.product_name = out.at("product_name").string();
+    c.output.handoff = handoff_output_fields(out);
   }
+  if (root.has("mesh")) c.mesh = mesh_options(root.at("mesh"));
   return c;
 }
 

@@ -10,14 +10,17 @@
 #include <string>
 
 #include "export/step_writer.hpp"
+#include "src/config/handoff_fields.hpp"
+#include "src/mesh/mesh_options.hpp"
 #include "src/blade/blade_surface.hpp"
 #include "src/config/config_error.hpp"
 
 namespace cg::config {
 
 struct OutputOptions {
-  io::StepSchema step_schema = io::StepSchema::AP214;
+  io::StepSchema step_schema = io::StepSchema::AP242;
   std::string product_name;  ///< name of the product in the STEP file (default: the config's name)
+  HandoffOutputFields handoff;  ///< formats, STL deflection, section spans (src/config/handoff_fields.hpp)
 };
 
 struct Config {
@@ -25,6 +28,7 @@ struct Config {
   std::string description;  ///< "description" (optional)
   blade::BladeDefinition blade;
   OutputOptions output;
+  mesh::MeshOptions mesh;   ///< "mesh": options of `coolinggen mesh`
   nlohmann::json source;    ///< the parsed document (for the report)
 };
 
