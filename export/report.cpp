@@ -6,15 +6,17 @@
 
 namespace cg::io {
 
-nlohmann::json report_json(const ReportContent& c) {
-  using nlohmann::json;
+nlohmann::ordered_json report_json(const ReportContent& c) {
+  using json = nlohmann::ordered_json;
   const brep::SolidCheck& k = c.check;
   json checks = json::object();
   for (const brep::Check* x : k.checks()) checks[x->name] = {{"passed", x->passed}, {"message", x->message}};
   json size = json::array();
   for (int i = 0; i < 3; ++i) size.push_back(k.bbox_max[static_cast<std::size_t>(i)] - k.bbox_min[static_cast<std::size_t>(i)]);
-  return json{
+  json out{
       {"generator", "coolinggen"},
+      {"version", c.version},
+      {"input_hash", c.input_hash},
       {"valid", k.all_passed()},
       {"units", {{"length", "mm"}, {"area", "mm^2"}, {"volume", "mm^3"}, {"angle", "deg"}, {"time", "s"}}},
       {"model", c.model},
@@ -30,7 +32,10 @@ nlohmann::json report_json(const ReportContent& c) {
       {"checks", checks},
       {"warnings", c.warnings},
       {"timings_s", c.timings_s},
+      {"outputs", c.outputs},
   };
+  for (const auto& [key, value] : c.extra.items()) out[key] = value;
+  return out;
 }
 
 void write_report(const std::filesystem::path& file, const ReportContent& content) {

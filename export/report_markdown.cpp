@@ -12,7 +12,7 @@
 namespace cg::io {
 namespace {
 
-using nlohmann::json;
+using json = nlohmann::ordered_json;
 
 std::string num(const json& v, int digits = 3) {
   if (v.is_number_integer() || v.is_number_unsigned()) return v.dump();
@@ -171,15 +171,14 @@ std::string report_markdown(const json& r) {
         o << "```\n" << rows.dump(2) << "\n```\n\n";
     }
   }
-  if (r.contains("outputs")) {
-    const json& out = r.at("outputs");
-    if (out.contains("sections") && !out.at("sections").empty()) sections(o, out.at("sections"));
+  if (r.contains("sections") && !r.at("sections").empty()) sections(o, r.at("sections"));
+  if (r.contains("mesh")) mesh_section(o, r.at("mesh"));
+  if (r.contains("outputs") || r.contains("notes")) {
     o << "## Files\n\n";
-    for (const auto& f : out.value("files", json::array())) o << "- `" << cell(f) << "`\n";
-    for (const auto& n : out.value("notes", json::array())) o << "- note: " << cell(n) << "\n";
+    for (const auto& f : r.value("outputs", json::array())) o << "- `" << cell(f) << "`\n";
+    for (const auto& n : r.value("notes", json::array())) o << "- note: " << cell(n) << "\n";
     o << "\n";
   }
-  if (r.contains("mesh")) mesh_section(o, r.at("mesh"));
   if (r.contains("timings_s") && r.at("timings_s").is_object() && !r.at("timings_s").empty()) {
     o << "## Timings\n\n";
     std::vector<std::vector<std::string>> rows;

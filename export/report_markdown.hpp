@@ -11,11 +11,12 @@
 
 namespace cg::io {
 
-/// Markdown text of a report.json document. Sections whose keys are missing are left out; unknown
+/// Markdown text of a report.json document (export/report.hpp layout plus the "sections", "notes" and
+/// "mesh" sections). Sections whose keys are missing are left out; unknown
 /// "design_checks" entries (name -> array of flat objects) become one table each.
-std::string report_markdown(const nlohmann::json& report);
+std::string report_markdown(const nlohmann::ordered_json& report);
 
 /// Writes report_markdown(report) atomically. Throws ExportError.
-void write_report_markdown(const std::filesystem::path& file, const nlohmann::json& report);
+void write_report_markdown(const std::filesystem::path& file, const nlohmann::ordered_json& report);
 
 }  // namespace cg::io

@@ -207,7 +207,7 @@ std::vector<SectionCut> cut_sections(const brep::Part& part, const std::vector<S
       for (const auto& f : g.faces) name_of.Bind(f.face, f.name);
       BRepAlgoAPI_Section sec(g.shape, tool, /*PerformNow=*/false);
       sec.ComputePCurveOn1(false);
-      sec.Approximation(true);
+      sec.Approximation(false);  // polylines are drawn anyway: the walking lines are enough and much faster
       sec.Build();
       if (!sec.IsDone() || sec.HasErrors())
         throw ExportError("section of body \"" + part[b].name + "\" at span " + std::to_string(s.span) + " failed");
@@ -265,6 +265,21 @@ std::vector<SectionCut> cut_sections(const brep::Part& part, const std::vector<S
     cuts.push_back(std::move(cut));
   }
   return cuts;
+}
+
+nlohmann::ordered_json sections_json(const std::vector<SectionCut>& cuts) {
+  using json = nlohmann::ordered_json;
+  json out = json::array();
+  for (const auto& c : cuts) {
+    json passages = json::array();
+    for (const auto& p : c.passages)
+      passages.push_back({{"name", p.name},
+                          {"area_mm2", p.area},
+                          {"wetted_perimeter_mm", p.wetted_perimeter},
+                          {"hydraulic_diameter_mm", p.hydraulic_diameter}});
+    out.push_back({{"span", c.span}, {"chord_mm", c.chord}, {"metal_area_mm2", c.metal_area}, {"passages", passages}});
+  }
+  return out;
 }
 
 }  // namespace cg::io

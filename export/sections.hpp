@@ -9,6 +9,8 @@
 // the metal. Cavities of the blade (loops directly inside its outer loop) are the coolant passages:
 // area (minus the metal of any insert inside), wetted perimeter (including the insert's loops) and
 // hydraulic diameter D_h = 4 A / P.
+#include <nlohmann/json.hpp>
+
 #include <Eigen/Core>
 #include <string>
 #include <variant>
@@ -81,5 +83,9 @@ struct SectionCut {
 /// Cuts every body; curves discretised to `deflection` mm. Throws ExportError when a section fails.
 std::vector<SectionCut> cut_sections(const brep::Part& part, const std::vector<SectionSurface>& surfaces,
                                      double deflection = 0.005);
+
+/// The section table for report.json / report.md: [{"span", "chord_mm", "metal_area_mm2", "passages":
+/// [{"name", "area_mm2", "wetted_perimeter_mm", "hydraulic_diameter_mm"}]}].
+nlohmann::ordered_json sections_json(const std::vector<SectionCut>& cuts);
 
 }  // namespace cg::io

@@ -18,6 +18,12 @@ struct VtkFiles {
   std::vector<std::filesystem::path> pieces;    ///< <stem>_<body>.vtp, in body order
 };
 
+/// One piece: the triangles of body `body` of the part as `file` (.vtp, atomically).
+void write_vtk_piece(const std::filesystem::path& file, const std::string& body_name, const PartTriangles& triangles, int body);
+
+/// The multiblock `file` (.vtm) naming the pieces `<stem>_<body>.vtp` (in its directory) of every body.
+void write_vtk_multiblock(const std::filesystem::path& file, const brep::Part& part, const std::string& stem);
+
 /// Writes the files into `dir` (each atomically; the .vtm last, so it never names a missing piece).
 /// Throws ExportError on failure.
 VtkFiles write_vtk(const std::filesystem::path& dir, const std::string& stem, const brep::Part& part,

@@ -9,18 +9,36 @@
 #include <filesystem>
 #include <string>
 
-#include "export/step_writer.hpp"
-#include "src/config/handoff_fields.hpp"
-#include "src/mesh/mesh_options.hpp"
+#include <vector>
+
 #include "src/blade/blade_surface.hpp"
 #include "src/config/config_error.hpp"
+#include "src/core/progress.hpp"
 
 namespace cg::config {
 
+/// "output": plain options; the pipeline (src/pipeline/outputs.hpp) checks the format names and writes.
 struct OutputOptions {
-  io::StepSchema step_schema = io::StepSchema::AP242;
-  std::string product_name;  ///< name of the product in the STEP file (default: the config's name)
-  HandoffOutputFields handoff;  ///< formats, STL deflection, section spans (src/config/handoff_fields.hpp)
+  /// Model files to write (report.json is always written); default all (README, Outputs).
+  std::vector<std::string> formats{"step", "iges", "brep", "stl", "vtk", "preview", "sections", "report_md"};
+  std::string step_schema = "AP242";         ///< "AP214" | "AP242"
+  std::string product_name;                  ///< name of the product in the STEP file (default: the config's name)
+  double stl_deflection = 0.01;              ///< mm, chordal deflection of STL / VTK / preview triangles
+  double stl_angular_deflection_deg = 20;    ///< deg
+  std::vector<double> section_spans{0.1, 0.3, 0.5, 0.7, 0.9};  ///< spans of sections.svg and the passage table
+};
+
+/// "mesh": options of `coolinggen mesh` (plain; the pipeline hands them to src/mesh).
+struct MeshConfig {
+  double max_size = 1.5;                ///< mm
+  double min_size = 0.05;               ///< mm
+  int curvature_elements = 16;          ///< per 2 pi on every surface
+  int feature_curvature_elements = 40;  ///< per 2 pi on the cooling-feature faces
+  bool metal = true, coolant = true;    ///< "domains"
+  bool msh = true, vtu = true;          ///< "formats"
+  bool group_by_face_name = false;      ///< "physical_groups": "face_name" (default "kind")
+  int threads = 2;
+  bool optimize = true;
 };
 
 struct Config {
@@ -28,8 +46,9 @@ struct Config {
   std::string description;  ///< "description" (optional)
   blade::BladeDefinition blade;
   OutputOptions output;
-  mesh::MeshOptions mesh;   ///< "mesh": options of `coolinggen mesh`
+  MeshConfig mesh;
   nlohmann::json source;    ///< the parsed document (for the report)
+  std::string source_file;  ///< the config file read (empty when parsed from a document or text)
 };
 
 /// Parses a document. Relative section point files are resolved against `base_dir` and read here
@@ -44,9 +63,7 @@ Config load_config_file(const std::filesystem::path& file);
 
 /// Builds the blade model from a parsed config; errors of the model are rethrown as ConfigError
 /// naming the part of the config they come from ("flow_path", "sections[i]", "blade").
-blade::BladeModel build_model(const Config& config);
-
-/// A small model description for the report: name, flow path type, section count and kinds, options.
-nlohmann::json model_summary(const Config& config, const blade::BladeModel& model);
+/// `progress` (optional) may stop it between its steps (Cancelled).
+blade::BladeModel build_model(const Config& config, ProgressSink* progress = nullptr);
 
 }  // namespace cg::config

@@ -120,8 +120,8 @@ double smallest_curvature_radius(const TopoDS_Face& face) {
 
 }  // namespace
 
-nlohmann::json MeshResult::to_json() const {
-  using nlohmann::json;
+nlohmann::ordered_json MeshResult::to_json() const {
+  using json = nlohmann::ordered_json;
   json regions_j = json::array();
   for (const auto& r : regions)
     regions_j.push_back({{"name", r.name},
@@ -135,8 +135,7 @@ nlohmann::json MeshResult::to_json() const {
                          {"brep_volume_mm3", r.brep_volume}});
   json groups = json::array();
   for (const auto& g : surfaces) groups.push_back({{"name", g.name}, {"faces", g.faces}, {"triangles", g.triangles}});
-  json files_j = json::array();
-  for (const auto& f : files) files_j.push_back(f.filename().string());
+  json files_j = files;
   json j{{"nodes", nodes},
          {"triangles", triangles},
          {"tetrahedra", tetrahedra},
@@ -163,19 +162,21 @@ nlohmann::json MeshResult::to_json() const {
 }
 
 MeshResult mesh_blade(const brep::Part& part, const TopoDS_Shape& uncooled, const std::vector<brep::NamedFace>& uncooled_faces,
-                      const std::filesystem::path& dir, const MeshOptions& o, const ProgressFn& progress) {
+                      const FileWriter& files, const MeshOptions& o, ProgressSink* progress) {
   if (part.empty()) throw MeshError("mesh: the part has no bodies");
   if (!(o.max_size > 0) || !(o.min_size > 0) || o.min_size > o.max_size)
     throw MeshError("mesh: sizes must satisfy 0 < min_size <= max_size");
   if (!o.metal && !o.coolant) throw MeshError("mesh: neither metal nor coolant selected");
   const auto t_start = Clock::now();
-  auto report = [&](const std::string& stage, double f) {
-    if (progress) progress(stage, f);
+  // Steps with their share of a typical run (for the progress bar); a stop is honoured between them.
+  auto report = [&](const std::string& step, double fraction) {
+    check_cancel(progress, "meshing, before " + step);
+    report_progress(progress, fraction, step);
   };
   MeshResult r;
 
   // Geometry: coolant, conformal compound, names.
-  report("coolant domain and conformal interfaces", -1);
+  report("coolant domain and conformal interfaces", 0.0);
   CoolantDomain coolant;
   if (o.coolant) {
     coolant = coolant_domain(part, uncooled, uncooled_faces);
@@ -276,11 +277,11 @@ MeshResult mesh_blade(const brep::Part& part, const TopoDS_Shape& uncooled, cons
   gmsh::option::setNumber("Mesh.MaxNumThreads3D", o.threads);
 
   try {
-    report("surface mesh", -1);
+    report("surface mesh", 0.25);
     auto t = Clock::now();
     gmsh::model::mesh::generate(2);
     r.seconds_surface = since(t);
-    report("volume mesh", -1);
+    report("volume mesh", 0.45);
     t = Clock::now();
     gmsh::model::mesh::generate(3);
     r.seconds_volume = since(t);
@@ -289,7 +290,7 @@ MeshResult mesh_blade(const brep::Part& part, const TopoDS_Shape& uncooled, cons
   }
 
   // Nodes and elements back, quality per region.
-  report("quality and files", -1);
+  report("quality and files", 0.9);
   MeshData data;
   {
     std::vector<std::size_t> tags;
@@ -338,14 +339,15 @@ MeshResult mesh_blade(const brep::Part& part, const TopoDS_Shape& uncooled, cons
   }
 
   if (o.write_msh) {
-    const std::filesystem::path msh = dir / "mesh.msh";
     gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
     gmsh::option::setNumber("Mesh.SaveAll", 0);
-    write_renamed(msh, [&](const std::filesystem::path& tmp) { gmsh::write(tmp.string()); });
-    r.files.push_back(msh);
+    files("mesh.msh", [&](const std::filesystem::path& target) {
+      write_renamed(target, [&](const std::filesystem::path& tmp) { gmsh::write(tmp.string()); });
+    });
+    r.files.push_back("mesh.msh");
   }
   if (o.write_vtu) {
-    const auto vtu = write_vtu_files(dir, data);
+    const auto vtu = write_vtu_files(files, data);
     r.files.insert(r.files.end(), vtu.begin(), vtu.end());
   }
   r.seconds_total = since(t_start);

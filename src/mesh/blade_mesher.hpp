@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "src/brep/named_shape.hpp"
+#include "src/core/progress.hpp"
 #include "src/mesh/coolant_domain.hpp"
 #include "src/mesh/mesh_options.hpp"
 #include "src/mesh/mesh_quality.hpp"
@@ -44,19 +45,20 @@ struct MeshResult {
   double insert_volume = 0;         ///< mm^3, bodies after the blade (inserts) standing in the cavities
   double coolant_brep_volume = 0;   ///< mm^3
   double coolant_mesh_volume = 0;   ///< mm^3, sum of the coolant tetrahedra
-  std::vector<std::filesystem::path> files;
+  std::vector<std::string> files;  ///< names written
   std::vector<std::string> notes;
   double seconds_geometry = 0, seconds_surface = 0, seconds_volume = 0, seconds_total = 0;
 
   /// For report.json: counts, quality, volumes, groups, timings.
-  nlohmann::json to_json() const;
+  nlohmann::ordered_json to_json() const;
 };
 
 /// Meshes the part's bodies (options.metal) and its coolant domain (options.coolant; `uncooled` is the
 /// blade solid before the features, its faces named in `uncooled_faces`) and writes the selected files
-/// into `dir` (which must exist): mesh.msh, mesh_<region>.vtu, mesh_surfaces.vtu. Throws MeshError when
-/// the options are out of range or a step fails (the message names the step).
+/// through `files`: mesh.msh, mesh_<region>.vtu, mesh_surfaces.vtu. `progress` (optional) sees the
+/// steps and may stop the job between them (Cancelled). Throws MeshError when the options are out of
+/// range or a step fails (the message names the step).
 MeshResult mesh_blade(const brep::Part& part, const TopoDS_Shape& uncooled, const std::vector<brep::NamedFace>& uncooled_faces,
-                      const std::filesystem::path& dir, const MeshOptions& options, const ProgressFn& progress = {});
+                      const FileWriter& files, const MeshOptions& options, ProgressSink* progress = nullptr);
 
 }  // namespace cg::mesh

@@ -29,14 +29,16 @@ struct Compact {
   }
 };
 
-void write_grid(const std::filesystem::path& file, vtkUnstructuredGrid* grid) {
-  write_renamed(file, [&](const std::filesystem::path& tmp) {
+void write_grid(const FileWriter& files, const std::string& name, vtkUnstructuredGrid* grid) {
+  files(name, [&](const std::filesystem::path& target) {
+    write_renamed(target, [&](const std::filesystem::path& tmp) {
     auto w = vtkSmartPointer<vtkXMLUnstructuredGridWriter>::New();
     w->SetFileName(tmp.string().c_str());
     w->SetInputData(grid);
     w->SetDataModeToAppended();
     w->SetCompressorTypeToZLib();
     if (w->Write() != 1) throw MeshError("cannot write " + tmp.string());
+    });
   });
 }
 
@@ -63,8 +65,12 @@ void write_renamed(const std::filesystem::path& target, const std::function<void
   }
 }
 
-std::vector<std::filesystem::path> write_vtu_files(const std::filesystem::path& dir, const MeshData& data) {
-  std::vector<std::filesystem::path> files;
+FileWriter directory_writer(const std::filesystem::path& dir) {
+  return [dir](const std::string& name, const std::function<void(const std::filesystem::path&)>& writer) { writer(dir / name); };
+}
+
+std::vector<std::string> write_vtu_files(const FileWriter& out, const MeshData& data) {
+  std::vector<std::string> files;
   for (const auto& b : data.blocks) {
     Compact c;
     auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
@@ -78,8 +84,8 @@ std::vector<std::filesystem::path> write_vtu_files(const std::filesystem::path& 
     name->SetName("region");
     name->InsertNextValue(b.name);
     grid->GetFieldData()->AddArray(name);
-    const auto file = dir / ("mesh_" + b.name + ".vtu");
-    write_grid(file, grid);
+    const std::string file = "mesh_" + b.name + ".vtu";
+    write_grid(out, file, grid);
     files.push_back(file);
   }
   Compact c;
@@ -98,9 +104,8 @@ std::vector<std::filesystem::path> write_vtu_files(const std::filesystem::path& 
   names->SetName("group_names");
   for (const auto& n : data.group_names) names->InsertNextValue(n);
   grid->GetFieldData()->AddArray(names);
-  const auto file = dir / "mesh_surfaces.vtu";
-  write_grid(file, grid);
-  files.push_back(file);
+  write_grid(out, "mesh_surfaces.vtu", grid);
+  files.push_back("mesh_surfaces.vtu");
   return files;
 }
 

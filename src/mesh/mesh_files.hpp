@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "src/mesh/mesh_options.hpp"
+
 namespace cg::mesh {
 
 struct MeshData {
@@ -32,7 +34,7 @@ struct MeshData {
 /// temporary and throws MeshError when write throws or leaves no file.
 void write_renamed(const std::filesystem::path& target, const std::function<void(const std::filesystem::path&)>& write);
 
-/// Writes mesh_<block>.vtu per block and mesh_surfaces.vtu into `dir`; returns the paths.
-std::vector<std::filesystem::path> write_vtu_files(const std::filesystem::path& dir, const MeshData& data);
+/// Writes mesh_<block>.vtu per block and mesh_surfaces.vtu through `files`; returns the names.
+std::vector<std::string> write_vtu_files(const FileWriter& files, const MeshData& data);
 
 }  // namespace cg::mesh

@@ -1,5 +1,6 @@
 #pragma once
 // Options of `coolinggen mesh` (config section "mesh", data/schema/coolinggen.schema.json).
+#include <filesystem>
 #include <functional>
 #include <string>
 
@@ -29,7 +30,10 @@ struct MeshOptions {
   bool optimize = true;           ///< gmsh's tetrahedron optimisation (Mesh.Optimize)
 };
 
-/// Progress of a long step: stage text and, when known, fraction done in [0, 1] (negative: unknown).
-using ProgressFn = std::function<void(const std::string& stage, double fraction)>;
+/// Writes one output file: `writer(target)` must create `target` (atomically); `name` is a plain file
+/// name. directory_writer(dir) writes dir / name; the pipeline passes its OutputDirectory.
+using FileWriter =
+    std::function<void(const std::string& name, const std::function<void(const std::filesystem::path& target)>& writer)>;
+FileWriter directory_writer(const std::filesystem::path& dir);
 
 }  // namespace cg::mesh

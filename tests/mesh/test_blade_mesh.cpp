@@ -23,7 +23,7 @@ namespace {
 
 void check_mesh(const test::CooledPart& p, const char* tag, const mesh::MeshOptions& o) {
   test::TempDir dir(std::string("mesh_") + tag);
-  const mesh::MeshResult r = mesh::mesh_blade(p.part, p.uncooled, p.uncooled_faces, dir.path, o);
+  const mesh::MeshResult r = mesh::mesh_blade(p.part, p.uncooled, p.uncooled_faces, mesh::directory_writer(dir.path), o);
   BOOST_TEST_MESSAGE(tag << ": " << r.to_json().dump());
   BOOST_TEST(r.inverted == 0u);
   BOOST_TEST(r.min_quality > 0.0);
@@ -77,6 +77,6 @@ BOOST_AUTO_TEST_CASE(bad_options_are_refused) {
   m.min_size = 3;
   m.max_size = 1;
   test::TempDir dir("mesh_bad");
-  BOOST_CHECK_THROW(mesh::mesh_blade(p.part, p.uncooled, {}, dir.path, m), mesh::MeshError);
+  BOOST_CHECK_THROW(mesh::mesh_blade(p.part, p.uncooled, {}, mesh::directory_writer(dir.path), m), mesh::MeshError);
   BOOST_TEST(dir.entries().empty());
 }
