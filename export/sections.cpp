@@ -207,7 +207,7 @@ std::vector<SectionCut> cut_sections(const brep::Part& part, const std::vector<S
       for (const auto& f : g.faces) name_of.Bind(f.face, f.name);
       BRepAlgoAPI_Section sec(g.shape, tool, /*PerformNow=*/false);
       sec.ComputePCurveOn1(false);
-      sec.Approximation(false);  // polylines are drawn anyway: the walking lines are enough and much faster
+      sec.Approximation(true);  // without it the walking lines of the revolved cuts leave gaps between edges
       sec.Build();
       if (!sec.IsDone() || sec.HasErrors())
         throw ExportError("section of body \"" + part[b].name + "\" at span " + std::to_string(s.span) + " failed");
