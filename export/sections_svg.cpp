@@ -14,7 +14,7 @@
 namespace cg::io {
 namespace {
 
-constexpr double kPanelW = 560, kPanelH = 420, kMargin = 30, kHeader = 70, kTableLine = 16;
+constexpr double kMargin = 30, kHeader = 70, kTableLine = 16;
 
 std::string fmt(double v, int digits = 2) {
   char b[64];
@@ -59,10 +59,14 @@ std::string sections_svg(const std::vector<SectionCut>& cuts, const std::string&
     max_h = std::max(max_h, boxes.back().size().y());
     max_passages = std::max(max_passages, static_cast<int>(c.passages.size()));
   }
-  const double table_h = kTableLine * (max_passages + 2);
-  const double plot_h = kPanelH - kHeader - table_h;
+  // Wide sections (a rotor blade seen blade-to-blade) in two wide panels per row, tall ones (a vane with
+  // a large stagger) in three tall panels per row, so the drawing fills its panel either way.
+  const bool tall = max_h > max_w;
+  const double kPanelW = tall ? 420 : 560, kPanelH = tall ? 600 : 420;
+  const double table_h = max_passages > 0 ? kTableLine * (max_passages + 2) : 10;
+  const double plot_h = kPanelH - kHeader - table_h - 24;  // 24 px for the scale bar
   const double scale = std::min((kPanelW - 2 * kMargin) / max_w, (plot_h - 10) / max_h);  // px per mm
-  const int columns = cuts.size() <= 1 ? 1 : 2;
+  const int columns = static_cast<int>(std::min<std::size_t>(cuts.size(), tall ? 3 : 2));
   const int rows = static_cast<int>((cuts.size() + columns - 1) / columns);
   const double legend_h = 60;
   const double width = columns * kPanelW, height = legend_h + rows * kPanelH;
@@ -93,7 +97,7 @@ std::string sections_svg(const std::vector<SectionCut>& cuts, const std::string&
     s << "<text x=\"" << fmt(ox + 16) << "\" y=\"" << fmt(oy + 26) << "\" font-size=\"15\" font-weight=\"bold\">span "
       << fmt(c.span, 2) << "</text>\n";
     s << "<text x=\"" << fmt(ox + 16) << "\" y=\"" << fmt(oy + 46) << "\" font-size=\"12\">chord " << fmt(c.chord)
-      << " mm, metal area " << fmt(c.metal_area) << " mm², " << c.passages.size() << " coolant passage(s)</text>\n";
+      << " mm, metal " << fmt(c.metal_area) << " mm², " << c.passages.size() << " passage(s)</text>\n";
     if (c.curves.empty()) {
       s << "<text x=\"" << fmt(ox + 16) << "\" y=\"" << fmt(oy + 90) << "\" font-size=\"13\">no section</text>\n</g>\n";
       continue;
@@ -139,7 +143,7 @@ std::string sections_svg(const std::vector<SectionCut>& cuts, const std::string&
         s << "<text x=\"" << fmt(ox + col[k]) << "\" y=\"" << fmt(y) << "\" font-size=\"12\""
           << (bold ? " font-weight=\"bold\"" : "") << ">" << cells[k] << "</text>\n";
     };
-    row(ty, {"passage", "area mm²", "D_h mm", "wall"}, true);
+    if (!c.passages.empty()) row(ty, {"passage", "area mm²", "D_h mm", "wall"}, true);
     for (std::size_t k = 0; k < c.passages.size(); ++k) {
       const Passage& p = c.passages[k];
       s << "<text x=\"" << fmt(X(p.centroid)) << "\" y=\"" << fmt(Y(p.centroid) + 4) << "\" font-size=\"11\" text-anchor=\"middle\" "
@@ -149,7 +153,7 @@ std::string sections_svg(const std::vector<SectionCut>& cuts, const std::string&
     }
     // Scale bar.
     const double bar = scale_bar_mm(b.size().x());
-    const double bx = ox + kPanelW - kMargin - bar * scale, by = oy + kHeader - 8;
+    const double bx = ox + kPanelW - kMargin - bar * scale, by = oy + kPanelH - 14;  // bottom right
     s << "<line x1=\"" << fmt(bx) << "\" y1=\"" << fmt(by) << "\" x2=\"" << fmt(bx + bar * scale) << "\" y2=\"" << fmt(by)
       << "\" stroke=\"#000000\" stroke-width=\"2\"/><text x=\"" << fmt(bx + bar * scale / 2) << "\" y=\"" << fmt(by - 5)
       << "\" font-size=\"11\" text-anchor=\"middle\">" << fmt(bar, bar < 1 ? 1 : 0) << " mm</text>\n";

@@ -92,6 +92,22 @@ CoolantDomain coolant_domain(const brep::Part& part, const TopoDS_Shape& uncoole
 }
 
 ConformalDomains conformal_domains(const brep::Part& part, const CoolantDomain& coolant) {
+  if (part.size() + (coolant.shape.IsNull() ? 0 : 1) == 1) {
+    // One region (an uncooled blade, or the coolant alone): nothing to share, no fuse needed.
+    ConformalDomains d;
+    BRep_Builder bb;
+    bb.MakeCompound(d.compound);
+    const bool fluid = part.empty();
+    const TopoDS_Shape& s = fluid ? coolant.shape : part.front().geometry.shape;
+    Region r{fluid ? "coolant" : part.front().name, fluid, {}};
+    for (TopExp_Explorer e(s, TopAbs_SOLID); e.More(); e.Next()) {
+      r.solids.push_back(e.Current());
+      bb.Add(d.compound, e.Current());
+    }
+    d.regions.push_back(std::move(r));
+    d.faces = fluid ? coolant.faces : part.front().geometry.faces;
+    return d;
+  }
   BOPAlgo_Builder gf;
   for (const brep::NamedBody& b : part) gf.AddArgument(b.geometry.shape);
   if (!coolant.shape.IsNull()) gf.AddArgument(coolant.shape);
