@@ -170,10 +170,11 @@ inline CooledPart make_cooled_part(const config::Config& c, const CooledPartOpti
   cp.part.push_back({"blade", tools.empty() ? blade : cut_named(blade, tools)});
   cp.removed_volume = cp.uncooled_volume - volume_of(cp.part[0].geometry.shape);
   if (o.insert && o.chambers > 0) {
-    // A tube in the last chamber, clear of its wall, from 10 % to 70 % of the chamber's length.
+    // A tube in the last chamber, clear of its wall, from 25 % to 70 % of the chamber's length (inside
+    // the blade: the chamber starts below the hub).
     const auto& [a, b] = axes.back();
     const double r = radii.back();
-    const Eigen::Vector3d p0 = a + 0.1 * (b - a), p1 = a + 0.7 * (b - a);
+    const Eigen::Vector3d p0 = a + 0.25 * (b - a), p1 = a + 0.7 * (b - a);
     const brep::NamedShape outer = named_cylinder(p0, p1, 0.7 * r, "insert_1", "insert_1");
     const brep::NamedShape inner = named_cylinder(p0 - 0.1 * (b - a), p1 + 0.1 * (b - a), 0.5 * r, "insert_1", "insert_1");
     cp.part.push_back({"insert_1", cut_named(outer, {inner})});
