@@ -4,6 +4,7 @@
 #include "src/cli/commands.hpp"
 #include "src/cli/console_progress.hpp"
 #include "src/cli/exit_codes.hpp"
+#include "src/cli/watchdog.hpp"
 #include "src/pipeline/build.hpp"
 #include "src/pipeline/outputs.hpp"
 #include "src/pipeline/stage_runner.hpp"
@@ -38,10 +39,14 @@ void print_summary(const config::Config& c, const pipeline::BuildResult& r, cons
 int run_build(const JobOptions& o) {
   ConsoleProgress console(o.show_progress());
   pipeline::TimeLimit limit(&console, o.timeout_s);
+  Watchdog watchdog(limit, console, watchdog_grace(o.timeout_s), o.output.string());
   bool writing = false;
   try {
     const config::Config c = load_config_argument(o.config);
     const pipeline::BuildResult r = pipeline::run_build(c, {}, &limit);
+    // The directory is touched only from here on (write_outputs polls before each file).
+    if (limit.stop_requested()) throw Cancelled("writing outputs", "before");
+    watchdog.set_writing();
     writing = true;
     const pipeline::WrittenOutputs w = pipeline::write_outputs(c, r, o.output, &limit);
     console.interrupt_line();

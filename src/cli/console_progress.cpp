@@ -46,9 +46,10 @@ ConsoleProgress::~ConsoleProgress() {
 
 bool ConsoleProgress::stdout_is_terminal() { return ::isatty(STDOUT_FILENO) == 1; }
 
-void ConsoleProgress::stage_started(const std::string&, const std::string& title) {
+void ConsoleProgress::stage_started(const std::string& stage, const std::string& title) {
   std::lock_guard<std::mutex> lock(mutex_);
   in_stage_ = true;
+  stage_ = stage;
   title_ = title;
   step_.clear();
   fraction_ = -1;
@@ -80,6 +81,12 @@ void ConsoleProgress::interrupt_line() {
     std::fflush(stdout);
   }
   in_stage_ = false;
+}
+
+std::string ConsoleProgress::activity() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (!in_stage_) return "";
+  return "stage '" + stage_ + "'" + (step_.empty() ? "" : ", at " + step_);
 }
 
 // One line per stage: "  solid (blade surface trimmed ...)  3 s  general fuse 45%", redrawn with '\r'

@@ -34,6 +34,8 @@ class ConsoleProgress : public ProgressSink {
 
   /// Ends a stage line that did not finish (error, stop), so later output starts on a new line.
   void interrupt_line();
+  /// What runs now: "stage 'verify', at volume and area" ("" between stages). Thread-safe.
+  std::string activity();
 
  private:
   void redraw_locked(bool final_line, double seconds);
@@ -45,7 +47,7 @@ class ConsoleProgress : public ProgressSink {
   std::thread ticker_;
   bool stop_ticker_ = false;
   bool in_stage_ = false;
-  std::string title_, step_;
+  std::string stage_, title_, step_;
   double fraction_ = -1;  // < 0: not reported
   std::chrono::steady_clock::time_point stage_start_;
   std::size_t last_width_ = 0;
