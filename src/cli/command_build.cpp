@@ -7,7 +7,7 @@
 #include "src/cli/watchdog.hpp"
 #include "src/pipeline/build.hpp"
 #include "src/pipeline/outputs.hpp"
-#include "src/pipeline/stage_runner.hpp"
+#include "src/pipeline/time_limit.hpp"
 
 namespace cg::cli {
 namespace {

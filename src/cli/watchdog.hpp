@@ -11,7 +11,7 @@
 #include <thread>
 
 #include "src/cli/console_progress.hpp"
-#include "src/pipeline/stage_runner.hpp"
+#include "src/pipeline/time_limit.hpp"
 
 namespace cg::cli {
 
