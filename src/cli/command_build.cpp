@@ -1,6 +1,8 @@
 // coolinggen build [CONFIG] -o DIR [-q] [--timeout S]: the pipeline's run_build + write_outputs, printed.
 #include <cstdio>
+#include <filesystem>
 
+#include "export/atomic_file.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/console_progress.hpp"
 #include "src/cli/exit_codes.hpp"
@@ -42,6 +44,9 @@ int run_build(const JobOptions& o) {
   Watchdog watchdog(limit, console, watchdog_grace(o.timeout_s), o.output.string());
   bool writing = false;
   try {
+    std::error_code ec;  // fail now, not after a build of minutes
+    if (std::filesystem::exists(o.output, ec) && !std::filesystem::is_directory(o.output, ec))
+      throw io::ExportError("output directory " + o.output.string() + " exists and is not a directory");
     const config::Config c = load_config_argument(o.config);
     const pipeline::BuildResult r = pipeline::run_build(c, {}, &limit);
     // The directory is touched only from here on (write_outputs polls before each file).
