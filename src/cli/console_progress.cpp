@@ -12,6 +12,14 @@ std::atomic<bool> g_interrupted{false};
 
 extern "C" void on_sigint(int) { g_interrupted = true; }
 
+std::string fixed(double x, int decimals) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, x);
+  return buf;
+}
+
+}  // namespace
+
 // First SIGINT: flag only (SA_RESETHAND restores the default, so a second one terminates).
 void install_interrupt_handler() {
   struct sigaction sa {};
@@ -21,16 +29,7 @@ void install_interrupt_handler() {
   sigaction(SIGINT, &sa, nullptr);
 }
 
-std::string fixed(double x, int decimals) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, x);
-  return buf;
-}
-
-}  // namespace
-
 ConsoleProgress::ConsoleProgress(bool enabled) : enabled_(enabled) {
-  install_interrupt_handler();
   if (enabled_) ticker_ = std::thread([this] { ticker(); });
 }
 

@@ -76,6 +76,23 @@ BOOST_AUTO_TEST_CASE(timeout_stops_cleanly) {
   BOOST_TEST(bad.exit_code == 1, bad.err);
 }
 
+// Ctrl-C (SIGINT) stops the same way: exit 6, the reason, nothing written.
+BOOST_AUTO_TEST_CASE(interrupt_stops_cleanly) {
+  TempDir dir("cli_sigint");
+  const fs::path out = dir.path / "out";
+  const std::string cmd = "'" + test::kCliBinary.string() + "' build -q -o " + q(out) + " 2> " + q(dir.path / "err.txt") +
+                          " & pid=$!; "
+                          // Wait until the handler is installed (SIGINT, bit 1 of SigCgt), as a background
+                          // job of a script ignores SIGINT until then.
+                          "while [ -e /proc/$pid ] && ! awk '/^SigCgt/ {exit !index(\"2367abef\", substr($2, 16, 1))}' /proc/$pid/status; "
+                          "do sleep 0.01; done; kill -INT $pid; wait $pid";
+  const int status = std::system(cmd.c_str());  // sh -c
+  const std::string err = read_text(dir.path / "err.txt");
+  BOOST_TEST(WEXITSTATUS(status) == 6, err);
+  BOOST_TEST(err.rfind("coolinggen: error: interrupted (Ctrl-C): stopped ", 0) == 0u, err);
+  BOOST_TEST(!fs::exists(out));
+}
+
 // The stop is bounded whatever the build's speed: within the limit, the grace and process overhead.
 // Either the build finished first (exit 0, under the limit) or it stopped naming a stage (exit 6) and
 // wrote nothing.
