@@ -53,8 +53,11 @@ Perturbed perturb_tool(const brep::NamedShape& tool, const std::optional<gp_Ax1>
   } else {
     gp_Vec d(1, 1, 1);
     if (axis) {
-      const gp_Dir a = axis->Direction();
-      d = gp_Vec(a).Crossed(std::abs(a.X()) < 0.9 ? gp_Vec(1, 0, 0) : gp_Vec(0, 1, 0));
+      // Across the axis, diagonal to two perpendicular directions, so a tool tangent to a plane
+      // that contains the axis direction leaves the tangency.
+      const gp_Vec a(axis->Direction());
+      const gp_Vec p = a.Crossed(std::abs(a.X()) < 0.9 ? gp_Vec(1, 0, 0) : gp_Vec(0, 1, 0)).Normalized();
+      d = p + a.Crossed(p);
     }
     const double amount = shift * std::max(1, attempt / 2);
     t.SetTranslation(d.Normalized() * amount);

@@ -22,7 +22,8 @@ struct Perturbed {
 
 /// Retry number `attempt` (1, 2, ...): odd attempts rotate about `axis` when there is one (by 0.37 rad,
 /// then 1.2 rad more, away from the seam and from quarter turns), the others shift by
-/// attempt/2 * `shift` mm across the axis (or along (1, 1, 1) without one). Names follow the faces.
+/// attempt/2 * `shift` mm across the axis, diagonally (or along (1, 1, 1) without an axis). Names
+/// follow the faces (the faces are moved, not rebuilt).
 Perturbed perturb_tool(const brep::NamedShape& tool, const std::optional<gp_Ax1>& axis, int attempt, double shift);
 
 }  // namespace cg::features

@@ -29,7 +29,9 @@
 namespace cg::features {
 namespace {
 
-constexpr double kFluxAccuracy = 1e-10;
+// Relative accuracy of the face integrals: the volume itself (far below the 1e-6 tolerance), and the
+// closure check, which only has to see gaps the size of a face.
+constexpr double kFluxAccuracy = 1e-9, kClosureAccuracy = 1e-6;
 
 struct OrientedPiece {
   TopoDS_Face face;  ///< oriented so its normal points out of the solid it bounds
@@ -80,7 +82,7 @@ gp_Pnt centre_of(const Bnd_Box& b) {
 
 }  // namespace
 
-double face_flux(const TopoDS_Shape& face, const gp_Pnt& c) {
+double face_flux(const TopoDS_Shape& face, const gp_Pnt& c, double accuracy) {
   // BRepGProp::VolumeProperties cannot be used on a single face: it integrates about the face's own
   // vertex barycentre. BRepGProp_Vinert takes the reference point (as BRepGProp does per face).
   const TopoDS_Face& f = TopoDS::Face(face);
@@ -89,10 +91,10 @@ double face_flux(const TopoDS_Shape& face, const gp_Pnt& c) {
   g.SetLocation(c);
   if (f.NbChildren() == 0) {
     BRepGProp_Domain none;
-    g.Perform(bf, none, kFluxAccuracy);
+    g.Perform(bf, none, accuracy);
   } else {
     BRepGProp_Domain bd(f);
-    g.Perform(bf, bd, kFluxAccuracy);
+    g.Perform(bf, bd, accuracy);
   }
   return g.Mass();
 }
@@ -111,6 +113,13 @@ VolumeMeasure measure_tool_volumes(const BooleanRun& run, const TopoDS_Shape& pa
   for (TopExp_Explorer e(run.result, TopAbs_FACE); e.More(); e.Next())
     as_in_result[static_cast<std::size_t>(result_faces.FindIndex(e.Current()) - 1)] = TopoDS::Face(e.Current());
 
+  // Pieces of the part's faces. A piece shared with a tool face (coincident faces) is the part's: if
+  // it is dropped it bounds the tool's region as a part piece; if it is kept the tool only touched
+  // the part there from outside and it bounds nothing of the tool's region.
+  TopTools_IndexedMapOfShape part_pieces;
+  for (TopExp_Explorer e(part, TopAbs_FACE); e.More(); e.Next())
+    for (const TopoDS_Shape& piece : pieces_of(run, e.Current())) part_pieces.Add(piece);
+
   // Tool pieces kept in the result, as oriented there.
   std::vector<Bnd_Box> boxes(n);
   for (std::size_t t = 0; t < n; ++t) {
@@ -119,16 +128,19 @@ VolumeMeasure measure_tool_volumes(const BooleanRun& run, const TopoDS_Shape& pa
     for (TopExp_Explorer e(tools[t], TopAbs_FACE); e.More(); e.Next())
       for (const TopoDS_Shape& piece : pieces_of(run, e.Current())) {
         const int i = result_faces.FindIndex(piece);
-        if (i > 0 && seen.Add(piece)) pieces[t].push_back({as_in_result[static_cast<std::size_t>(i - 1)], tool_sign});
+        if (i > 0 && !part_pieces.Contains(piece) && seen.Add(piece))
+          pieces[t].push_back({as_in_result[static_cast<std::size_t>(i - 1)], tool_sign});
       }
   }
 
   // Dropped part pieces, oriented as in the part, then located in a tool.
   std::vector<OrientedPiece> dropped;
+  TopTools_IndexedMapOfShape dropped_seen;
   for (TopExp_Explorer e(part, TopAbs_FACE); e.More(); e.Next()) {
     const TopoDS_Face& original = TopoDS::Face(e.Current());
     for (const TopoDS_Shape& piece : pieces_of(run, original))
-      if (!result_faces.Contains(piece)) dropped.push_back({orient_like(TopoDS::Face(piece), original), part_sign});
+      if (!result_faces.Contains(piece) && dropped_seen.Add(piece))
+        dropped.push_back({orient_like(TopoDS::Face(piece), original), part_sign});
   }
   std::vector<int> owner(dropped.size(), -1), owners(dropped.size(), 0);
   OSD_Parallel::For(0, static_cast<int>(dropped.size()), [&](int k) {
@@ -171,13 +183,28 @@ VolumeMeasure measure_tool_volumes(const BooleanRun& run, const TopoDS_Shape& pa
     const gp_Pnt c2 = c1.Translated(gp_Vec(0.61, 0.70, 0.37).Normalized() * size);
     ToolVolume& tv = m.tools[static_cast<std::size_t>(t)];
     double v1 = 0, v2 = 0;
+    TopTools_IndexedMapOfShape edges;
     for (const OrientedPiece& p : pieces[static_cast<std::size_t>(t)]) {
-      v1 += p.sign * face_flux(p.face, c1);
-      v2 += p.sign * face_flux(p.face, c2);
+      v1 += p.sign * face_flux(p.face, c1, kFluxAccuracy);
+      v2 += p.sign * face_flux(p.face, c2, kClosureAccuracy);
       if (p.sign == tool_sign) ++tv.tool_pieces;
+      TopExp::MapShapes(p.face, TopAbs_EDGE, edges);
     }
     tv.volume = v1;
     tv.closure = std::abs(v1 - v2);
+    double gap_area = 0;
+    for (int k = 1; k <= edges.Extent(); ++k) {
+      const TopoDS_Edge& e = TopoDS::Edge(edges(k));
+      if (BRep_Tool::Degenerated(e)) continue;
+      GProp_GProps lp;
+      BRepGProp::LinearProperties(e, lp);
+      gap_area += 2 * BRep_Tool::Tolerance(e) * lp.Mass();
+    }
+    double lever = 0, x[6];
+    b.Get(x[0], x[1], x[2], x[3], x[4], x[5]);
+    for (int k = 0; k < 8; ++k)
+      lever = std::max(lever, c1.Distance(gp_Pnt(x[(k & 1) ? 3 : 0], x[(k & 2) ? 4 : 1], x[(k & 4) ? 5 : 2])));
+    tv.uncertainty = lever * gap_area / 3;
   }, !parallel);
   return m;
 }

@@ -49,7 +49,7 @@ struct Unit {
   double expected = std::numeric_limits<double>::quiet_NaN();
   std::string expected_source;
   // Outcome.
-  double measured = 0, closure = 0;
+  double measured = 0, closure = 0, uncertainty = 0;
   int retries = 0;
   std::string perturbation;
   bool passed = false;
@@ -104,9 +104,10 @@ class Engine {
     return s;
   }
 
-  bool volume_ok(double measured, double expected, double closure) const {
-    const double tol = opt_.volume_rel_tolerance * std::abs(expected) + opt_.volume_abs_tolerance;
-    return std::abs(measured - expected) <= tol && closure <= tol;
+  // The B-rep defines each volume only to within its edge tolerances (ToolVolume::uncertainty).
+  bool volume_ok(double measured, double expected, const ToolVolume& tv) const {
+    const double tol = opt_.volume_rel_tolerance * std::abs(expected) + opt_.volume_abs_tolerance + tv.uncertainty;
+    return std::abs(measured - expected) <= tol && tv.closure <= tol;
   }
 
   // `shapes[k]` is the (possibly perturbed) shape of unit ids[k]; `expected` from units unless given.
@@ -150,7 +151,7 @@ class Engine {
     a.volumes = vm.tools;
     for (std::size_t k = 0; k < ids.size(); ++k) {
       const double e = expected ? (*expected)[k] : units[static_cast<std::size_t>(ids[k])].expected;
-      if (!volume_ok(vm.tools[k].volume, e, vm.tools[k].closure)) a.suspects.push_back(ids[k]);
+      if (!volume_ok(vm.tools[k].volume, e, vm.tools[k])) a.suspects.push_back(ids[k]);
     }
     if (!a.ok() || !opt_.verify_result) return a;
     t = Clock::now();
@@ -170,6 +171,7 @@ class Engine {
       Unit& u = units[static_cast<std::size_t>(ids[k])];
       u.measured = a.volumes[k].volume;
       u.closure = a.volumes[k].closure;
+      u.uncertainty = a.volumes[k].uncertainty;
       u.passed = true;
     }
     if (a.verified) report_.check = a.check;
@@ -182,7 +184,7 @@ class Engine {
       const Unit& u = units[static_cast<std::size_t>(id)];
       const auto k = static_cast<std::size_t>(std::find(ids.begin(), ids.end(), id) - ids.begin());
       what += (what.empty() ? "" : "; ") + u.label + ": measured " + fmt(a.volumes[k].volume) + " mm^3, expected " +
-              fmt(u.expected) + " mm^3 (closure " + fmt(a.volumes[k].closure) + ")";
+              fmt(u.expected) + " mm^3 (closure " + fmt(a.volumes[k].closure) + ", B-rep uncertainty " + fmt(a.volumes[k].uncertainty) + ")";
     }
     report_.warnings.push_back("boolean of " + std::to_string(ids.size()) + " tool(s) rejected: " + what);
   }
@@ -374,6 +376,7 @@ brep::NamedShape BooleanStep::apply(const brep::NamedShape& part) {
       tr.expected_volume = u.expected;
       tr.measured_volume = u.measured;
       tr.closure = u.closure;
+      tr.uncertainty = u.uncertainty;
       tr.expected_source = u.expected_source;
       tr.cluster = cluster_of[static_cast<std::size_t>(m)];
       tr.retries = u.retries;

@@ -53,7 +53,8 @@ struct FeatureTool {
 };
 
 struct BooleanOptions {
-  /// Per-tool |measured - expected| <= volume_rel_tolerance * expected + volume_abs_tolerance.
+  /// Per-tool |measured - expected| <= volume_rel_tolerance * expected + volume_abs_tolerance
+  /// + the uncertainty the result's edge tolerances leave in the measured volume (ToolReport).
   double volume_rel_tolerance = 1e-6;
   double volume_abs_tolerance = 1e-6;  ///< mm^3
   int expected_solids = 1;             ///< solids the result must have
@@ -78,6 +79,9 @@ struct ToolReport {
   double expected_volume = 0;  ///< mm^3 (of the fused cluster when `cluster` >= 0)
   double measured_volume = 0;  ///< mm^3, measured on the result
   double closure = 0;          ///< mm^3, |V(c1) - V(c2)| of the measurement (0 for a closed boundary)
+  /// mm^3, how far the result's edge tolerances leave the measured volume undefined (lever / 3 times
+  /// 2 tol x length summed over the edges of the tool's pieces); added to the volume tolerance.
+  double uncertainty = 0;
   std::string expected_source; ///< "given" or "occt" (Common / Cut with the part before the step)
   int cluster = -1;            ///< index of the fused cluster of overlapping tools, -1: none
   int retries = 0;

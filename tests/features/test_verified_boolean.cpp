@@ -180,3 +180,42 @@ BOOST_AUTO_TEST_CASE(bad_input) {
   o.expected_solids = 0;
   BOOST_CHECK_THROW(BooleanStep(BooleanOperation::Cut, o), InvalidGeometry);
 }
+
+// A tool internally tangent to a face of the part (a cylinder touching the block's side along a
+// line): OCCT returns no error or warning, but the shell is not manifold along the touching line
+// (oriented_shells / closed_mesh fail). The step rejects it, rotates the tool (same tangency, still
+// wrong), then shifts it by 0.01 mm across its axis (off the tangency) and accepts that, with the
+// expectation moved by the volume change OCCT measures for the shift.
+BOOST_AUTO_TEST_CASE(perturbed_retry_cures_a_tangent_tool) {
+  const brep::NamedShape block = test::named_block(20, 20, 10);
+  BooleanStep step(BooleanOperation::Cut);
+  step.add(cylinder_tool("hole_tangent", gp_Pnt(2, 10, -1), gp::DZ(), 2, 12, kPi * 4 * 10));
+  step.add(cylinder_tool("hole_2", gp_Pnt(12, 10, -1), gp::DZ(), 1, 12, kPi * 10));
+  const brep::NamedShape result = step.apply(block);
+  const BooleanStepReport& rep = step.report();
+  BOOST_TEST(rep.check.all_passed(), rep.check.failed_names());
+  BOOST_TEST(rep.tools[0].retries == 2);
+  BOOST_TEST(rep.tools[0].perturbation == "shifted 0.010 mm");
+  BOOST_TEST(rep.tools[1].retries == 0);
+  // The shift (0.01 mm along (-1, 1, 0) / sqrt 2) moved the cylinder 0.01 / sqrt 2 mm out through the
+  // side x = 0: the circular segment of that height is no longer removed.
+  const double r = 2, h = 0.01 / std::sqrt(2.0);
+  const double segment = r * r * std::acos((r - h) / r) - (r - h) * std::sqrt(2 * r * h - h * h);
+  BOOST_TEST(rel(rep.tools[0].measured_volume, (kPi * r * r - segment) * 10) < 1e-6);
+  BOOST_TEST(rel(rep.tools[0].expected_volume, (kPi * r * r - segment) * 10) < 1e-6);
+  BOOST_TEST(rep.boolean_runs >= 4);  // all, the tangent one alone, two retries (+ the other alone)
+  BOOST_TEST(brep::count_face_names(result).at("hole_tangent") >= 1);
+}
+
+// A cylinder whose seam lies exactly in a face of the part (the block's side contains the axis) is
+// cut correctly at the first attempt: half the cylinder is removed.
+BOOST_AUTO_TEST_CASE(seam_in_a_face_of_the_part) {
+  const brep::NamedShape block = test::named_block(20, 20, 10);
+  BooleanStep step(BooleanOperation::Cut);
+  FeatureTool t = cylinder_tool("half_hole", gp_Pnt(10, 0, -1), gp::DZ(), 3, 12, kPi * 9 / 2 * 10);
+  t.shape = test::named_all(BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(10, 0, -1), gp::DZ(), gp::DX()), 3, 12).Shape(), "half_hole");
+  step.add(t);
+  step.apply(block);
+  BOOST_TEST(step.report().boolean_runs == 1);
+  BOOST_TEST(rel(step.report().tools[0].measured_volume, kPi * 9 / 2 * 10) < 1e-6);
+}
