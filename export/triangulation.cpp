@@ -1,10 +1,15 @@
 #include "export/triangulation.hpp"
 
+#include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_Copy.hxx>
+#include <Bnd_Box.hxx>
 #include <BRepMesh_IncrementalMesh.hxx>
 #include <BRep_Tool.hxx>
 #include <Poly_Triangulation.hxx>
 #include <TopoDS.hxx>
+
+#include <algorithm>
+#include <cmath>
 
 #include "export/atomic_file.hpp"
 
@@ -15,11 +20,17 @@ PartTriangles triangulate_part(const brep::Part& part, const TriangulationOption
     throw ExportError("triangulation deflections must be > 0");
   PartTriangles out;
   out.table = feature_table(part);
+  // Floor of the linear deflection relative to the part's size: an absolute 0.01 mm on a 100 m vane
+  // would ask BRepMesh for billions of triangles (a file nobody can use); 2e-5 of the diagonal keeps
+  // the configured value for blades up to 500 mm.
+  Bnd_Box box;
+  for (const brep::NamedBody& b : part) BRepBndLib::Add(b.geometry.shape, box);
+  const double deflection = std::max(options.linear_deflection, box.IsVoid() ? 0.0 : 2e-5 * std::sqrt(box.SquareExtent()));
   for (std::size_t b = 0; b < part.size(); ++b) {
     const brep::NamedShape& g = part[b].geometry;
     // Mesh a copy: the part is shared with other exporters and must not keep this mesh.
     BRepBuilderAPI_Copy copier(g.shape, /*copyGeom=*/false, /*copyMesh=*/false);
-    BRepMesh_IncrementalMesh(copier.Shape(), options.linear_deflection, false, options.angular_deflection, true);
+    BRepMesh_IncrementalMesh(copier.Shape(), deflection, false, options.angular_deflection, true);
     for (std::size_t fi = 0; fi < g.faces.size(); ++fi) {
       const TopoDS_Face face = TopoDS::Face(copier.ModifiedShape(g.faces[fi].face));
       TopLoc_Location loc;

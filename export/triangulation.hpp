@@ -22,7 +22,7 @@ struct PartTriangles {
 };
 
 struct TriangulationOptions {
-  double linear_deflection = 0.01;   ///< mm, > 0
+  double linear_deflection = 0.01;   ///< mm, > 0; at least 2e-5 of the part's diagonal is used
   double angular_deflection = 0.35;  ///< rad, > 0
 };
 
