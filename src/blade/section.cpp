@@ -7,6 +7,7 @@
 #include <string>
 
 #include "src/analyze/arc_length.hpp"
+#include "src/blade/chordwise.hpp"
 #include "src/blade/curve_integral.hpp"
 #include "src/blade/leading_edge.hpp"
 #include "src/blade/periodic_seam.hpp"
@@ -16,32 +17,6 @@
 
 namespace cg::blade {
 namespace {
-
-double suction_end(const SectionProfile& s) {
-  double te = s.te_param;
-  while (te <= s.le_param) te += s.curve.period();
-  return te;
-}
-
-// Arc length along the closed curve continued across the seam: the analyze table covers one period
-// [first, last]; a parameter k periods further adds k perimeters.
-class WrappedArcLength {
- public:
-  explicit WrappedArcLength(const BSplineCurve<2>& c) : table_(c), first_(c.first_param()), period_(c.period()) {}
-  double perimeter() const { return table_.total(); }
-  double length_to(double u) const {
-    const double k = std::floor((u - first_) / period_);
-    return table_.length_to(std::clamp(u - k * period_, first_, first_ + period_)) + k * table_.total();
-  }
-  double param_at(double s) const {
-    const double k = std::floor(s / table_.total());
-    return table_.param_at(std::clamp(s - k * table_.total(), 0.0, table_.total())) + k * period_;
-  }
-
- private:
-  ArcLength<2> table_;  // refers to the curve, which outlives this local helper
-  double first_, period_;
-};
 
 void require_simple_polygon(const std::vector<Eigen::Vector2d>& pts, const std::string& what) {
   int a = 0, b = 0;
@@ -66,40 +41,24 @@ SectionProfile make_profile(const BSplineCurve<2>& curve, double le, double te) 
 
 }  // namespace
 
-double SectionProfile::suction_length() const {
-  const WrappedArcLength L(curve);
-  return L.length_to(suction_end(*this)) - L.length_to(le_param);
-}
+double SectionProfile::suction_length() const { return ChordwiseMap<2>(curve, le_param, te_param).suction_length(); }
 
-double SectionProfile::pressure_length() const {
-  const WrappedArcLength L(curve);
-  return L.perimeter() - (L.length_to(suction_end(*this)) - L.length_to(le_param));
-}
+double SectionProfile::pressure_length() const { return ChordwiseMap<2>(curve, le_param, te_param).pressure_length(); }
 
 std::vector<double> SectionProfile::params_at_chordwise(const std::vector<double>& c) const {
-  const double te = suction_end(*this);
-  const WrappedArcLength L(curve);
-  const double at_le = L.length_to(le_param), suction = L.length_to(te) - at_le;
-  const double pressure = L.perimeter() - suction;
+  const ChordwiseMap<2> map(curve, le_param, te_param);
   std::vector<double> out(c.size());
-  for (std::size_t k = 0; k < c.size(); ++k) {
-    const double ck = c[k];
-    require(ck >= -1 && ck <= 1, "chordwise coordinate " + std::to_string(ck) + " is outside [-1, 1]");
-    if (ck == 0)
-      out[k] = le_param;
-    else if (ck == 1 || ck == -1)
-      out[k] = te;  // exactly the TE, not its arc-length image
-    else if (ck > 0)
-      out[k] = L.param_at(at_le + ck * suction);
-    else
-      out[k] = L.param_at(at_le + suction + (1 + ck) * pressure);
-  }
+  for (std::size_t k = 0; k < c.size(); ++k) out[k] = map.param_at(c[k]);
   return out;
 }
 
-double SectionProfile::param_at_chordwise(double c) const { return params_at_chordwise({c}).front(); }
+double SectionProfile::param_at_chordwise(double c) const { return ChordwiseMap<2>(curve, le_param, te_param).param_at(c); }
 
-SectionProperties section_properties(const BSplineCurve<2>& curve) {
+double SectionProfile::chordwise_at_param(double u) const {
+  return ChordwiseMap<2>(curve, le_param, te_param).chordwise_at(u);
+}
+
+SectionProperties section_properties(const BSplineCurve<2>& curve, bool with_perimeter) {
   SectionProperties r;
   double a2 = 0, mx = 0, my = 0;  // 2A, integral of x dA, integral of y dA (Green's theorem)
   const auto& U = curve.knots();
@@ -120,7 +79,7 @@ SectionProperties section_properties(const BSplineCurve<2>& curve) {
   }
   r.area = 0.5 * a2;
   if (r.area != 0) r.centroid = Eigen::Vector2d(mx, my) / r.area;
-  r.perimeter = arc_length(curve);
+  if (with_perimeter) r.perimeter = arc_length(curve);
   return r;
 }
 
@@ -151,12 +110,18 @@ SectionProfile section_from_points(const PointSectionDefinition& def) {
     const BSplineCurve<2> curve = interpolate_closed<2>(pts, 3, ParamMethod::Centripetal);
     LeadingTrailingEdge d;
     if (le_index >= 0) {
+      try {
+        d = detect_leading_trailing_edge(curve);  // for its edge circles (reported)
+      } catch (const Error&) {
+      }
       d.le_param = curve.check_param(params[static_cast<std::size_t>(le_index)]);
       d.te_param = curve.check_param(params[static_cast<std::size_t>(te_index)]);
     } else {
       d = detect_leading_trailing_edge(curve);
     }
     SectionProfile s = make_profile(curve, d.le_param, d.te_param);
+    s.le_circle = d.le_circle;
+    s.te_circle = d.te_circle;
     // Side A is reached from the LE with increasing u; it is the suction side or the points are reversed.
     const double la = s.suction_length(), lb = s.pressure_length();
     const bool ccw = section_properties(curve).area > 0;

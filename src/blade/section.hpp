@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "src/blade/leading_edge.hpp"
 #include "src/core/bspline_curve.hpp"
 
 namespace cg::blade {
@@ -85,12 +86,22 @@ struct SectionProfile {
   Eigen::Vector2d chord_direction = Eigen::Vector2d::UnitX();
   /// True chord |te - le| (te - le is along chord_direction).
   double chord() const { return (te - le).dot(chord_direction); }
+  /// Edge circles: fitted to the curve at both ends (leading_edge.hpp), or the circle the given points
+  /// lie on at that end (point sections, see section_from_points), or the hinted circle.
+  EdgeCircle le_circle, te_circle;
+  /// Point sections: number of given points found on each edge circle (0 = none detected), and whether
+  /// the profile follows that circle as an exact rational arc between them.
+  int le_circle_points = 0, te_circle_points = 0;
+  bool le_arc = false, te_arc = false;
   /// Curve parameter at a chordwise coordinate c in [-1, 1]: c in [0, 1] runs from the LE over the
   /// suction side to the TE at fraction c of that side's arc length; c in [-1, 0] likewise over the
-  /// pressure side (c = -1 is the TE again). Arc lengths and their inverse: src/analyze/arc_length.hpp.
+  /// pressure side (c = -1 is the TE again). The one definition of the chordwise coordinate, shared
+  /// with the 3D sections of the wall: src/blade/chordwise.hpp.
   double param_at_chordwise(double c) const;
   /// Batched form (the arc-length tables are built once). Parameters lie in [le_param, le_param + period].
   std::vector<double> params_at_chordwise(const std::vector<double>& c) const;
+  /// Inverse: chordwise coordinate of curve parameter u.
+  double chordwise_at_param(double u) const;
   double suction_length() const;
   double pressure_length() const;
 };
@@ -114,6 +125,7 @@ struct SectionProperties {
   Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
   double perimeter = 0;
 };
-SectionProperties section_properties(const BSplineCurve<2>& closed_curve);
+/// with_perimeter = false skips the arc length (perimeter stays 0).
+SectionProperties section_properties(const BSplineCurve<2>& closed_curve, bool with_perimeter = true);
 
 }  // namespace cg::blade

@@ -152,11 +152,13 @@ blade::BladeSectionDefinition section(const Field& f, const std::filesystem::pat
 }
 
 blade::BladeOptions blade_options(const Field& f) {
-  f.expect_object({"overbuild", "chordwise_samples", "stacking"});
+  f.expect_object({"overbuild", "chordwise_samples", "stacking", "surface_tolerance", "seam"});
   blade::BladeOptions o;
   // > 0: the solid is cut out of the over-built surface by the hub and casing trims.
   o.overbuild = f.number_or("overbuild", o.overbuild, positive(0.5));
   o.chordwise_samples = f.integer_or("chordwise_samples", o.chordwise_samples, 8, 2000);
+  o.surface_tolerance = f.number_or("surface_tolerance", o.surface_tolerance, closed(1e-5, 0.1), "mm");
+  o.seam = f.number_or("seam", o.seam, closed(-1, 1));
   if (f.has("stacking")) {
     static const blade::StackingPoint points[] = {blade::StackingPoint::LeadingEdge, blade::StackingPoint::Centroid,
                                                   blade::StackingPoint::TrailingEdge};
@@ -255,6 +257,19 @@ nlohmann::json model_summary(const Config& c, const blade::BladeModel& m) {
     json e{{"span", s.placement.span},
            {"kind", std::holds_alternative<blade::PointSectionDefinition>(s.shape) ? "points" : "parametric"}};
     if (i < m.profiles.size()) e["chord_mm"] = m.profiles[i].chord();
+    if (i < m.diagnostics.size()) {
+      const blade::SectionDiagnostics& d = m.diagnostics[i];
+      auto circle = [](const blade::EdgeCircle& c, int points, bool arc) {
+        json j{{"centre_mm", {c.centre.x(), c.centre.y()}}, {"radius_mm", c.radius}};
+        if (points > 0) j["points_on_circle"] = points;
+        j["exact_arc"] = arc;
+        return j;
+      };
+      e["stagger_deg"] = d.stagger_deg;
+      e["area_mm2"] = d.area;
+      e["le_circle"] = circle(d.le_circle, d.le_circle_points, d.le_arc);
+      e["te_circle"] = circle(d.te_circle, d.te_circle_points, d.te_arc);
+    }
     sections.push_back(e);
   }
   const auto& s = m.surface;
@@ -266,9 +281,16 @@ nlohmann::json model_summary(const Config& c, const blade::BladeModel& m) {
               {"blade_surface",
                {{"degree_u", s.degree_u()},
                 {"degree_v", s.degree_v()},
-                {"poles_u", s.is_periodic_u() ? s.num_poles_u() - s.degree_u() : s.num_poles_u()},
-                {"poles_v", s.num_poles_v()},
-                {"rational", s.is_rational()}}},
+                {"poles_u", m.poles_u()},
+                {"poles_v", m.poles_v()},
+                {"rational", s.is_rational()},
+                {"tolerance_mm", m.surface_tolerance},
+                {"achieved_deviation_mm", m.surface_deviation},
+                {"check_points", m.surface_check_points},
+                {"skinned_sections", m.skinned_spans.size()},
+                {"seam_chordwise", m.seam},
+                {"u_le", m.u_le},
+                {"u_te", m.u_te}}},
               {"overbuild", m.options.overbuild},
               {"step_schema", io::step_schema_name(c.output.step_schema)},
               {"config", c.source}};
