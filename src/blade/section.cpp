@@ -7,7 +7,10 @@
 #include <string>
 
 #include "src/analyze/arc_length.hpp"
+#include "src/algo/project_point_curve.hpp"
 #include "src/blade/chordwise.hpp"
+#include "src/blade/edge_arcs.hpp"
+#include "src/blade/format.hpp"
 #include "src/blade/curve_integral.hpp"
 #include "src/blade/leading_edge.hpp"
 #include "src/blade/periodic_seam.hpp"
@@ -36,6 +39,90 @@ SectionProfile make_profile(const BSplineCurve<2>& curve, double le, double te) 
   s.le = s.curve.point(s.le_param);
   s.te = s.curve.point(s.te_param);
   s.chord_direction = (s.te - s.le).normalized();
+  return s;
+}
+
+// Index of the point nearest to q.
+int nearest(const std::vector<Eigen::Vector2d>& pts, const Eigen::Vector2d& q) {
+  std::size_t best = 0;
+  for (std::size_t i = 1; i < pts.size(); ++i)
+    if ((pts[i] - q).squaredNorm() < (pts[best] - q).squaredNorm()) best = i;
+  return static_cast<int>(best);
+}
+
+// The edge circles of the given points (edge_arcs.hpp) and, where the spline sags off one (or a hint
+// asks for it), the profile rebuilt to follow it exactly.
+SectionProfile with_edge_arcs(SectionProfile s, const std::vector<Eigen::Vector2d>& pts, const PointSectionDefinition& def,
+                              int le_index, int te_index, const std::string& what) {
+  const int n = static_cast<int>(pts.size());
+  struct Edge {
+    const char* name;
+    detail::EdgeCircleHint hint;
+    detail::EdgeCircleRun run;
+    bool arc = false;
+  };
+  Edge edges[2] = {{"le", {def.le_radius, def.le_centre}, {}, false}, {"te", {def.te_radius, def.te_centre}, {}, false}};
+  const Eigen::Vector2d ends[2] = {s.le, s.te};
+  std::vector<detail::EdgeCircleRun> arcs;
+  for (int e = 0; e < 2; ++e) {
+    Edge& E = edges[e];
+    // An edge circle is at most a quarter of the chord in radius (hints are taken as given).
+    const double max_radius = E.hint.given() ? HUGE_VAL : 0.25 * s.chord();
+    E.run = detail::find_edge_circle(pts, nearest(pts, ends[e]), E.hint, max_radius);
+    if (!E.run.found) {
+      if (E.hint.given())
+        throw InvalidGeometry(what + ": " + E.name + "_radius/" + E.name + "_centre: no " +
+                              (E.hint.centre ? "2" : "3") + " consecutive points at the " +
+                              (e == 0 ? "leading" : "trailing") + " edge lie on that circle within " +
+                              detail::fmt(detail::kOnCircleTolerance) + " mm");
+      continue;
+    }
+    // The sag due to sparse points alone: the same spline through the run's points moved onto the circle
+    // (so scatter of the points, e.g. C3X's LE within 1.3 um of its circle, does not count), measured
+    // in the middle half of the run (near its ends the spline meets the sides' curvature whatever the
+    // spacing, and the wiggle this makes decays by ~3.7x per interval into the run).
+    std::vector<Eigen::Vector2d> q = pts;
+    for (int k = 0; k < E.run.count; ++k) {
+      Eigen::Vector2d& x = q[static_cast<std::size_t>((E.run.first + k) % n)];
+      x = E.run.circle.centre + E.run.circle.radius * (x - E.run.circle.centre).normalized();
+    }
+    const std::vector<double> t = interpolation_parameters<2>(q, ParamMethod::Centripetal, true);
+    const BSplineCurve<2> plain = interpolate_closed<2>(q, 3, ParamMethod::Centripetal);
+    const int inset = E.run.count / 4;  // the spline's wiggle from a junction decays ~3.7x per interval
+    const double a = t[static_cast<std::size_t>((E.run.first + inset) % n)],
+                 b0 = t[static_cast<std::size_t>((E.run.first + E.run.count - 1 - inset) % n)];
+    const double sag = detail::deviation_from_circle(plain, a, b0 > a ? b0 : b0 + plain.period(), E.run.circle);
+    E.arc = E.hint.given() || sag > detail::kArcSagTolerance;
+    if (E.arc) arcs.push_back(E.run);
+  }
+  if (arcs.size() == 2) {
+    const auto& r0 = arcs[0];
+    const auto& r1 = arcs[1];
+    auto inside = [&](const detail::EdgeCircleRun& r, int i) { return ((i - r.first) % n + n) % n < r.count; };
+    require(!inside(r0, r1.first) && !inside(r1, r0.first),
+            what + ": the leading- and trailing-edge circles share given points; give le_radius/te_radius");
+  }
+  if (!arcs.empty()) {
+    const BSplineCurve<2> curve = detail::profile_with_arcs(pts, arcs);
+    LeadingTrailingEdge d;
+    if (le_index >= 0) {
+      CurveProjector<2> proj(curve);
+      d.le_param = proj.project(pts[static_cast<std::size_t>(le_index)]).param;
+      d.te_param = proj.project(pts[static_cast<std::size_t>(te_index)]).param;
+    } else {
+      const LeadingTrailingEdge fitted = detect_leading_trailing_edge(curve);
+      d = edge_points(curve, edges[0].run.found ? edges[0].run.circle : fitted.le_circle,
+                      edges[1].run.found ? edges[1].run.circle : fitted.te_circle);
+    }
+    const EdgeCircle le_c = s.le_circle, te_c = s.te_circle;
+    s = make_profile(curve, d.le_param, d.te_param);
+    s.le_circle = le_c;
+    s.te_circle = te_c;
+  }
+  if (edges[0].run.found) s.le_circle = edges[0].run.circle, s.le_circle_points = edges[0].run.count;
+  if (edges[1].run.found) s.te_circle = edges[1].run.circle, s.te_circle_points = edges[1].run.count;
+  s.le_arc = edges[0].arc;
+  s.te_arc = edges[1].arc;
   return s;
 }
 
@@ -105,6 +192,7 @@ SectionProfile section_from_points(const PointSectionDefinition& def) {
   require_simple_polygon(pts, what);
 
   int le_index = def.le_index, te_index = def.te_index;
+  SectionProfile s;
   for (int attempt = 0; attempt < 2; ++attempt) {
     const std::vector<double> params = interpolation_parameters<2>(pts, ParamMethod::Centripetal, true);
     const BSplineCurve<2> curve = interpolate_closed<2>(pts, 3, ParamMethod::Centripetal);
@@ -119,7 +207,7 @@ SectionProfile section_from_points(const PointSectionDefinition& def) {
     } else {
       d = detect_leading_trailing_edge(curve);
     }
-    SectionProfile s = make_profile(curve, d.le_param, d.te_param);
+    s = make_profile(curve, d.le_param, d.te_param);
     s.le_circle = d.le_circle;
     s.te_circle = d.te_circle;
     // Side A is reached from the LE with increasing u; it is the suction side or the points are reversed.
@@ -131,11 +219,11 @@ SectionProfile section_from_points(const PointSectionDefinition& def) {
       case SuctionSide::CounterClockwise: a_is_suction = ccw; break;
       case SuctionSide::Clockwise: a_is_suction = !ccw; break;
     }
-    if (a_is_suction || attempt == 1) return s;
+    if (a_is_suction || attempt == 1) break;
     std::reverse(pts.begin(), pts.end());
     if (le_index >= 0) le_index = n - 1 - le_index, te_index = n - 1 - te_index;
   }
-  throw AlgorithmFailure(what + ": orientation could not be fixed");  // unreachable: attempt 1 returns
+  return with_edge_arcs(s, pts, def, le_index, te_index, what);
 }
 
 }  // namespace cg::blade

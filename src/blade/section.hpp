@@ -11,6 +11,7 @@
 //    See blade_surface.hpp for the scaling to the LE/TE lines.
 #include <Eigen/Core>
 #include <iosfwd>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -49,6 +50,11 @@ struct PointSectionDefinition {
   int le_index = -1;
   int te_index = -1;
   SuctionSide suction_side = SuctionSide::Longer;
+  /// Optional edge-circle hints (mm, section frame): the LE/TE circle's radius (0 = not given) and/or
+  /// centre. With a hint the points on that circle are found with it and the profile follows the
+  /// circle exactly (see section_from_points).
+  double le_radius = 0, te_radius = 0;
+  std::optional<Eigen::Vector2d> le_centre, te_centre;
 };
 
 /// A section from camber line and thickness. Angles in degrees, measured in the section frame from the
@@ -107,11 +113,18 @@ struct SectionProfile {
 };
 
 /// Closed periodic cubic interpolation of the points (centripetal parameters), reproducing them exactly.
-/// LE/TE unless indices are given: the maximum-distance definition (leading_edge.hpp): TE = the point of
-/// the thinner end farthest from the LE, LE = the point of the curve farthest from the TE (solved on the
-/// curve by Newton), chord = |LE - TE|. With indices, LE and TE are those data points. The curve's seam
-/// is then moved to the LE (le_param = 0, period 1). Throws InvalidGeometry for < 4 points, coincident
-/// consecutive points or a self-intersecting polygon.
+/// LE/TE unless indices are given: the edge-circle definition (leading_edge.hpp): the chord line joins
+/// the centres of the circles fitted at both ends, LE and TE are where it leaves the profile, chord =
+/// |LE - TE|. With indices, LE and TE are those data points. The curve's seam is then moved to the LE
+/// (le_param = 0, period 1).
+/// Edge circles of sparse tables (edge_arcs.hpp): around each edge the longest run of consecutive points
+/// on one circle (>= 4 points within 0.005 mm; >= 3 with a radius hint; >= 2 with a centre hint) is
+/// found. Where the spline through the points leaves that circle by more than 0.002 mm between them (or
+/// a hint is given), the profile follows the circle exactly there (rational arc, G1 to splines through
+/// the other points); otherwise (dense tables such as C3X) the spline through every point is kept. The
+/// circles found are reported in le_circle/te_circle with their point counts.
+/// Throws InvalidGeometry for < 4 points, coincident consecutive points, a self-intersecting polygon,
+/// or a hint that no run of given points fits.
 SectionProfile section_from_points(const PointSectionDefinition& def);
 
 /// The parametric section. Throws InvalidGeometry for chord/thickness/radii <= 0, angles out of range,

@@ -86,7 +86,8 @@ blade::LengthUnit length_unit(const Field& f) {
 }
 
 blade::PointSectionDefinition point_section(const Field& f, const std::filesystem::path& base_dir) {
-  f.expect_object({"file", "values", "unit", "le_index", "te_index", "suction_side"});
+  f.expect_object({"file", "values", "unit", "le_index", "te_index", "suction_side", "le_radius", "te_radius",
+                   "le_centre", "te_centre"});
   if (f.has("file") == f.has("values")) fail(f.path(), "needs exactly one of \"file\" and \"values\"");
   blade::PointSectionDefinition def;
   def.unit = f.has("unit") ? length_unit(f.at("unit")) : blade::LengthUnit::Millimetre;
@@ -114,6 +115,12 @@ blade::PointSectionDefinition point_section(const Field& f, const std::filesyste
                                                blade::SuctionSide::Clockwise};
     def.suction_side = sides[f.at("suction_side").choice({"longer", "counter_clockwise", "clockwise"})];
   }
+  // Edge-circle hints, in the section's unit.
+  const double k = blade::millimetres_per(def.unit);
+  if (f.has("le_radius")) def.le_radius = k * f.at("le_radius").number(positive(1e5));
+  if (f.has("te_radius")) def.te_radius = k * f.at("te_radius").number(positive(1e5));
+  if (f.has("le_centre")) def.le_centre = k * f.at("le_centre").pair();
+  if (f.has("te_centre")) def.te_centre = k * f.at("te_centre").pair();
   return def;
 }
 
