@@ -110,7 +110,11 @@ WallFit fit_wall(const SectionFamily& family, const WallFitOptions& opt) {
   };
   const bool exact = family.straight() && !family.common_knots().empty();
   out.exact_sections = exact;
-  std::vector<double> knots = family.common_knots();
+  // Seed knots: a single profile's own knots (its data points: the fit then needs few more); otherwise
+  // a few uniform spans, refined where needed (a parametric family's 2n interpolation knots would be
+  // ~3x more poles than 1 um needs).
+  std::vector<double> knots = exact || family.kind() == SectionFamily::Kind::Single ? family.common_knots()
+                                                                                    : std::vector<double>{};
   if (knots.empty()) {
     const int n0 = 16;
     for (int i = 0; i < n0; ++i) knots.push_back(static_cast<double>(i) / n0);

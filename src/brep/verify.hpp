@@ -13,6 +13,7 @@ struct Check {
   std::string name;     ///< stable identifier, e.g. "one_solid" (used as key in report.json)
   bool passed = false;
   std::string message;  ///< what was measured
+  double seconds = 0;   ///< wall time the check took
 };
 
 struct SolidCheck {
@@ -40,14 +41,20 @@ struct SolidCheck {
 };
 
 struct VerifyOptions {
-  /// BRepMesh linear deflection relative to each edge's size, and angular deflection (rad). The
-  /// mesh is made on a copy, so the checked shape is left untouched.
-  double mesh_relative_deflection = 0.01;
-  double mesh_angular_deflection = 0.3;
+  /// BRepMesh linear deflection as a fraction of the shape's bounding-box diagonal, and angular
+  /// deflection (rad). The closed-mesh check tests topology (every mesh edge shared by exactly two
+  /// triangles, opposite directions), which any mesh of every face shows; tying the deflection to the
+  /// shape's size keeps the mesh small however many poles or faces the shape has. The mesh is made on a
+  /// copy, so the checked shape is left untouched.
+  double mesh_deflection_fraction = 1e-3;
+  double mesh_angular_deflection = 0.5;
+  /// Requested relative accuracy of BRepGProp's adaptive volume and area integration.
+  double gprop_relative_accuracy = 1e-7;
 };
 
 /// Runs every check on `shape` (expected: one closed solid) and measures it. Never throws for a
-/// bad shape: a bad shape gives failed checks.
+/// bad shape: a bad shape gives failed checks. BRepCheck_Analyzer runs in parallel, and the mesh check
+/// runs alongside the volume and area integrations (which only read the shape).
 SolidCheck verify_solid(const TopoDS_Shape& shape, const VerifyOptions& options = {});
 
 }  // namespace cg::brep
