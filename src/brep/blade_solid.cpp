@@ -36,6 +36,7 @@
 #include "adaptors/occt_convert.hpp"
 #include "src/algo/project_point_curve.hpp"
 #include "src/blade/surface_iso.hpp"
+#include "src/brep/occt_progress.hpp"
 #include "src/fit/interpolate.hpp"
 #include "src/modify/periodic_conversion.hpp"
 #include "src/modify/reparametrize.hpp"
@@ -365,7 +366,8 @@ BladeSolid iso_trimmed_solid(const BSplineSurface<3>& surface, const EndTrim& hu
 
 }  // namespace
 
-BladeSolid build_blade_solid(const BSplineSurface<3>& surface, const EndTrim& hub, const EndTrim& casing) {
+BladeSolid build_blade_solid(const BSplineSurface<3>& surface, const EndTrim& hub, const EndTrim& casing,
+                             ProgressSink* progress) {
   require(surface.num_poles_u() > 0, "blade surface is empty");
   require(surface.is_periodic_u(), "blade surface must be periodic in u (closed chordwise section)");
   require(!surface.is_periodic_v(), "blade surface must not be periodic in v (spanwise)");
@@ -386,7 +388,9 @@ BladeSolid build_blade_solid(const BSplineSurface<3>& surface, const EndTrim& hu
   gf.AddArgument(hub_face);
   gf.AddArgument(casing_face);
   gf.SetRunParallel(true);
-  gf.Perform();
+  const Handle(OcctProgress) fuse_progress = new OcctProgress(progress, "general fuse");
+  gf.Perform(fuse_progress->Start());
+  fuse_progress->throw_if_stopped();
   if (gf.HasErrors())
     throw AlgorithmFailure("cutting the blade surface by hub and casing failed: " + joined(alert_names(gf, Message_Fail)));
 
@@ -426,7 +430,7 @@ EndTrim casing_trim(const blade::FlowPathTrim& t) {
   return RevolvedTrim{t.casing};
 }
 
-BladeSolid build_blade_solid(const blade::BladeModel& model) {
+BladeSolid build_blade_solid(const blade::BladeModel& model, ProgressSink* progress) {
   const EndTrim hub = hub_trim(model.trim), casing = casing_trim(model.trim);
   const BSplineCurve<3> hub_iso = blade::detail::iso_curve_v(model.surface, 0.0),
                         casing_iso = blade::detail::iso_curve_v(model.surface, 1.0);
@@ -434,9 +438,13 @@ BladeSolid build_blade_solid(const blade::BladeModel& model) {
   // The model's end sections lie on the trims within its surface tolerance; anything else (a surface
   // edited by hand) takes the general fuse.
   const double allowed = std::max(model.surface_tolerance, 1e-7);
-  if (model.surface.first_v() < 0 && model.surface.last_v() > 1 && hub_dev <= allowed && casing_dev <= allowed)
+  if (model.surface.first_v() < 0 && model.surface.last_v() > 1 && hub_dev <= allowed && casing_dev <= allowed) {
+    // Milliseconds of work: one progress report and one check point.
+    report_progress(progress, 0.0, "trimming along the wall's iso-curves");
+    check_cancel(progress, "trimming along the wall's iso-curves");
     return iso_trimmed_solid(model.surface, hub, casing, hub_dev, casing_dev, hub_iso, casing_iso);
-  return build_blade_solid(model.surface, hub, casing);
+  }
+  return build_blade_solid(model.surface, hub, casing, progress);
 }
 
 }  // namespace cg::brep

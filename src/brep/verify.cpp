@@ -26,6 +26,8 @@
 #include <sstream>
 #include <unordered_map>
 
+#include "src/brep/occt_progress.hpp"
+
 namespace cg::brep {
 namespace {
 
@@ -65,9 +67,20 @@ struct UnionFind {
 // face using that edge, including both sides of a seam), then require that every oriented triangle
 // edge (a, b) occurs exactly once and its opposite (b, a) exactly once: closed, manifold and
 // consistently oriented. Degenerated edges carry no polygon and are skipped.
-Check closed_mesh_check(const TopoDS_Shape& shape, double deflection, double angle, int& triangles) {
+Check closed_mesh_check(const TopoDS_Shape& shape, const VerifyOptions& opt, int& triangles) {
   const TopoDS_Shape copy = BRepBuilderAPI_Copy(shape, /*copyGeom=*/false, /*copyMesh=*/false).Shape();
-  BRepMesh_IncrementalMesh mesher(copy, deflection, /*isRelative=*/false, angle, /*isInParallel=*/true);
+  const Handle(OcctProgress) occt_progress = new OcctProgress(opt.progress, "closed_mesh (BRepMesh)");
+  IMeshTools_Parameters params;
+  params.Deflection = opt.mesh_relative_deflection;
+  params.Relative = true;
+  params.Angle = opt.mesh_angular_deflection;
+  params.InParallel = true;
+  // No extra nodes inside the faces to meet the deflection: this check needs a conforming mesh, not an
+  // accurate one, and the interior refinement broke the triangulation of walls with a span more than
+  // ~500 chords long (holes in the mesh of a valid face; see tests/cli span_range test).
+  params.ControlSurfaceDeflection = false;
+  BRepMesh_IncrementalMesh mesher(copy, params, occt_progress->Start());
+  occt_progress->throw_if_stopped();
   TopTools_IndexedMapOfShape edges;
   TopExp::MapShapes(copy, TopAbs_EDGE, edges);
 
@@ -160,19 +173,18 @@ SolidCheck verify_solid(const TopoDS_Shape& shape, const VerifyOptions& options)
   r.face_count = count_of(shape, TopAbs_FACE);
   r.one_solid = make_check("one_solid", r.solid_count == 1, std::to_string(r.solid_count) + " solids");
   r.one_solid.seconds = sw.lap();
+  ProgressSink* const progress = options.progress;
+  report_progress(progress, 0.0, "brep_valid");
+  check_cancel(progress, "brep_valid");
 
   // The mesh (on a copy) and the two integrals only read the shape: they run alongside each other
   // and alongside the topology checks below. Geometry is shared read-only (OCCT 7.6 keeps evaluation
   // caches in the adaptors each algorithm builds, not in Geom objects).
-  Bnd_Box coarse;
-  BRepBndLib::Add(shape, coarse, /*useTriangulation=*/false);
-  const double diagonal = coarse.IsVoid() ? 1.0 : std::sqrt(coarse.SquareExtent());
   auto mesh = std::async(std::launch::async, [&] {
     Stopwatch t;
     Check c = make_check("closed_mesh", false, "not run");
     try {
-      c = closed_mesh_check(shape, options.mesh_deflection_fraction * diagonal, options.mesh_angular_deflection,
-                            r.mesh_triangles);
+      c = closed_mesh_check(shape, options, r.mesh_triangles);
     } catch (const Standard_Failure& e) {
       c.message = std::string("meshing raised ") + e.GetMessageString();
     }
@@ -208,6 +220,8 @@ SolidCheck verify_solid(const TopoDS_Shape& shape, const VerifyOptions& options)
   }
   r.brep_valid.seconds = sw.lap();
 
+  report_progress(progress, 0.3, "no_free_edges");
+  check_cancel(progress, "no_free_edges");
   try {
     ShapeAnalysis_FreeBounds fb(shape);
     const int free_edges =
@@ -218,6 +232,8 @@ SolidCheck verify_solid(const TopoDS_Shape& shape, const VerifyOptions& options)
   }
   r.no_free_edges.seconds = sw.lap();
 
+  report_progress(progress, 0.4, "oriented_shells");
+  check_cancel(progress, "oriented_shells");
   try {
     ShapeAnalysis_Shell sas;
     sas.LoadShells(shape);
@@ -230,8 +246,11 @@ SolidCheck verify_solid(const TopoDS_Shape& shape, const VerifyOptions& options)
     r.oriented_shells.message = std::string("ShapeAnalysis_Shell raised ") + e.GetMessageString();
   }
   r.oriented_shells.seconds = sw.lap();
-
+  // The mesh stops at a stop request (OCCT polls the sink); the integrations cannot be interrupted
+  // and finish first (the futures wait), then Cancelled propagates.
+  report_progress(progress, 0.5, "closed_mesh, volume and area");
   r.closed_mesh = mesh.get();
+  check_cancel(progress, "positive_volume");
   try {
     const double ta = area.get(), tv = volume.get();  // rethrow a Standard_Failure of the integrations
     r.volume = vp.Mass();

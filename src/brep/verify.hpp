@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "src/core/progress.hpp"
+
 namespace cg::brep {
 
 struct Check {
@@ -41,20 +43,24 @@ struct SolidCheck {
 };
 
 struct VerifyOptions {
-  /// BRepMesh linear deflection as a fraction of the shape's bounding-box diagonal, and angular
-  /// deflection (rad). The closed-mesh check tests topology (every mesh edge shared by exactly two
-  /// triangles, opposite directions), which any mesh of every face shows; tying the deflection to the
-  /// shape's size keeps the mesh small however many poles or faces the shape has. The mesh is made on a
-  /// copy, so the checked shape is left untouched.
-  double mesh_deflection_fraction = 1e-3;
-  double mesh_angular_deflection = 0.5;
+  /// BRepMesh linear deflection relative to each edge's size, and angular deflection (rad); no interior
+  /// refinement of the faces. The closed-mesh check tests topology (every mesh edge shared by exactly two
+  /// triangles, opposite directions), which any conforming mesh of every face shows; a deflection tied
+  /// to the size of each edge (not to the poles of the surfaces) keeps the mesh small, and a face of any
+  /// size gets triangles (a deflection tied to the whole shape left the 3.8 mm end faces of a 100 m
+  /// span untriangulated). The mesh is made on a copy, so the checked shape is left untouched.
+  double mesh_relative_deflection = 0.01;
+  double mesh_angular_deflection = 0.3;
   /// Requested relative accuracy of BRepGProp's adaptive volume and area integration.
   double gprop_relative_accuracy = 1e-7;
+  /// Optional: sees the checks' progress; a stop request ends verify_solid with Cancelled.
+  ProgressSink* progress = nullptr;
 };
 
 /// Runs every check on `shape` (expected: one closed solid) and measures it. Never throws for a
-/// bad shape: a bad shape gives failed checks. BRepCheck_Analyzer runs in parallel, and the mesh check
-/// runs alongside the volume and area integrations (which only read the shape).
+/// bad shape: a bad shape gives failed checks. Throws Cancelled when options.progress asks to stop.
+/// BRepCheck_Analyzer runs in parallel, and the mesh check and the volume and area integrations (which
+/// only read the shape) run alongside the topology checks.
 SolidCheck verify_solid(const TopoDS_Shape& shape, const VerifyOptions& options = {});
 
 }  // namespace cg::brep
