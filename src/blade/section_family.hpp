@@ -16,7 +16,8 @@
 //
 // Common parametrisation of all slices (the u of the wall surface): periodic, period 1, the seam at
 // u = 0; the LE at u_le and the TE at u_te on every slice. The seam is the TE by default (u_te = 0),
-// or the point at a given chordwise coordinate of the mid-span section (its u is then common, its
+// or the point at a given chordwise coordinate of the mid-span section (blended families: of a section
+// whose sides split the perimeter as the mean of the defined sections'; its u is then common, its
 // chordwise coordinate varies slightly with span).
 #include <Eigen/Core>
 #include <memory>
