@@ -106,7 +106,7 @@ std::vector<OutputFormat> handoff_formats() {
          const io::PartTriangles& t = triangles(c, r);
          io::PreviewOptions po;
          po.title = product(c);
-         // Hub -> casing along the leading edge (u = 0 at the LE): the blade stands upright.
+         // Hub -> casing along the iso-curve u = 0: the blade stands upright.
          po.up = r.model.surface.point(0, 1) - r.model.surface.point(0, 0);
          bool written = false;
          std::string note;

@@ -117,10 +117,16 @@ inline CooledPart make_cooled_part(const config::Config& c, const CooledPartOpti
   cp.model = config::build_model(c);
   const brep::BladeSolid solid = brep::build_blade_solid(cp.model);
   const auto& s = cp.model.surface;
-  const double ute = cp.model.u_te;
+  // u at a fraction c of the way LE -> TE: increasing u runs LE (u_le) -> suction side -> TE (u_te) ->
+  // pressure side -> LE, period 1. Not the arc-length chordwise coordinate, close enough for test tools.
+  const double ule = cp.model.u_le, ute = cp.model.u_te <= ule ? cp.model.u_te + 1 : cp.model.u_te;
+  auto surface_u = [&](double c) {  // c > 0 suction side, c < 0 pressure side
+    const double u = c >= 0 ? ule + c * (ute - ule) : ule + c * (1 - (ute - ule));
+    return u - std::floor(u);
+  };
   auto camber = [&](double chordwise, double v, double* thickness) {
-    const Eigen::Vector3d a = s.point(blade::surface_u_at_chordwise(chordwise, ute), v);
-    const Eigen::Vector3d b = s.point(blade::surface_u_at_chordwise(-chordwise, ute), v);
+    const Eigen::Vector3d a = s.point(surface_u(chordwise), v);
+    const Eigen::Vector3d b = s.point(surface_u(-chordwise), v);
     if (thickness) *thickness = (a - b).norm();
     return Eigen::Vector3d(0.5 * (a + b));
   };
@@ -150,7 +156,7 @@ inline CooledPart make_cooled_part(const config::Config& c, const CooledPartOpti
   const double c1 = 0.2;
   for (int j = 0; j < o.holes && o.chambers > 0; ++j) {
     const double v = 0.2 + (v1 - 0.35) * j / std::max(1, o.holes - 1);  // 0.2 .. 0.5 at the default top
-    const Eigen::Vector3d p = s.point(blade::surface_u_at_chordwise(-c1, ute), v);
+    const Eigen::Vector3d p = s.point(surface_u(-c1), v);
     // Into the chamber axis point nearest the wall point: the hole ends inside the chamber.
     const auto& [a, b] = axes[0];
     const Eigen::Vector3d d = (b - a).normalized();
