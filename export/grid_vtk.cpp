@@ -1,0 +1,105 @@
+#include "export/grid_vtk.hpp"
+
+#include <vtkCellData.h>
+#include <vtkDoubleArray.h>
+#include <vtkIntArray.h>
+#include <vtkNew.h>
+#include <vtkPoints.h>
+#include <vtkStructuredGrid.h>
+#include <vtkXMLStructuredGridWriter.h>
+
+#include <algorithm>
+#include <fstream>
+
+#include "export/atomic_file.hpp"
+
+namespace cg::io {
+
+namespace {
+
+double min_corner_sine(const grid::Block& b, int i, int j) {
+  const Eigen::Vector2d p[4] = {b.at(i, j), b.at(i + 1, j), b.at(i + 1, j + 1), b.at(i, j + 1)};
+  double s = 1;
+  for (int k = 0; k < 4; ++k) {
+    const Eigen::Vector2d a = p[(k + 1) % 4] - p[k], c = p[(k + 3) % 4] - p[k];
+    const double la = a.norm(), lc = c.norm();
+    s = std::min(s, la > 0 && lc > 0 ? (a.x() * c.y() - a.y() * c.x()) / (la * lc) : -1.0);
+  }
+  return s;
+}
+
+std::string xml_escape(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    if (c == '&') out += "&amp;";
+    else if (c == '"') out += "&quot;";
+    else if (c == '<') out += "&lt;";
+    else if (c == '>') out += "&gt;";
+    else out += c;
+  }
+  return out;
+}
+
+}  // namespace
+
+void write_vts(const std::filesystem::path& file, const grid::Block& b, int block_index, double z) {
+  vtkNew<vtkStructuredGrid> sg;
+  sg->SetDimensions(b.ni + 1, b.nj + 1, 1);
+  vtkNew<vtkPoints> pts;
+  pts->SetDataTypeToDouble();
+  pts->SetNumberOfPoints(static_cast<vtkIdType>(b.nodes.size()));
+  for (std::size_t k = 0; k < b.nodes.size(); ++k)
+    pts->SetPoint(static_cast<vtkIdType>(k), b.nodes[k].x(), b.nodes[k].y(), z);  // VTK order: i fastest, as ours
+  sg->SetPoints(pts);
+  vtkNew<vtkDoubleArray> jac;
+  jac->SetName("scaled_jacobian");
+  jac->SetNumberOfTuples(b.cells());
+  vtkNew<vtkIntArray> id;
+  id->SetName("block");
+  id->SetNumberOfTuples(b.cells());
+  for (int j = 0; j < b.nj; ++j)
+    for (int i = 0; i < b.ni; ++i) {
+      jac->SetValue(j * b.ni + i, min_corner_sine(b, i, j));
+      id->SetValue(j * b.ni + i, block_index);
+    }
+  sg->GetCellData()->AddArray(jac);
+  sg->GetCellData()->AddArray(id);
+  write_atomically(file, [&](const std::filesystem::path& tmp) {
+    vtkNew<vtkXMLStructuredGridWriter> w;
+    w->SetFileName(tmp.c_str());
+    w->SetInputData(sg);
+    w->SetDataModeToAppended();
+    w->SetCompressorTypeToZLib();
+    if (w->Write() != 1) throw ExportError("VTK could not write " + tmp.string());
+  });
+}
+
+std::vector<std::filesystem::path> write_vtm(const std::filesystem::path& vtm_file, const grid::MultiBlockGrid& grid,
+                                             double z) {
+  const std::filesystem::path dir_name = vtm_file.stem().string() + "_blocks";
+  const std::filesystem::path dir = vtm_file.parent_path() / dir_name;
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw ExportError("cannot create " + dir.string() + ": " + ec.message());
+  std::vector<std::filesystem::path> files;
+  std::string xml = "<?xml version=\"1.0\"?>\n<VTKFile type=\"vtkMultiBlockDataSet\" version=\"1.0\" "
+                    "byte_order=\"LittleEndian\">\n  <vtkMultiBlockDataSet>\n";
+  for (std::size_t k = 0; k < grid.blocks.size(); ++k) {
+    const grid::Block& b = grid.blocks[k];
+    const std::filesystem::path rel = dir_name / (b.name + ".vts");
+    write_vts(vtm_file.parent_path() / rel, b, static_cast<int>(k), z);
+    files.push_back(vtm_file.parent_path() / rel);
+    xml += "    <DataSet index=\"" + std::to_string(k) + "\" name=\"" + xml_escape(b.name) + "\" file=\"" +
+           xml_escape(rel.generic_string()) + "\"/>\n";
+  }
+  xml += "  </vtkMultiBlockDataSet>\n</VTKFile>\n";
+  write_atomically(vtm_file, [&](const std::filesystem::path& tmp) {
+    std::ofstream out(tmp);
+    out << xml;
+    if (!out) throw ExportError("write error on " + tmp.string());
+  });
+  files.push_back(vtm_file);
+  return files;
+}
+
+}  // namespace cg::io
