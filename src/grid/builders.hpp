@@ -1,5 +1,6 @@
 #pragma once
 // The two grid layouts of section_grid.hpp (internal to src/grid).
+#include <utility>
 #include <vector>
 
 #include "src/blade/section.hpp"
@@ -15,6 +16,9 @@ struct BuiltGrid {
   std::vector<double> wall_params;  ///< curve parameter of every wall node, i = 0..ni (after orientation)
   int wall_layers = 0;
 };
+
+/// Smallest and largest a (axial coordinate) of the section, from 2000 curve samples.
+std::pair<double, double> axial_range(const blade::SectionProfile& section);
 
 /// Resolved options: every default filled in (see section_grid.cpp).
 BuiltGrid build_o_grid(const blade::SectionProfile& section, const WallPatches& patches, const SectionGridOptions& o);

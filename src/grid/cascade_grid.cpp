@@ -144,6 +144,16 @@ void untangle(Block& b, int j0, int rounds) {
 
 }  // namespace
 
+std::pair<double, double> axial_range(const blade::SectionProfile& section) {
+  double lo = HUGE_VAL, hi = -HUGE_VAL;
+  for (int k = 0; k < 2000; ++k) {
+    const double a = section.curve.point(section.curve.first_param() + section.curve.period() * k / 2000).x();
+    lo = std::min(lo, a);
+    hi = std::max(hi, a);
+  }
+  return {lo, hi};
+}
+
 BuiltGrid build_cascade_grid(const blade::SectionProfile& section, const WallPatches& patches,
                              const SectionGridOptions& o, int wall_layers) {
   const CascadeOptions& cas = *o.cascade;
@@ -152,27 +162,29 @@ BuiltGrid build_cascade_grid(const blade::SectionProfile& section, const WallPat
   const int n_per = (o.cells_around - n_in - n_out) / 2;
   const int ni = o.cells_around, nj = o.cells_normal;
 
-  // Extent of the section along a (axial), from a dense sample.
-  double a_min = HUGE_VAL, a_max = -HUGE_VAL;
-  std::vector<Eigen::Vector2d> wall_sample;
-  for (int k = 0; k < 2000; ++k) {
-    const Eigen::Vector2d p = section.curve.point(section.curve.first_param() + section.curve.period() * k / 2000);
-    wall_sample.push_back(p);
-    a_min = std::min(a_min, p.x());
-    a_max = std::max(a_max, p.x());
-  }
+  const auto [a_min, a_max] = axial_range(section);
   const double c_ax = a_max - a_min;
+  std::vector<Eigen::Vector2d> wall_sample;
+  for (int k = 0; k < 2000; ++k)
+    wall_sample.push_back(section.curve.point(section.curve.first_param() + section.curve.period() * k / 2000));
   if (!(section.le.x() < section.te.x()))
     throw InvalidGeometry("cascade: the section's LE must lie upstream (smaller a) of its TE");
   const MidLine mid(section.curve, a_min, a_max);
-  // The periodic lines must clear the section: mid +- pitch/2 may not cut it.
+  // The periodic lines must clear the section with room for the wall layers on both sides of the
+  // passage: pitch/2 >= (largest distance of the section from its mid-line along b) + 2 thickness.
+  double reach = 0, reach_a = 0;
   for (const Eigen::Vector2d& p : wall_sample) {
     const double off = std::abs(p.y() - mid.y(p.x()));
-    if (off > 0.45 * pitch)
-      throw InvalidGeometry("cascade.pitch: " + mm(pitch) + " is too small: the section reaches " + mm(off) +
-                            " from its mid-line at a = " + mm(p.x()) + ", but the periodic lines are at pitch/2 (need pitch > " +
-                            mm(off / 0.45) + ")");
+    if (off > reach) {
+      reach = off;
+      reach_a = p.x();
+    }
   }
+  const double need = 2 * (reach + 2 * o.thickness);
+  if (pitch < need)
+    throw InvalidGeometry("cascade.pitch: " + mm(pitch) + " is too small: the section reaches " + mm(reach) +
+                          " from its mid-line (at a = " + mm(reach_a) + ") and the wall layers need " +
+                          mm(2 * o.thickness) + " more on each side; need pitch >= " + mm(need));
   const double gap_in = std::max(kInletGap * c_ax, kInterfaceGapLayers * o.thickness);
   const double gap_out = std::max(kOutletGap * c_ax, kInterfaceGapLayers * o.thickness);
   const double a_in = a_min - gap_in, a_out = a_max + gap_out;

@@ -22,7 +22,8 @@ std::vector<double> geometric_fill(double first, int cells, double length, doubl
 
 /// Two-sided stretching with end spacings d0 and d1 (Vinokur 1983, "On one-dimensional stretching
 /// functions for finite-difference calculations", J. Comp. Phys. 50: tanh form when the ends are finer
-/// than the mean spacing, tan form when coarser; exact end spacings to first order).
+/// than the mean spacing, tan form when coarser), the requested spacings corrected by fixed-point
+/// iteration until the first and last cells match them to 1e-9 (when both fit into the length).
 std::vector<double> two_sided_stretching(int cells, double length, double d0, double d1);
 
 /// Equidistribution of a positive density sampled at equally spaced points on [0, length] (piecewise

@@ -44,7 +44,8 @@ SectionGridOptions resolve(const blade::SectionProfile& section, SectionGridOpti
           std::to_string(c.inlet_cells_pitchwise) + " - " + std::to_string(c.outlet_cells_pitchwise));
     if (c.inlet_cells_streamwise < 1) bad("cascade.inlet_cells", "streamwise cells must be >= 1");
     if (c.outlet_cells_streamwise < 1) bad("cascade.outlet_cells", "streamwise cells must be >= 1");
-    const double c_ax = std::abs(section.te.x() - section.le.x());
+    const auto [a_min, a_max] = detail::axial_range(section);
+    const double c_ax = a_max - a_min;
     if (c.inlet_distance == 0) c.inlet_distance = 0.6 * c_ax;
     if (c.outlet_distance == 0) c.outlet_distance = 1.2 * c_ax;
     if (!(c.inlet_distance > 0)) bad("cascade.inlet_distance", "must be > 0 mm, got " + num(c.inlet_distance));
@@ -114,6 +115,9 @@ SectionGrid build_section_grid(const blade::SectionProfile& section, const Secti
   r.first_cell_height = o.first_cell_height;
   r.growth_ratio = o.growth_ratio;
   r.thickness = o.thickness;
+  if (r.inverted_cells > 0 && !o.cascade)  // every node is on an exact normal line: they cross
+    bad("thickness", num(o.thickness) + " mm is too large for this section: its normal lines cross (" +
+        std::to_string(r.inverted_cells) + " inverted cells), the offset folds across a concave stretch; reduce it");
   if (r.inverted_cells > 0) {
     std::string which;
     for (const BlockQuality& q : r.blocks)
