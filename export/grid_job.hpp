@@ -18,7 +18,7 @@
 namespace cg::io {
 
 struct SectionGridRun {
-  int section = 0;      ///< index into the model's sections
+  int section = 0;      ///< index into the config's sections (= model.profiles[section])
   double span = 0;      ///< span fraction of the section
   std::string name;     ///< file stem "section_<k>"
   grid::SectionGrid grid;
