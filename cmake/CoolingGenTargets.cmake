@@ -37,10 +37,11 @@ cg_add_library(coolinggen_export DIRS export DEPS coolinggen_brep coolinggen_vtk
 vtk_module_autoinit(TARGETS coolinggen_export MODULES ${VTK_LIBRARIES})
 # Meshing through gmsh's C++ API (gmsh takes the OCCT shape).
 cg_add_library(coolinggen_mesh DIRS src/mesh DEPS coolinggen_brep coolinggen_gmsh_deps)
-# Configuration file (JSON) -> model and feature definitions.
-cg_add_library(coolinggen_config DIRS src/config DEPS coolinggen_brep coolinggen_export)
+# Configuration file (JSON) -> plain option structs and the blade model's definitions (no OCCT).
+cg_add_library(coolinggen_config DIRS src/config DEPS coolinggen_model nlohmann_json::nlohmann_json)
 # The whole job (config -> verified, exported model) as a library call; the CLI is a thin layer on it.
 cg_add_library(coolinggen_pipeline DIRS src/pipeline DEPS coolinggen_config coolinggen_export coolinggen_mesh)
+target_compile_definitions(coolinggen_pipeline PRIVATE COOLINGGEN_VERSION="${PROJECT_VERSION}")
 
 add_library(coolinggen INTERFACE)
 add_library(coolinggen::coolinggen ALIAS coolinggen)

@@ -191,9 +191,15 @@ Config parse_config(const nlohmann::json& document, const std::filesystem::path&
   c.output.product_name = c.name;
   if (root.has("output")) {
     const Field out = root.at("output");
-    out.expect_object({"step_schema", "product_name"});
+    out.expect_object({"formats", "step_schema", "product_name"});
+    if (out.has("formats")) {
+      const Field formats = out.at("formats");
+      const std::size_t n = formats.expect_array(0);
+      c.output.formats.clear();
+      for (std::size_t i = 0; i < n; ++i) c.output.formats.push_back(formats.item(i).string());
+    }
     if (out.has("step_schema"))
-      c.output.step_schema = out.at("step_schema").choice({"AP214", "AP242"}) == 1 ? io::StepSchema::AP242 : io::StepSchema::AP214;
+      c.output.step_schema = out.at("step_schema").choice({"AP214", "AP242"}) == 1 ? "AP242" : "AP214";
     if (out.has("product_name")) c.output.product_name = out.at("product_name").string();
   }
   if (root.has("grid")) c.grid = parse_grid_config(root.at("grid"), n);
@@ -215,11 +221,13 @@ Config load_config_file(const std::filesystem::path& file) {
   if (!in) throw ConfigError("config: cannot read file " + file.string());
   std::stringstream s;
   s << in.rdbuf();
-  return parse_config_text(s.str(), file.has_parent_path() ? file.parent_path() : std::filesystem::path("."),
-                           file.stem().string());
+  Config c = parse_config_text(s.str(), file.has_parent_path() ? file.parent_path() : std::filesystem::path("."),
+                               file.stem().string());
+  c.source_file = file.string();
+  return c;
 }
 
-blade::BladeModel build_model(const Config& config) {
+blade::BladeModel build_model(const Config& config, ProgressSink* progress) {
   const blade::BladeDefinition& def = config.blade;
   // Check the parts separately first, so a failure names the part of the config it comes from.
   if (const auto* m = std::get_if<blade::MeridionalFlowPath>(&def.flow_path)) {
@@ -229,7 +237,11 @@ blade::BladeModel build_model(const Config& config) {
       throw ConfigError(std::string("flow_path: ") + e.what());
     }
   }
+  const double steps = static_cast<double>(def.sections.size() + 2);
   for (std::size_t i = 0; i < def.sections.size(); ++i) {
+    const std::string name = "sections[" + std::to_string(i) + "]";
+    report_progress(progress, static_cast<double>(i + 1) / steps, name);
+    check_cancel(progress, name);
     const auto& shape = def.sections[i].shape;
     const bool points = std::holds_alternative<blade::PointSectionDefinition>(shape);
     try {
@@ -241,38 +253,13 @@ blade::BladeModel build_model(const Config& config) {
       throw ConfigError("sections[" + std::to_string(i) + "]." + (points ? "points" : "parametric") + ": " + e.what());
     }
   }
+  report_progress(progress, (steps - 1) / steps, "blade surface");
+  check_cancel(progress, "blade surface");
   try {
     return blade::build_blade(def);
   } catch (const InvalidGeometry& e) {
     throw ConfigError(std::string("blade model (flow_path + sections): ") + e.what());
   }
-}
-
-nlohmann::json model_summary(const Config& c, const blade::BladeModel& m) {
-  using nlohmann::json;
-  json sections = json::array();
-  for (std::size_t i = 0; i < c.blade.sections.size(); ++i) {
-    const auto& s = c.blade.sections[i];
-    json e{{"span", s.placement.span},
-           {"kind", std::holds_alternative<blade::PointSectionDefinition>(s.shape) ? "points" : "parametric"}};
-    if (i < m.profiles.size()) e["chord_mm"] = m.profiles[i].chord();
-    sections.push_back(e);
-  }
-  const auto& s = m.surface;
-  return json{{"name", c.name},
-              {"description", c.description},
-              {"flow_path", std::holds_alternative<blade::StraightFlowPath>(c.blade.flow_path) ? "straight" : "meridional"},
-              {"span_length_mm", m.span_length},
-              {"sections", sections},
-              {"blade_surface",
-               {{"degree_u", s.degree_u()},
-                {"degree_v", s.degree_v()},
-                {"poles_u", s.is_periodic_u() ? s.num_poles_u() - s.degree_u() : s.num_poles_u()},
-                {"poles_v", s.num_poles_v()},
-                {"rational", s.is_rational()}}},
-              {"overbuild", m.options.overbuild},
-              {"step_schema", io::step_schema_name(c.output.step_schema)},
-              {"config", c.source}};
 }
 
 }  // namespace cg::config

@@ -9,16 +9,20 @@
 #include <filesystem>
 #include <string>
 
-#include "export/step_writer.hpp"
+#include <vector>
+
 #include "src/blade/blade_surface.hpp"
 #include "src/config/config_error.hpp"
 #include "src/config/grid_config.hpp"
+#include "src/core/progress.hpp"
 
 namespace cg::config {
 
+/// "output": plain options; the pipeline (src/pipeline/outputs.hpp) checks the format names and writes.
 struct OutputOptions {
-  io::StepSchema step_schema = io::StepSchema::AP214;
-  std::string product_name;  ///< name of the product in the STEP file (default: the config's name)
+  std::vector<std::string> formats{"step"};  ///< model files to write (report.json is always written)
+  std::string step_schema = "AP214";         ///< "AP214" | "AP242"
+  std::string product_name;                  ///< name of the product in the STEP file (default: the config's name)
 };
 
 struct Config {
@@ -28,6 +32,7 @@ struct Config {
   OutputOptions output;
   GridConfig grid;          ///< "grid" (structured grids around the sections; optional)
   nlohmann::json source;    ///< the parsed document (for the report)
+  std::string source_file;  ///< the config file read (empty when parsed from a document or text)
 };
 
 /// Parses a document. Relative section point files are resolved against `base_dir` and read here
@@ -42,9 +47,7 @@ Config load_config_file(const std::filesystem::path& file);
 
 /// Builds the blade model from a parsed config; errors of the model are rethrown as ConfigError
 /// naming the part of the config they come from ("flow_path", "sections[i]", "blade").
-blade::BladeModel build_model(const Config& config);
-
-/// A small model description for the report: name, flow path type, section count and kinds, options.
-nlohmann::json model_summary(const Config& config, const blade::BladeModel& model);
+/// `progress` (optional) may stop it between its steps (Cancelled).
+blade::BladeModel build_model(const Config& config, ProgressSink* progress = nullptr);
 
 }  // namespace cg::config

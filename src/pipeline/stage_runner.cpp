@@ -1,0 +1,49 @@
+#include "src/pipeline/stage_runner.hpp"
+
+#include <chrono>
+
+#include "src/config/number_format.hpp"
+
+namespace cg::pipeline {
+namespace {
+
+double now_s() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
+
+}  // namespace
+
+void StageRunner::run(const std::string& stage, const std::string& title, const std::function<void()>& body) {
+  const std::string where = "stage '" + stage + "'";
+  if (sink_ && sink_->stop_requested()) throw Cancelled(where, "before");
+  if (sink_) sink_->stage_started(stage, title);
+  const double t0 = now_s();
+  try {
+    body();
+  } catch (const Cancelled& e) {
+    throw Cancelled(e.where() == stage ? where : where + ", at " + e.where());
+  }
+  const double seconds = now_s() - t0;
+  timings_->push_back({stage, seconds});
+  if (sink_) sink_->stage_finished(stage, seconds);
+}
+
+TimeLimit::TimeLimit(ProgressSink* inner, double seconds) : inner_(inner), seconds_(seconds), start_(now_s()) {}
+
+bool TimeLimit::expired() const { return seconds_ > 0 && now_s() - start_ > seconds_; }
+
+void TimeLimit::stage_started(const std::string& stage, const std::string& title) {
+  if (inner_) inner_->stage_started(stage, title);
+}
+void TimeLimit::stage_progress(double fraction, const std::string& step) {
+  if (inner_) inner_->stage_progress(fraction, step);
+}
+void TimeLimit::stage_finished(const std::string& stage, double seconds) {
+  if (inner_) inner_->stage_finished(stage, seconds);
+}
+bool TimeLimit::stop_requested() const { return expired() || (inner_ && inner_->stop_requested()); }
+
+std::string TimeLimit::stop_reason() const {
+  if (expired()) return "time limit of " + config::shortest(seconds_) + " s reached";
+  return inner_ ? inner_->stop_reason() : ProgressSink::stop_reason();
+}
+
+}  // namespace cg::pipeline
