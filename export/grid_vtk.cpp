@@ -74,30 +74,34 @@ void write_vts(const std::filesystem::path& file, const grid::Block& b, int bloc
   });
 }
 
-std::vector<std::filesystem::path> write_vtm(const std::filesystem::path& vtm_file, const grid::MultiBlockGrid& grid,
-                                             double z) {
-  const std::filesystem::path dir_name = vtm_file.stem().string() + "_blocks";
-  const std::filesystem::path dir = vtm_file.parent_path() / dir_name;
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) throw ExportError("cannot create " + dir.string() + ": " + ec.message());
-  std::vector<std::filesystem::path> files;
+std::string vts_file_name(const std::string& stem, const grid::Block& block) { return stem + "_" + block.name + ".vts"; }
+
+void write_vtm_index(const std::filesystem::path& vtm_file, const std::vector<std::pair<std::string, std::string>>& blocks) {
   std::string xml = "<?xml version=\"1.0\"?>\n<VTKFile type=\"vtkMultiBlockDataSet\" version=\"1.0\" "
                     "byte_order=\"LittleEndian\">\n  <vtkMultiBlockDataSet>\n";
-  for (std::size_t k = 0; k < grid.blocks.size(); ++k) {
-    const grid::Block& b = grid.blocks[k];
-    const std::filesystem::path rel = dir_name / (b.name + ".vts");
-    write_vts(vtm_file.parent_path() / rel, b, static_cast<int>(k), z);
-    files.push_back(vtm_file.parent_path() / rel);
-    xml += "    <DataSet index=\"" + std::to_string(k) + "\" name=\"" + xml_escape(b.name) + "\" file=\"" +
-           xml_escape(rel.generic_string()) + "\"/>\n";
-  }
+  for (std::size_t k = 0; k < blocks.size(); ++k)
+    xml += "    <DataSet index=\"" + std::to_string(k) + "\" name=\"" + xml_escape(blocks[k].first) + "\" file=\"" +
+           xml_escape(blocks[k].second) + "\"/>\n";
   xml += "  </vtkMultiBlockDataSet>\n</VTKFile>\n";
   write_atomically(vtm_file, [&](const std::filesystem::path& tmp) {
     std::ofstream out(tmp);
     out << xml;
     if (!out) throw ExportError("write error on " + tmp.string());
   });
+}
+
+std::vector<std::filesystem::path> write_vtm(const std::filesystem::path& vtm_file, const grid::MultiBlockGrid& grid,
+                                             double z) {
+  std::vector<std::filesystem::path> files;
+  std::vector<std::pair<std::string, std::string>> entries;
+  for (std::size_t k = 0; k < grid.blocks.size(); ++k) {
+    const grid::Block& b = grid.blocks[k];
+    const std::string name = vts_file_name(vtm_file.stem().string(), b);
+    write_vts(vtm_file.parent_path() / name, b, static_cast<int>(k), z);
+    files.push_back(vtm_file.parent_path() / name);
+    entries.emplace_back(b.name, name);
+  }
+  write_vtm_index(vtm_file, entries);
   files.push_back(vtm_file);
   return files;
 }

@@ -22,11 +22,11 @@
 
 #include "../brep/temp_files.hpp"
 #include "export/grid_cgns.hpp"
-#include "export/grid_job.hpp"
 #include "export/grid_plot3d.hpp"
 #include "export/grid_vtk.hpp"
 #include "grid_fixtures.hpp"
 #include "src/config/config.hpp"
+#include "src/pipeline/grid_job.hpp"
 
 using namespace cg;
 
@@ -164,11 +164,11 @@ BOOST_AUTO_TEST_CASE(vtk_and_plot3d_read_back) {
   const auto files = io::write_vtm(dir.path / "c3x.vtm", g);
   BOOST_TEST(files.size() == 4u);
   const std::string vtm = test::read_text(dir.path / "c3x.vtm");
-  BOOST_TEST(vtm.find("c3x_blocks/inlet.vts") != std::string::npos);
+  BOOST_TEST(vtm.find("file=\"c3x_inlet.vts\"") != std::string::npos);
   for (std::size_t k = 0; k < g.blocks.size(); ++k) {
     const grid::Block& b = g.blocks[k];
     vtkNew<vtkXMLStructuredGridReader> r;
-    r->SetFileName((dir.path / "c3x_blocks" / (b.name + ".vts")).c_str());
+    r->SetFileName((dir.path / ("c3x_" + b.name + ".vts")).c_str());
     r->Update();
     vtkStructuredGrid* sg = r->GetOutput();
     int dims[3];
@@ -209,26 +209,37 @@ BOOST_AUTO_TEST_CASE(vtk_and_plot3d_read_back) {
 }
 
 BOOST_AUTO_TEST_CASE(grid_job_on_the_c3x_example) {
-  // data/examples/c3x_vane.json with a grid section (as `coolinggen grid` parses it).
+  // data/examples/c3x_vane.json with a grid section, as `coolinggen grid` runs it.
   nlohmann::json doc = nlohmann::json::parse(test::read_text(COOLINGGEN_SOURCE_DIR "/data/examples/c3x_vane.json"));
   doc["grid"] = {{"cells_around", 175}, {"first_cell_height", 0.01}, {"cascade", {{"pitch", 117.73}}}};
   const config::Config c = config::parse_config(doc, COOLINGGEN_SOURCE_DIR "/data/examples", "c3x");
   BOOST_TEST(c.grid.given);
   BOOST_TEST(c.grid.options.cascade.has_value());
-  const blade::BladeModel m = config::build_model(c);
-  auto runs = io::build_section_grids(m, config::grid_sections(c.grid, c.blade.sections.size()), c.grid.options);
-  BOOST_TEST(runs.size() == 1u);
+  const pipeline::GridResult r = pipeline::run_grid(c);
+  BOOST_TEST(r.runs.size() == 1u);  // one defined section (the model repeats it at the casing)
   const test::TempDir dir("grid_job");
-  io::write_section_grids(dir.path / "out", runs, {{"name", c.name}});
-  for (const char* f : {"section_0.vtm", "section_0.xyz", "section_0.cgns", "grid_report.json", "section_0_blocks"})
-    BOOST_TEST(std::filesystem::exists(dir.path / "out" / f), f);
-  const nlohmann::json rep = nlohmann::json::parse(test::read_text(dir.path / "out" / "grid_report.json"));
+  const auto out = dir.path / "out";
+  // A file of an earlier grid run that this run does not write is removed (the index lists it).
+  std::filesystem::create_directories(out);
+  {
+    std::ofstream(out / "section_7.xyz") << "old";
+    std::ofstream(out / "grid_report.json") << R"({"generator": "coolinggen", "outputs": ["section_7.xyz", "grid_report.json"]})";
+  }
+  const pipeline::WrittenGrid w = pipeline::write_grid_outputs(c, r, out);
+  BOOST_TEST(w.files.back() == "grid_report.json");
+  BOOST_TEST(!std::filesystem::exists(out / "section_7.xyz"));
+  for (const char* f : {"section_0.vtm", "section_0_o_grid.vts", "section_0_inlet.vts", "section_0_outlet.vts",
+                        "section_0.xyz", "section_0.cgns", "grid_report.json"})
+    BOOST_TEST(std::filesystem::exists(out / f), f);
+  const nlohmann::json rep = nlohmann::json::parse(test::read_text(out / "grid_report.json"));
   const auto& s = rep["sections"][0];
   BOOST_TEST(s["cells"].get<int>() == 12806);
   BOOST_TEST(s["inverted_cells"].get<int>() == 0);
   BOOST_TEST(s["wall"]["max_angle_deviation_deg"].get<double>() < 1e-6);
   BOOST_TEST(std::abs(s["wall"]["first_cell_height_mm"]["min"].get<double>() - 0.01) < 1e-11);
+  BOOST_TEST(s["files"].size() == 6u);
   BOOST_TEST(rep["model"]["name"].get<std::string>() == "c3x_vane");
+  BOOST_TEST(rep["outputs"].size() == 7u);
 }
 
 BOOST_AUTO_TEST_CASE(grid_config_errors_name_the_field) {
@@ -253,11 +264,10 @@ BOOST_AUTO_TEST_CASE(grid_config_errors_name_the_field) {
   nlohmann::json d = doc;
   d["grid"] = {{"thickness", 100}};
   const config::Config c = config::parse_config(d, COOLINGGEN_SOURCE_DIR "/data/examples", "c3x");
-  const blade::BladeModel m = config::build_model(c);
   try {
-    io::build_section_grids(m, {0}, c.grid.options);
+    pipeline::run_grid(c);
     BOOST_FAIL("no error");
-  } catch (const InvalidGeometry& e) {
+  } catch (const config::ConfigError& e) {
     BOOST_TEST(std::string(e.what()).rfind("grid.thickness:", 0) == 0);
     BOOST_TEST(std::string(e.what()).find("(sections[0])") != std::string::npos);
   }
