@@ -142,6 +142,55 @@ void untangle(Block& b, int j0, int rounds) {
   }
 }
 
+// Smallest sine of a corner angle of cell (i, j) (negative: inverted).
+double cell_quality(const Block& b, int i, int j) {
+  const Eigen::Vector2d p[4] = {b.at(i, j), b.at(i + 1, j), b.at(i + 1, j + 1), b.at(i, j + 1)};
+  double q = 1;
+  for (int k = 0; k < 4; ++k) {
+    const Eigen::Vector2d a = p[(k + 1) % 4] - p[k], c = p[(k + 3) % 4] - p[k];
+    const double la = a.norm(), lc = c.norm();
+    q = std::min(q, la > 0 && lc > 0 ? (a.x() * c.y() - a.y() * c.x()) / (la * lc) : -1.0);
+  }
+  return q;
+}
+
+// Quality-guarded smoothing (in the spirit of Freitag's smart Laplacian): a node j0 < j < nj whose four
+// cells include one with scaled Jacobian below `threshold` moves to the mean of its four neighbours
+// only if the worst of its four cells gets better and the ratio of its neighbouring edge lengths along
+// either grid line stays below max(3, before). It never inverts a cell and leaves good regions (and so
+// the wall-normal clustering) alone.
+void improve_worst_cells(Block& b, int j0, double threshold, int sweeps) {
+  const int ni = b.ni;
+  auto local = [&](int i, int j) {
+    const int im = (i + ni - 1) % ni;
+    return std::min({cell_quality(b, im, j - 1), cell_quality(b, i, j - 1), cell_quality(b, im, j), cell_quality(b, i, j)});
+  };
+  auto ratio = [&](int i, int j) {
+    const double l = (b.at(i, j) - b.at((i + ni - 1) % ni, j)).norm(), r = (b.at((i + 1) % ni, j) - b.at(i, j)).norm();
+    const double d = (b.at(i, j) - b.at(i, j - 1)).norm(), u = (b.at(i, j + 1) - b.at(i, j)).norm();
+    return std::max({l / r, r / l, d / u, u / d});
+  };
+  for (int sweep = 0; sweep < sweeps; ++sweep) {
+    int moved = 0;
+    for (int j = j0 + 1; j < b.nj; ++j)
+      for (int i = 0; i < ni; ++i) {
+        const double before = local(i, j);
+        if (before >= threshold) continue;
+        const double ratio_limit = std::max(3.0, ratio(i, j));
+        const Eigen::Vector2d old = b.at(i, j);
+        b.at(i, j) = 0.25 * (b.at((i + 1) % ni, j) + b.at((i + ni - 1) % ni, j) + b.at(i, j + 1) + b.at(i, j - 1));
+        if (i == 0) b.at(ni, j) = b.at(0, j);
+        if (local(i, j) > before && ratio(i, j) <= ratio_limit) {
+          ++moved;
+        } else {
+          b.at(i, j) = old;
+          if (i == 0) b.at(ni, j) = old;
+        }
+      }
+    if (moved == 0) break;
+  }
+}
+
 }  // namespace
 
 std::pair<double, double> axial_range(const blade::SectionProfile& section) {
@@ -359,6 +408,7 @@ BuiltGrid build_cascade_grid(const blade::SectionProfile& section, const WallPat
   }
   for (int j = 0; j <= nj; ++j) og.at(ni, j) = og.at(0, j);
   untangle(og, wall_layers, 50);
+  improve_worst_cells(og, wall_layers, 0.3, 50);
   out.grid.blocks.push_back(std::move(og));
   out.wall_layers = wall_layers;
 
