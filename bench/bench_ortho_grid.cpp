@@ -204,6 +204,46 @@ void bench_grids(int reps, bool quick) {
   }
 }
 
+// Robustness: every combination of pitch (0.85, 1, 1.2 x nominal), cells around (175 with 30/49 interface
+// cells, 241 with 40/61), cells normal (40, 59) and thickness (default, 0.01 chord) on the four sections:
+// no inverted cell allowed.
+void sweep_cascades() {
+  const config::Config c3x = config::load_config_file(COOLINGGEN_BENCH_SOURCE_DIR "/data/examples/c3x_vane.json");
+  const blade::BladeModel m3 = config::build_model(c3x);
+  const blade::BladeModel mh = config::build_model(config::builtin_example_config());
+  const std::vector<std::pair<const blade::SectionProfile*, double>> sections = {
+      {&m3.profiles[0], 117.73}, {&mh.profiles[0], 31.4}, {&mh.profiles[1], 31.4}, {&mh.profiles[2], 31.4}};
+  int grids = 0, failed = 0;
+  double worst = 1;
+  const auto t0 = std::chrono::steady_clock::now();
+  for (const auto& [section, pitch] : sections)
+    for (double pf : {0.85, 1.0, 1.2})
+      for (int around : {175, 241})
+        for (int normal : {40, 59})
+          for (double th : {0.0, 0.01}) {
+            grid::SectionGridOptions o;
+            o.cells_around = around;
+            o.cells_normal = normal;
+            o.thickness = th * section->chord();
+            o.cascade = grid::CascadeOptions{};
+            o.cascade->pitch = pf * pitch;
+            if (around == 241) {
+              o.cascade->inlet_cells_pitchwise = 40;
+              o.cascade->outlet_cells_pitchwise = 61;
+            }
+            ++grids;
+            try {
+              worst = std::min(worst, grid::build_section_grid(*section, o).report.min_scaled_jacobian);
+            } catch (const std::exception& e) {
+              ++failed;
+              std::printf("  pitch %.2f x, %d x %d, thickness %.2f chord: %s\n", pf, around, normal, th, e.what());
+            }
+          }
+  std::printf("cascade sweep: %d grids on 4 sections, %d failed, min scaled Jacobian %.3f, %.1f s\n", grids, failed, worst,
+              std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  expect(failed == 0, "every cascade of the sweep valid");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -213,6 +253,7 @@ int main(int argc, char** argv) {
   bench_monte_carlo(quick ? 2 : 10, 40);
   bench_least_squares(quick ? 2 : 5);
   bench_grids(quick ? 1 : 5, quick);
+  if (!quick) sweep_cascades();
   if (g_failures) std::printf("%d check(s) FAILED\n", g_failures);
   return g_failures ? 1 : 0;
 }
