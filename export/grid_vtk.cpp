@@ -12,21 +12,11 @@
 #include <fstream>
 
 #include "export/atomic_file.hpp"
+#include "src/grid/grid_quality.hpp"
 
 namespace cg::io {
 
 namespace {
-
-double min_corner_sine(const grid::Block& b, int i, int j) {
-  const Eigen::Vector2d p[4] = {b.at(i, j), b.at(i + 1, j), b.at(i + 1, j + 1), b.at(i, j + 1)};
-  double s = 1;
-  for (int k = 0; k < 4; ++k) {
-    const Eigen::Vector2d a = p[(k + 1) % 4] - p[k], c = p[(k + 3) % 4] - p[k];
-    const double la = a.norm(), lc = c.norm();
-    s = std::min(s, la > 0 && lc > 0 ? (a.x() * c.y() - a.y() * c.x()) / (la * lc) : -1.0);
-  }
-  return s;
-}
 
 std::string xml_escape(const std::string& s) {
   std::string out;
@@ -59,7 +49,7 @@ void write_vts(const std::filesystem::path& file, const grid::Block& b, int bloc
   id->SetNumberOfTuples(b.cells());
   for (int j = 0; j < b.nj; ++j)
     for (int i = 0; i < b.ni; ++i) {
-      jac->SetValue(j * b.ni + i, min_corner_sine(b, i, j));
+      jac->SetValue(j * b.ni + i, grid::cell_scaled_jacobian(b, i, j));
       id->SetValue(j * b.ni + i, block_index);
     }
   sg->GetCellData()->AddArray(jac);

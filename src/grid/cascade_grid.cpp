@@ -3,14 +3,15 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
-#include <sstream>
 
 #include "src/algo/ray_curve.hpp"
+#include "src/blade/format.hpp"
 #include "src/core/error.hpp"
 #include "src/fit/approximate.hpp"
 #include "src/fit/interpolate.hpp"
 #include "src/grid/builders.hpp"
 #include "src/grid/distribution.hpp"
+#include "src/grid/grid_quality.hpp"
 #include "src/grid/wall_nodes.hpp"
 
 namespace cg::grid::detail {
@@ -24,12 +25,7 @@ constexpr double kInletGap = 0.3, kInterfaceGapLayers = 2.5, kOutletGap = 0.4;
 // Share of the uniform correspondence mixed into the normal-ray one (see build_cascade_grid).
 constexpr double kUniformShare = 0.1;
 
-std::string mm(double x) {
-  std::ostringstream s;
-  s.precision(5);
-  s << x << " mm";
-  return s.str();
-}
+std::string mm(double x) { return blade::detail::fmt(x) + " mm"; }
 
 // The section's mid-line b(a) between its two sides across the passage: midpoints of the vertical cuts
 // a = const (exact line-curve intersections), smoothed by a least-squares cubic with 6 poles (The NURBS
@@ -111,14 +107,7 @@ std::vector<Eigen::Vector2d> hermite_nodes(const Eigen::Vector2d& R, const Eigen
 // inverted (or `rounds` is used up). Rows j0 (the last wall layer) and nj (the outer boundary) stay.
 void untangle(Block& b, int j0, int rounds) {
   const int ni = b.ni;
-  auto inverted = [&](int i, int j) {
-    const Eigen::Vector2d p[4] = {b.at(i, j), b.at(i + 1, j), b.at(i + 1, j + 1), b.at(i, j + 1)};
-    for (int k = 0; k < 4; ++k) {
-      const Eigen::Vector2d a = p[(k + 1) % 4] - p[k], c = p[(k + 3) % 4] - p[k];
-      if (!(a.x() * c.y() - a.y() * c.x() > 0)) return true;
-    }
-    return false;
-  };
+  auto inverted = [&](int i, int j) { return !(cell_scaled_jacobian(b, i, j) > 0); };
   for (int round = 0; round < rounds; ++round) {
     std::vector<char> mark(static_cast<std::size_t>(ni * (b.nj + 1)), 0);
     bool any = false;
@@ -142,18 +131,6 @@ void untangle(Block& b, int j0, int rounds) {
   }
 }
 
-// Smallest sine of a corner angle of cell (i, j) (negative: inverted).
-double cell_quality(const Block& b, int i, int j) {
-  const Eigen::Vector2d p[4] = {b.at(i, j), b.at(i + 1, j), b.at(i + 1, j + 1), b.at(i, j + 1)};
-  double q = 1;
-  for (int k = 0; k < 4; ++k) {
-    const Eigen::Vector2d a = p[(k + 1) % 4] - p[k], c = p[(k + 3) % 4] - p[k];
-    const double la = a.norm(), lc = c.norm();
-    q = std::min(q, la > 0 && lc > 0 ? (a.x() * c.y() - a.y() * c.x()) / (la * lc) : -1.0);
-  }
-  return q;
-}
-
 // Quality-guarded smoothing (in the spirit of Freitag's smart Laplacian): a node j0 < j < nj whose four
 // cells include one with scaled Jacobian below `threshold` moves to the mean of its four neighbours
 // only if the worst of its four cells gets better and the ratio of its neighbouring edge lengths along
@@ -163,7 +140,7 @@ void improve_worst_cells(Block& b, int j0, double threshold, int sweeps) {
   const int ni = b.ni;
   auto local = [&](int i, int j) {
     const int im = (i + ni - 1) % ni;
-    return std::min({cell_quality(b, im, j - 1), cell_quality(b, i, j - 1), cell_quality(b, im, j), cell_quality(b, i, j)});
+    return std::min({cell_scaled_jacobian(b, im, j - 1), cell_scaled_jacobian(b, i, j - 1), cell_scaled_jacobian(b, im, j), cell_scaled_jacobian(b, i, j)});
   };
   auto ratio = [&](int i, int j) {
     const double l = (b.at(i, j) - b.at((i + ni - 1) % ni, j)).norm(), r = (b.at((i + 1) % ni, j) - b.at(i, j)).norm();
@@ -353,18 +330,8 @@ BuiltGrid build_cascade_grid(const blade::SectionProfile& section, const WallPat
     for (int j = 0; j < samples; ++j)
       slope[static_cast<std::size_t>(j)] = (tau[static_cast<std::size_t>(j) + 1] - tau[static_cast<std::size_t>(j)]) / (P / samples);
     const double mean_slope = L / P;
-    const double sigma = 1.0 * samples / ni;
-    const int half = static_cast<int>(std::ceil(3 * sigma));
-    std::vector<double> smooth(slope.size());
-    for (int j = 0; j < samples; ++j) {
-      double sum = 0, wsum = 0;
-      for (int d = -half; d <= half; ++d) {
-        const double w = std::exp(-0.5 * d * d / (sigma * sigma));
-        sum += w * slope[static_cast<std::size_t>(((j + d) % samples + samples) % samples)];
-        wsum += w;
-      }
-      smooth[static_cast<std::size_t>(j)] = (1 - kUniformShare) * sum / wsum + kUniformShare * mean_slope;
-    }
+    std::vector<double> smooth = smooth_periodic(slope, 1.0 * samples / ni);
+    for (double& x : smooth) x = (1 - kUniformShare) * x + kUniformShare * mean_slope;
     double total = 0;
     for (double x : smooth) total += x * P / samples;
     for (int j = 0; j < samples; ++j)

@@ -2,20 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
+#include "src/blade/format.hpp"
 #include "src/core/error.hpp"
 
 namespace cg::grid {
 
 namespace {
 
-std::string num(double x) {
-  std::ostringstream s;
-  s.precision(6);
-  s << x;
-  return s.str();
-}
+using blade::detail::fmt;
 
 // Root of f on [lo, hi] by bisection (f(lo) and f(hi) of opposite signs): robust and plenty fast here.
 template <class F>
@@ -44,9 +39,9 @@ std::vector<double> geometric_then_uniform(double first, double ratio, int cells
   require(first > 0 && ratio >= 1 && cells >= 1 && length > 0, "geometric_then_uniform: invalid arguments");
   const double lo = first * cells, hi = geometric_length(first, ratio, cells);
   if (length < lo * (1 - 1e-12) || length > hi * (1 + 1e-12))
-    throw InvalidGeometry("the thickness " + num(length) + " mm cannot be reached with " + std::to_string(cells) +
-                          " cells from a first cell of " + num(first) + " mm growing by at most " + num(ratio) +
-                          ": it must lie in [" + num(lo) + ", " + num(hi) + "] mm");
+    throw InvalidGeometry("the thickness " + fmt(length) + " mm cannot be reached with " + std::to_string(cells) +
+                          " cells from a first cell of " + fmt(first) + " mm growing by at most " + fmt(ratio) +
+                          ": it must lie in [" + fmt(lo) + ", " + fmt(hi) + "] mm");
   // The smallest k (number of geometric cells) whose uniform rest spacing is <= first ratio^k; then it
   // is > first ratio^(k-1) as well (the rest spacing is a weighted mean of the previous ones).
   int k = 0;
@@ -73,7 +68,7 @@ std::vector<double> geometric_fill(double first, int cells, double length, doubl
       while (f(hi) < 0) hi *= 2;  // geometric_length grows without bound in q
     } else {
       lo = 0.0;  // f(0) = first - length < 0 for one cell shorter than the whole
-      require(first < length, "geometric_fill: the first cell " + num(first) + " mm is longer than the whole " + num(length) + " mm");
+      require(first < length, "geometric_fill: the first cell " + fmt(first) + " mm is longer than the whole " + fmt(length) + " mm");
     }
     r = bisect(f, lo, hi);
   }
@@ -128,6 +123,22 @@ std::vector<double> two_sided_stretching(int cells, double length, double d0, do
     s = vinokur(cells, length, a, b);
   }
   return s;
+}
+
+std::vector<double> smooth_periodic(const std::vector<double>& v, double sigma) {
+  require(sigma > 0 && !v.empty(), "smooth_periodic: invalid arguments");
+  const int n = static_cast<int>(v.size()), half = static_cast<int>(std::ceil(3 * sigma));
+  std::vector<double> out(v.size());
+  for (int k = 0; k < n; ++k) {
+    double sum = 0, wsum = 0;
+    for (int d = -half; d <= half; ++d) {
+      const double w = std::exp(-0.5 * d * d / (sigma * sigma));
+      sum += w * v[static_cast<std::size_t>(((k + d) % n + n) % n)];
+      wsum += w;
+    }
+    out[static_cast<std::size_t>(k)] = sum / wsum;
+  }
+  return out;
 }
 
 std::vector<double> equidistribute(const std::vector<double>& density, int cells, double length) {

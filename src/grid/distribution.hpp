@@ -26,6 +26,10 @@ std::vector<double> geometric_fill(double first, int cells, double length, doubl
 /// iteration until the first and last cells match them to 1e-9 (when both fit into the length).
 std::vector<double> two_sided_stretching(int cells, double length, double d0, double d1);
 
+/// Periodic Gaussian smoothing of equally spaced samples (the sequence wraps): standard deviation `sigma`
+/// in samples, kernel cut at 3 sigma.
+std::vector<double> smooth_periodic(const std::vector<double>& values, double sigma);
+
 /// Equidistribution of a positive density sampled at equally spaced points on [0, length] (piecewise
 /// linear): node k sits where the integral of the density reaches k / cells of the total.
 std::vector<double> equidistribute(const std::vector<double>& density, int cells, double length);

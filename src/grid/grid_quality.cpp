@@ -11,22 +11,26 @@ namespace {
 double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
 }  // namespace
 
+double cell_scaled_jacobian(const Block& b, int i, int j) {
+  const Eigen::Vector2d p[4] = {b.at(i, j), b.at(i + 1, j), b.at(i + 1, j + 1), b.at(i, j + 1)};
+  double q = 1;
+  for (int k = 0; k < 4; ++k) {
+    const Eigen::Vector2d a = p[(k + 1) % 4] - p[k], c = p[(k + 3) % 4] - p[k];
+    const double la = a.norm(), lc = c.norm();
+    q = std::min(q, la > 0 && lc > 0 ? cross(a, c) / (la * lc) : -1.0);  // a collapsed edge counts as inverted
+  }
+  return q;
+}
+
 BlockQuality block_quality(const Block& b) {
   BlockQuality q;
   q.name = b.name;
   q.cells = b.cells();
   for (int j = 0; j < b.nj; ++j)
     for (int i = 0; i < b.ni; ++i) {
-      const Eigen::Vector2d p[4] = {b.at(i, j), b.at(i + 1, j), b.at(i + 1, j + 1), b.at(i, j + 1)};
-      bool bad = false;
-      for (int k = 0; k < 4; ++k) {
-        const Eigen::Vector2d a = p[(k + 1) % 4] - p[k], c = p[(k + 3) % 4] - p[k];
-        const double J = cross(a, c), la = a.norm(), lc = c.norm();
-        const double scaled = la > 0 && lc > 0 ? J / (la * lc) : -1.0;
-        q.min_scaled_jacobian = std::min(q.min_scaled_jacobian, scaled);
-        if (!(J > 0)) bad = true;
-      }
-      if (bad) ++q.inverted_cells;
+      const double s = cell_scaled_jacobian(b, i, j);
+      q.min_scaled_jacobian = std::min(q.min_scaled_jacobian, s);
+      if (!(s > 0)) ++q.inverted_cells;
     }
   // Neighbouring cell sizes along i and j lines (edge lengths of consecutive edges).
   for (int j = 0; j <= b.nj; ++j)

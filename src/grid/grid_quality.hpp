@@ -13,6 +13,10 @@
 
 namespace cg::grid {
 
+/// Smallest sine of the four corner angles of cell (i, j) (the scaled Jacobian; <= 0: inverted or
+/// degenerate, the cell is not valid).
+double cell_scaled_jacobian(const Block& b, int i, int j);
+
 struct BlockQuality {
   std::string name;
   int cells = 0;

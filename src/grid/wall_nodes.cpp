@@ -54,21 +54,10 @@ std::vector<double> clustered_wall_positions(const blade::SectionProfile& sectio
   for (int k = 0; k < n; ++k)
     raw[static_cast<std::size_t>(k)] =
         1.0 + clustering * std::abs(signed_curvature(section.curve, u[static_cast<std::size_t>(k)])) * P / (2 * M_PI);
-  // Periodic Gaussian smoothing, sigma = 1.5 mean cells: the curvature of an interpolated profile jumps
-  // where an edge circle meets a flank; the cell sizes should not.
-  const double sigma = 1.5 * per_cell;
-  const int half = static_cast<int>(std::ceil(3 * sigma));
-  std::vector<double> density(static_cast<std::size_t>(n) + 1);
-  for (int k = 0; k < n; ++k) {
-    double sum = 0, wsum = 0;
-    for (int d = -half; d <= half; ++d) {
-      const double w = std::exp(-0.5 * d * d / (sigma * sigma));
-      sum += w * raw[static_cast<std::size_t>(((k + d) % n + n) % n)];
-      wsum += w;
-    }
-    density[static_cast<std::size_t>(k)] = sum / wsum;
-  }
-  density.back() = density.front();
+  // Smoothed over 1.5 mean cells: the curvature of an interpolated profile jumps where an edge circle
+  // meets a flank; the cell sizes should not.
+  std::vector<double> density = smooth_periodic(raw, 1.5 * per_cell);
+  density.push_back(density.front());
   return equidistribute(density, cells, P);
 }
 
