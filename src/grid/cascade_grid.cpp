@@ -7,11 +7,10 @@
 #include "src/algo/ray_curve.hpp"
 #include "src/blade/format.hpp"
 #include "src/core/error.hpp"
-#include "src/fit/approximate.hpp"
-#include "src/fit/interpolate.hpp"
 #include "src/grid/builders.hpp"
 #include "src/grid/distribution.hpp"
-#include "src/grid/grid_quality.hpp"
+#include "src/grid/grid_repair.hpp"
+#include "src/grid/mid_line.hpp"
 #include "src/grid/wall_nodes.hpp"
 
 namespace cg::grid::detail {
@@ -26,52 +25,6 @@ constexpr double kInletGap = 0.3, kInterfaceGapLayers = 2.5, kOutletGap = 0.4;
 constexpr double kUniformShare = 0.1;
 
 std::string mm(double x) { return blade::detail::fmt(x) + " mm"; }
-
-// The section's mid-line b(a) between its two sides across the passage: midpoints of the vertical cuts
-// a = const (exact line-curve intersections), smoothed by a least-squares cubic with 6 poles (The NURBS
-// Book 9.4.1), continued by its end tangents outside [a_min, a_max].
-class MidLine {
- public:
-  MidLine(const BSplineCurve<2>& wall, double a_min, double a_max) {
-    const int stations = 41;
-    std::vector<Eigen::Matrix<double, 1, 1>> y;
-    std::vector<double> x;
-    for (int k = 1; k < stations; ++k) {
-      const double a = a_min + (a_max - a_min) * 0.5 * (1 - std::cos(M_PI * k / stations));
-      const auto hits = line_curve_intersections(wall, Eigen::Vector2d(a, 0), Eigen::Vector2d(0, 1),
-                                                 -std::numeric_limits<double>::infinity(),
-                                                 std::numeric_limits<double>::infinity());
-      if (hits.size() < 2) continue;
-      x.push_back(a);
-      y.emplace_back(0.5 * (hits.front().point.y() + hits.back().point.y()));
-    }
-    require(x.size() >= 8, "cascade grid: the section is too thin to find its mid-line");
-    const int poles = 6;
-    fit_ = fit_least_squares<1>(y, x, 3, approximation_knots(x, 3, poles));
-    lo_ = x.front();
-    hi_ = x.back();
-  }
-  double y(double a) const {
-    const double c = std::clamp(a, lo_, hi_);
-    Eigen::Matrix<double, 1, 1> d[2];
-    fit_.derivatives(c, 1, d);
-    return d[0][0] + d[1][0] * (a - c);
-  }
-  /// The line shifted by `offset` across the passage on [a0, a1] as a plane cubic (interpolating 121
-  /// samples), for projections onto it.
-  BSplineCurve<2> shifted_curve(double offset, double a0, double a1) const {
-    PointList<2> pts;
-    for (int k = 0; k <= 120; ++k) {
-      const double a = a0 + (a1 - a0) * k / 120;
-      pts.emplace_back(a, y(a) + offset);
-    }
-    return interpolate<2>(pts, 3);
-  }
-
- private:
-  BSplineCurve<1> fit_;
-  double lo_ = 0, hi_ = 0;
-};
 
 // Cubic Hermite curve from R (tangent T0) to O (tangent T1), sampled by arc length: the nodes at the
 // given distances along it (the polyline of 128 samples is inverted linearly).
@@ -100,72 +53,6 @@ std::vector<Eigen::Vector2d> hermite_nodes(const Eigen::Vector2d& R, const Eigen
     out.push_back(c == 0 ? R : c == cells ? O : P(t));
   }
   return out;
-}
-
-// Local untangling: the nodes j0 < j < nj around cells with a non-positive corner Jacobian (and their
-// neighbours) move to the mean of their four neighbours, a few sweeps at a time, until no cell is
-// inverted (or `rounds` is used up). Rows j0 (the last wall layer) and nj (the outer boundary) stay.
-void untangle(Block& b, int j0, int rounds) {
-  const int ni = b.ni;
-  auto inverted = [&](int i, int j) { return !(cell_scaled_jacobian(b, i, j) > 0); };
-  for (int round = 0; round < rounds; ++round) {
-    std::vector<char> mark(static_cast<std::size_t>(ni * (b.nj + 1)), 0);
-    bool any = false;
-    for (int j = j0; j < b.nj; ++j)
-      for (int i = 0; i < ni; ++i)
-        if (inverted(i, j)) {
-          any = true;
-          for (int dj = -2; dj <= 3; ++dj)
-            for (int di = -2; di <= 3; ++di) {
-              const int jj = j + dj;
-              if (jj > j0 && jj < b.nj) mark[static_cast<std::size_t>(jj * ni + ((i + di) % ni + ni) % ni)] = 1;
-            }
-        }
-    if (!any) return;
-    for (int sweep = 0; sweep < 5; ++sweep)
-      for (int j = j0 + 1; j < b.nj; ++j)
-        for (int i = 0; i < ni; ++i)
-          if (mark[static_cast<std::size_t>(j * ni + i)])
-            b.at(i, j) = 0.25 * (b.at((i + 1) % ni, j) + b.at((i + ni - 1) % ni, j) + b.at(i, j + 1) + b.at(i, j - 1));
-    for (int j = 0; j <= b.nj; ++j) b.at(ni, j) = b.at(0, j);
-  }
-}
-
-// Quality-guarded smoothing (in the spirit of Freitag's smart Laplacian): a node j0 < j < nj whose four
-// cells include one with scaled Jacobian below `threshold` moves to the mean of its four neighbours
-// only if the worst of its four cells gets better and the ratio of its neighbouring edge lengths along
-// either grid line stays below max(3, before). It never inverts a cell and leaves good regions (and so
-// the wall-normal clustering) alone.
-void improve_worst_cells(Block& b, int j0, double threshold, int sweeps) {
-  const int ni = b.ni;
-  auto local = [&](int i, int j) {
-    const int im = (i + ni - 1) % ni;
-    return std::min({cell_scaled_jacobian(b, im, j - 1), cell_scaled_jacobian(b, i, j - 1), cell_scaled_jacobian(b, im, j), cell_scaled_jacobian(b, i, j)});
-  };
-  auto ratio = [&](int i, int j) {
-    const double l = (b.at(i, j) - b.at((i + ni - 1) % ni, j)).norm(), r = (b.at((i + 1) % ni, j) - b.at(i, j)).norm();
-    const double d = (b.at(i, j) - b.at(i, j - 1)).norm(), u = (b.at(i, j + 1) - b.at(i, j)).norm();
-    return std::max({l / r, r / l, d / u, u / d});
-  };
-  for (int sweep = 0; sweep < sweeps; ++sweep) {
-    int moved = 0;
-    for (int j = j0 + 1; j < b.nj; ++j)
-      for (int i = 0; i < ni; ++i) {
-        const double before = local(i, j);
-        if (before >= threshold) continue;
-        const double ratio_limit = std::max(3.0, ratio(i, j));
-        const Eigen::Vector2d old = b.at(i, j);
-        b.at(i, j) = 0.25 * (b.at((i + 1) % ni, j) + b.at((i + ni - 1) % ni, j) + b.at(i, j + 1) + b.at(i, j - 1));
-        if (i == 0) b.at(ni, j) = b.at(0, j);
-        if (local(i, j) > before && ratio(i, j) <= ratio_limit) {
-          ++moved;
-        } else {
-          b.at(i, j) = old;
-          if (i == 0) b.at(ni, j) = old;
-        }
-      }
-    if (moved == 0) break;
-  }
 }
 
 }  // namespace
