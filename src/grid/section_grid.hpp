@@ -15,12 +15,17 @@
 //    j = nj), the periodic cut i = 0 / i = ni ("o_cut").
 //  - cascade (pitch given): the O-grid's outer boundary is the passage: the inlet interface (a line of
 //    constant a upstream of the LE), the two periodic lines (the section's mid-line shifted by +-pitch/2
-//    across the passage, node-matched), the outlet interface downstream of the TE. The wall layers out to
-//    `thickness` are on the wall patches (geometric growth), the rest of each grid line is a cubic Hermite
-//    curve leaving the last wall layer along the wall normal, with cells growing geometrically to the
-//    outer boundary. Blocks "inlet" and "outlet" (H-type, periodic in the pitchwise direction) continue to
-//    the inlet and outlet planes. Paper layout and our defaults: O-grid 175 x 59 = inlet-interface cells
-//    (30) + 2 x periodic cells (48) + outlet-interface cells (49) around; inlet 19 x 30, outlet 39 x 49.
+//    across the passage, node-matched), the outlet interface downstream of the TE (the near wake stays in
+//    the O-grid). Outer nodes are uniform along each of the four pieces. The wall layers out to
+//    `thickness` are on the wall patches (geometric growth); the rest of each grid line is a cubic Hermite
+//    curve leaving the last wall layer along the wall normal, with cells growing geometrically to its
+//    outer node. Wall node i belongs to outer node i through the normal rays: the ray from the last wall
+//    layer first hits the outer loop at tau(s); the wall nodes are tau^-1 of the outer nodes (smoothed,
+//    with a share of the uniform correspondence). A local untangling and a quality-guarded smoothing of
+//    the passage part finish the O-grid. Blocks "inlet" and "outlet" (H-type, periodic in the pitchwise
+//    direction) continue to the inlet and outlet planes. Paper layout and our defaults: O-grid 175 x 59 =
+//    inlet-interface cells (30) + 2 x periodic cells (48) + outlet-interface cells (49) around; inlet
+//    19 x 30, outlet 39 x 49.
 // Every block is checked: no cell with a non-positive corner Jacobian, connections node-matched.
 #include <optional>
 #include <string>
