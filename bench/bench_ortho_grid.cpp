@@ -183,7 +183,7 @@ void bench_grid(const char* name, const blade::SectionProfile& s, const grid::Se
 
 void bench_grids(int reps, bool quick) {
   std::printf("grids (build + checks, no files):\n");
-  const config::Config c3x = config::load_config_file(COOLINGGEN_BENCH_SOURCE_DIR "/data/examples/c3x_vane.json");
+  const config::Config c3x = config::load_config_file(COOLINGGEN_SOURCE_DIR "/data/examples/c3x_vane.json");
   const blade::BladeModel m3 = config::build_model(c3x);
   grid::SectionGridOptions o;
   bench_grid("C3X O-grid 175 x 59", m3.profiles[0], o, reps);
@@ -208,7 +208,7 @@ void bench_grids(int reps, bool quick) {
 // cells, 241 with 40/61), cells normal (40, 59) and thickness (default, 0.01 chord) on the four sections:
 // no inverted cell allowed.
 void sweep_cascades() {
-  const config::Config c3x = config::load_config_file(COOLINGGEN_BENCH_SOURCE_DIR "/data/examples/c3x_vane.json");
+  const config::Config c3x = config::load_config_file(COOLINGGEN_SOURCE_DIR "/data/examples/c3x_vane.json");
   const blade::BladeModel m3 = config::build_model(c3x);
   const blade::BladeModel mh = config::build_model(config::builtin_example_config());
   const std::vector<std::pair<const blade::SectionProfile*, double>> sections = {
