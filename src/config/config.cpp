@@ -183,7 +183,7 @@ blade::BladeOptions blade_options(const Field& f) {
 
 Config parse_config(const nlohmann::json& document, const std::filesystem::path& base_dir, const std::string& default_name) {
   const Field root(document, "");
-  root.expect_object({"$schema", "name", "description", "units", "flow_path", "sections", "blade", "output"});
+  root.expect_object({"$schema", "name", "description", "units", "flow_path", "sections", "blade", "output", "grid"});
   Config c;
   c.source = document;
   c.name = root.has("name") ? root.at("name").string() : default_name;
@@ -217,6 +217,7 @@ Config parse_config(const nlohmann::json& document, const std::filesystem::path&
       c.output.step_schema = out.at("step_schema").choice({"AP214", "AP242"}) == 1 ? "AP242" : "AP214";
     if (out.has("product_name")) c.output.product_name = out.at("product_name").string();
   }
+  if (root.has("grid")) c.grid = parse_grid_config(root.at("grid"), n);
   return c;
 }
 
