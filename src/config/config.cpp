@@ -184,7 +184,8 @@ blade::BladeOptions blade_options(const Field& f) {
 
 Config parse_config(const nlohmann::json& document, const std::filesystem::path& base_dir, const std::string& default_name) {
   const Field root(document, "");
-  root.expect_object({"$schema", "name", "description", "units", "flow_path", "sections", "blade", "output", "mesh"});
+  root.expect_object({"$schema", "name", "description", "units", "flow_path", "sections", "blade", "output", "mesh",
+                      "grid"});
   Config c;
   c.source = document;
   c.name = root.has("name") ? root.at("name").string() : default_name;
@@ -221,6 +222,7 @@ Config parse_config(const nlohmann::json& document, const std::filesystem::path&
     read_handoff_output_fields(out, c.output);
   }
   if (root.has("mesh")) c.mesh = mesh_config(root.at("mesh"));
+  if (root.has("grid")) c.grid = parse_grid_config(root.at("grid"), n);
   return c;
 }
 
