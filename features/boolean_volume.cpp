@@ -11,6 +11,7 @@
 #include <BRepAdaptor_Surface.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
+#include <Bnd_OBB.hxx>
 #include <GProp_GProps.hxx>
 #include <GeomAPI_ProjectPointOnSurf.hxx>
 #include <IntTools_Context.hxx>
@@ -29,9 +30,10 @@
 namespace cg::features {
 namespace {
 
-// Relative accuracy of the face integrals: the volume itself (far below the 1e-6 tolerance), and the
+// Relative accuracy of the face integrals: the volume itself (each face flux is of the order of the
+// tool volume, so this is far below the 1e-6 tolerance), and the
 // closure check, which only has to see gaps the size of a face.
-constexpr double kFluxAccuracy = 1e-9, kClosureAccuracy = 1e-6;
+constexpr double kFluxAccuracy = 1e-7, kClosureAccuracy = 1e-5;
 
 struct OrientedPiece {
   TopoDS_Face face;  ///< oriented so its normal points out of the solid it bounds
@@ -122,8 +124,11 @@ VolumeMeasure measure_tool_volumes(const BooleanRun& run, const TopoDS_Shape& pa
 
   // Tool pieces kept in the result, as oriented there.
   std::vector<Bnd_Box> boxes(n);
+  std::vector<Bnd_OBB> obbs(n);
   for (std::size_t t = 0; t < n; ++t) {
     boxes[t] = box_of(tools[t]);
+    BRepBndLib::AddOBB(tools[t], obbs[t], /*useTriangulation=*/false, /*optimal=*/false, /*useShapeTolerance=*/true);
+    obbs[t].Enlarge(1e-6);
     TopTools_IndexedMapOfShape seen;
     for (TopExp_Explorer e(tools[t], TopAbs_FACE); e.More(); e.Next())
       for (const TopoDS_Shape& piece : pieces_of(run, e.Current())) {
@@ -146,12 +151,14 @@ VolumeMeasure measure_tool_volumes(const BooleanRun& run, const TopoDS_Shape& pa
   OSD_Parallel::For(0, static_cast<int>(dropped.size()), [&](int k) {
     const TopoDS_Face& f = dropped[static_cast<std::size_t>(k)].face;
     const Bnd_Box fb = box_of(f);
+    Bnd_OBB fo;
+    BRepBndLib::AddOBB(f, fo, false, false, true);
     gp_Pnt p;
     gp_Pnt2d uv;
     Handle(IntTools_Context) ctx = new IntTools_Context;
     bool have_point = false;
     for (std::size_t t = 0; t < n; ++t) {
-      if (boxes[t].IsOut(fb)) continue;
+      if (boxes[t].IsOut(fb) || obbs[t].IsOut(fo)) continue;
       if (!have_point) {
         if (BOPTools_AlgoTools3D::PointInFace(f, p, uv, ctx) != 0) return;
         have_point = true;

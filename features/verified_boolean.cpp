@@ -72,9 +72,10 @@ class Engine {
       : op_(op), opt_(o), report_(report) {}
 
   std::vector<Unit> units;
+  std::vector<std::string> failures;  // features that could not be applied, with the reason
 
   // Applies units `ids` to `part`: one boolean; on failure, guilty units are isolated (by their volume
-  // or by bisection) and retried perturbed. Throws FeatureFailure when a unit cannot be applied.
+  // or by bisection) and retried perturbed. A unit that cannot be applied is recorded in `failures`.
   brep::NamedShape apply_group(const brep::NamedShape& part, std::vector<int> ids) {
     if (ids.empty()) return part;
     Attempt a = attempt(part, ids, units_shapes(ids), ids);
@@ -189,7 +190,8 @@ class Engine {
     report_.warnings.push_back("boolean of " + std::to_string(ids.size()) + " tool(s) rejected: " + what);
   }
 
-  // Unit `id` failed alone on `part`: perturbed retries, else FeatureFailure.
+  // Unit `id` failed alone on `part`: perturbed retries; if none passes, the failure is recorded and
+  // the part comes back unchanged (apply() throws FeatureFailure naming every failed feature).
   brep::NamedShape retry(const brep::NamedShape& part, int id, const Attempt& first) {
     Unit& u = units[static_cast<std::size_t>(id)];
     std::string last = describe(first, u);
@@ -214,8 +216,9 @@ class Engine {
       last = describe(a, u, expected) + " after " + p.what;
       report_.warnings.push_back(u.label + ": retry " + std::to_string(k) + " (" + p.what + ") rejected: " + last);
     }
-    throw FeatureFailure("feature " + u.label + " could not be applied correctly (" + last + ", " +
-                         std::to_string(opt_.max_retries) + " perturbed retries failed)");
+    failures.push_back("feature " + u.label + " could not be applied correctly (" + last + ", " +
+                       std::to_string(opt_.max_retries) + " perturbed retries failed)");
+    return part;
   }
 
   std::string describe(const Attempt& a, const Unit& u, double expected = std::numeric_limits<double>::quiet_NaN()) const {
@@ -365,6 +368,11 @@ brep::NamedShape BooleanStep::apply(const brep::NamedShape& part) {
   std::vector<int> all(engine.units.size());
   std::iota(all.begin(), all.end(), 0);
   brep::NamedShape result = engine.apply_group(base, all);
+  if (!engine.failures.empty()) {
+    std::string m = engine.failures.front();
+    for (std::size_t k = 1; k < engine.failures.size(); ++k) m += "; " + engine.failures[k];
+    throw FeatureFailure(m);
+  }
 
   // 5. Report, one entry per tool in the order they were added.
   report_.tools.assign(tools_.size(), ToolReport{});
