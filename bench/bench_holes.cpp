@@ -24,6 +24,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -43,6 +44,24 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+// Processor time of the whole process (all threads), s: with other jobs on the machine the wall clock
+// alone says little.
+double cpu_seconds() {
+  timespec t;
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+std::string load_average() {
+  std::FILE* f = std::fopen("/proc/loadavg", "r");
+  if (!f) return "?";
+  char b[64] = {0};
+  const bool ok = std::fgets(b, sizeof b, f) != nullptr;
+  std::fclose(f);
+  std::string s = ok ? b : "?";
+  return s.substr(0, s.find(' '));
+}
 
 struct Workload {
   std::string description;
@@ -89,7 +108,7 @@ std::vector<int> parse_list(const char* s) {
 
 struct OursResult {
   bool ok = false;
-  double seconds = 0;
+  double seconds = 0, cpu = 0;
 };
 
 OursResult run_ours(const Workload& w, const std::vector<features::FeatureTool>& tools) {
@@ -98,6 +117,7 @@ OursResult run_ours(const Workload& w, const std::vector<features::FeatureTool>&
   features::BooleanStep step(features::BooleanOperation::Cut);
   for (const features::FeatureTool& t : tools) step.add(t);
   const auto t0 = Clock::now();
+  const double c0 = cpu_seconds();
   try {
     step.apply(w.part);
   } catch (const std::exception& e) {
@@ -106,6 +126,7 @@ OursResult run_ours(const Workload& w, const std::vector<features::FeatureTool>&
     return r;
   }
   r.seconds = since(t0);
+  r.cpu = cpu_seconds() - c0;
   const features::BooleanStepReport& rep = step.report();
   double worst = 0, removed = 0;
   for (const features::ToolReport& t : rep.tools) {
@@ -114,6 +135,8 @@ OursResult run_ours(const Workload& w, const std::vector<features::FeatureTool>&
   }
   r.ok = rep.check.all_passed();
   std::printf("%d holes: %.1f s, %.1f ms/hole\n", n, r.seconds, 1000 * r.seconds / n);
+  std::printf("    processor time %.1f s (%.1f ms/hole), load average at start %s\n", r.cpu, 1000 * r.cpu / n,
+              load_average().c_str());
   std::printf("    stages: disjoint %.2f s, patches %.2f s (%d faces added), boolean %.2f s, measure %.2f s, "
               "verify %.2f s; %d boolean run(s)\n",
               rep.seconds_disjoint, rep.seconds_patches, rep.patched_faces, rep.seconds_boolean, rep.seconds_measure,
@@ -136,6 +159,7 @@ double run_occt_plain(const Workload& w, const std::vector<features::FeatureTool
     expected += t.expected_volume;
   }
   const auto t0 = Clock::now();
+  const double c0 = cpu_seconds();
   BRepAlgoAPI_Cut cut;
   cut.SetArguments(args);
   cut.SetTools(tls);
@@ -145,7 +169,7 @@ double run_occt_plain(const Workload& w, const std::vector<features::FeatureTool
   cut.SetCheckInverted(false);
   cut.SetNonDestructive(true);
   cut.Build();
-  const double s = since(t0);
+  const double s = since(t0), cpu = cpu_seconds() - c0;
   std::string verdict;
   if (cut.HasErrors()) verdict = "error";
   else {
@@ -160,8 +184,8 @@ double run_occt_plain(const Workload& w, const std::vector<features::FeatureTool
       << (cut.HasWarnings() ? ", warnings" : "");
     verdict = v.str();
   }
-  std::printf("OCCT plain Cut, %d holes: %.1f s, %.1f ms/hole, %s; ours / OCCT = %.2f\n", n, s, 1000 * s / n,
-              verdict.c_str(), ours_seconds / s);
+  std::printf("OCCT plain Cut, %d holes: %.1f s, %.1f ms/hole (processor %.1f s), %s; ours / OCCT = %.2f\n", n, s,
+              1000 * s / n, cpu, verdict.c_str(), ours_seconds / s);
   return s;
 }
 

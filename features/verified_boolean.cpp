@@ -200,9 +200,16 @@ class Engine {
       // A shift changes the volume a little: the independent expectation moves by the change OCCT
       // measures (Common before and after the shift), so a wrong expectation stays wrong.
       double expected = u.expected;
-      if (!p.same_geometry)
-        expected += occt_expected_volume(p.shape.shape, part.shape, op_, u.label) -
-                    occt_expected_volume(u.shape.shape, part.shape, op_, u.label);
+      if (!p.same_geometry) {
+        try {
+          expected += occt_expected_volume(p.shape.shape, part.shape, op_, u.label) -
+                      occt_expected_volume(u.shape.shape, part.shape, op_, u.label);
+        } catch (const FeatureFailure& e) {
+          last = e.what();
+          report_.warnings.push_back(u.label + ": retry " + std::to_string(k) + " (" + p.what + ") skipped: " + last);
+          continue;
+        }
+      }
       const std::vector<double> e{expected};
       const std::vector<const brep::NamedShape*> named{&p.shape};
       Attempt a = attempt(part, {id}, {p.shape.shape}, {id}, &e, &named);
@@ -320,6 +327,7 @@ brep::NamedShape BooleanStep::apply(const brep::NamedShape& part) {
   // 2. Independent expectations where the features gave none (and of every fused cluster).
   t = Clock::now();
   report_progress(progress, 0.1, "expected volumes");
+  check_cancel(progress, "expected volumes");
   std::vector<int> missing;
   for (std::size_t k = 0; k < engine.units.size(); ++k)
     if (std::isnan(engine.units[k].expected) || engine.units[k].members.size() > 1) missing.push_back(static_cast<int>(k));
@@ -342,6 +350,7 @@ brep::NamedShape BooleanStep::apply(const brep::NamedShape& part) {
   brep::NamedShape base = part;
   if (options_.patch_min_tools > 0 && static_cast<int>(engine.units.size()) >= options_.patch_min_tools) {
     report_progress(progress, 0.15, "patches");
+    check_cancel(progress, "patches");
     std::vector<TopoDS_Shape> us;
     for (const Unit& u : engine.units) us.push_back(u.shape.shape);
     PatchOptions po;

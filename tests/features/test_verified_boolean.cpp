@@ -221,3 +221,28 @@ BOOST_AUTO_TEST_CASE(seam_in_a_face_of_the_part) {
   BOOST_TEST(step.report().boolean_runs == 1);
   BOOST_TEST(rel(step.report().tools[0].measured_volume, kPi * 9 / 2 * 10) < 1e-6);
 }
+
+// Progress reaches the sink, and a stop request ends the step with Cancelled (no half-made result).
+BOOST_AUTO_TEST_CASE(progress_and_cancel) {
+  struct Sink : ProgressSink {
+    int reports = 0;
+    bool stop = false;
+    void stage_progress(double, const std::string&) override { ++reports; }
+    bool stop_requested() const override { return stop; }
+  };
+  const brep::NamedShape block = test::named_block(20, 20, 10);
+  Sink going;
+  BooleanOptions o;
+  o.progress = &going;
+  BooleanStep step(BooleanOperation::Cut, o);
+  step.add(cylinder_tool("hole_1", gp_Pnt(5, 5, -1), gp::DZ(), 1, 12, kPi * 10));
+  step.apply(block);
+  BOOST_TEST(going.reports > 3);
+  Sink stopped;
+  stopped.stop = true;
+  o.progress = &stopped;
+  BooleanStep cancelled(BooleanOperation::Cut, o);
+  cancelled.add(cylinder_tool("hole_1", gp_Pnt(5, 5, -1), gp::DZ(), 1, 12, kPi * 10));
+  BOOST_CHECK_THROW(cancelled.apply(block), Cancelled);
+  BOOST_TEST(!cancelled.done());
+}
