@@ -23,6 +23,7 @@
 #include <TopoDS.hxx>
 #include <gp_Pnt2d.hxx>
 
+#include <algorithm>
 #include <cmath>
 
 #include "features/verified_boolean.hpp"
@@ -147,25 +148,46 @@ VolumeMeasure measure_tool_volumes(const BooleanRun& run, const TopoDS_Shape& pa
       if (!result_faces.Contains(piece) && dropped_seen.Add(piece))
         dropped.push_back({orient_like(TopoDS::Face(piece), original), part_sign});
   }
+  // Candidate tools of each dropped piece by box: tools sorted by their lowest x, so a query only
+  // scans the tools whose x range can reach the piece (no scan of every tool per piece).
+  std::vector<std::vector<int>> candidates(dropped.size());
+  {
+    std::vector<std::pair<double, int>> by_x;
+    double widest = 0;
+    for (std::size_t t = 0; t < n; ++t) {
+      double c[6];
+      boxes[t].Get(c[0], c[1], c[2], c[3], c[4], c[5]);
+      by_x.emplace_back(c[0], static_cast<int>(t));
+      widest = std::max(widest, c[3] - c[0]);
+    }
+    std::sort(by_x.begin(), by_x.end());
+    for (std::size_t k = 0; k < dropped.size(); ++k) {
+      const Bnd_Box fb = box_of(dropped[k].face);
+      double c[6];
+      fb.Get(c[0], c[1], c[2], c[3], c[4], c[5]);
+      auto it = std::lower_bound(by_x.begin(), by_x.end(), std::make_pair(c[0] - widest, -1));
+      for (; it != by_x.end() && it->first <= c[3]; ++it)
+        if (!boxes[static_cast<std::size_t>(it->second)].IsOut(fb)) candidates[k].push_back(it->second);
+    }
+  }
   std::vector<int> owner(dropped.size(), -1), owners(dropped.size(), 0);
   OSD_Parallel::For(0, static_cast<int>(dropped.size()), [&](int k) {
     const TopoDS_Face& f = dropped[static_cast<std::size_t>(k)].face;
-    const Bnd_Box fb = box_of(f);
     Bnd_OBB fo;
     BRepBndLib::AddOBB(f, fo, false, false, true);
     gp_Pnt p;
     gp_Pnt2d uv;
     Handle(IntTools_Context) ctx = new IntTools_Context;
     bool have_point = false;
-    for (std::size_t t = 0; t < n; ++t) {
-      if (boxes[t].IsOut(fb) || obbs[t].IsOut(fo)) continue;
+    for (const int t : candidates[static_cast<std::size_t>(k)]) {
+      if (obbs[static_cast<std::size_t>(t)].IsOut(fo)) continue;
       if (!have_point) {
         if (BOPTools_AlgoTools3D::PointInFace(f, p, uv, ctx) != 0) return;
         have_point = true;
       }
-      BRepClass3d_SolidClassifier cls(tools[t], p, 1e-7);
+      BRepClass3d_SolidClassifier cls(tools[static_cast<std::size_t>(t)], p, 1e-7);
       if (cls.State() == TopAbs_IN || cls.State() == TopAbs_ON) {
-        if (owner[static_cast<std::size_t>(k)] < 0) owner[static_cast<std::size_t>(k)] = static_cast<int>(t);
+        if (owner[static_cast<std::size_t>(k)] < 0) owner[static_cast<std::size_t>(k)] = t;
         ++owners[static_cast<std::size_t>(k)];
       }
     }
