@@ -62,6 +62,10 @@ Check closed_mesh_check(const TopoDS_Shape& shape, const VerifyOptions& opt, int
   params.Relative = true;
   params.Angle = opt.mesh_angular_deflection;
   params.InParallel = true;
+  // No extra nodes inside the faces to meet the deflection: this check needs a conforming mesh, not an
+  // accurate one, and the interior refinement broke the triangulation of walls with a span more than
+  // ~500 chords long (holes in the mesh of a valid face; see tests/cli span_range test).
+  params.ControlSurfaceDeflection = false;
   BRepMesh_IncrementalMesh mesher(copy, params, progress->Start());
   progress->throw_if_stopped();
   TopTools_IndexedMapOfShape edges;

@@ -1,12 +1,15 @@
 // coolinggen build [CONFIG] -o DIR [-q] [--timeout S]: the pipeline's run_build + write_outputs, printed.
 #include <cstdio>
+#include <filesystem>
 
+#include "export/atomic_file.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/console_progress.hpp"
 #include "src/cli/exit_codes.hpp"
+#include "src/cli/watchdog.hpp"
 #include "src/pipeline/build.hpp"
 #include "src/pipeline/outputs.hpp"
-#include "src/pipeline/stage_runner.hpp"
+#include "src/pipeline/time_limit.hpp"
 
 namespace cg::cli {
 namespace {
@@ -38,10 +41,17 @@ void print_summary(const config::Config& c, const pipeline::BuildResult& r, cons
 int run_build(const JobOptions& o) {
   ConsoleProgress console(o.show_progress());
   pipeline::TimeLimit limit(&console, o.timeout_s);
+  Watchdog watchdog(limit, console, watchdog_grace(o.timeout_s), o.output.string());
   bool writing = false;
   try {
+    std::error_code ec;  // fail now, not after a build of minutes
+    if (std::filesystem::exists(o.output, ec) && !std::filesystem::is_directory(o.output, ec))
+      throw io::ExportError("output directory " + o.output.string() + " exists and is not a directory");
     const config::Config c = load_config_argument(o.config);
     const pipeline::BuildResult r = pipeline::run_build(c, {}, &limit);
+    // The directory is touched only from here on (write_outputs polls before each file).
+    if (limit.stop_requested()) throw Cancelled("writing outputs", "before");
+    watchdog.set_writing();
     writing = true;
     const pipeline::WrittenOutputs w = pipeline::write_outputs(c, r, o.output, &limit);
     console.interrupt_line();

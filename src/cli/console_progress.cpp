@@ -12,6 +12,14 @@ std::atomic<bool> g_interrupted{false};
 
 extern "C" void on_sigint(int) { g_interrupted = true; }
 
+std::string fixed(double x, int decimals) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, x);
+  return buf;
+}
+
+}  // namespace
+
 // First SIGINT: flag only (SA_RESETHAND restores the default, so a second one terminates).
 void install_interrupt_handler() {
   struct sigaction sa {};
@@ -21,16 +29,7 @@ void install_interrupt_handler() {
   sigaction(SIGINT, &sa, nullptr);
 }
 
-std::string fixed(double x, int decimals) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, x);
-  return buf;
-}
-
-}  // namespace
-
 ConsoleProgress::ConsoleProgress(bool enabled) : enabled_(enabled) {
-  install_interrupt_handler();
   if (enabled_) ticker_ = std::thread([this] { ticker(); });
 }
 
@@ -46,9 +45,10 @@ ConsoleProgress::~ConsoleProgress() {
 
 bool ConsoleProgress::stdout_is_terminal() { return ::isatty(STDOUT_FILENO) == 1; }
 
-void ConsoleProgress::stage_started(const std::string&, const std::string& title) {
+void ConsoleProgress::stage_started(const std::string& stage, const std::string& title) {
   std::lock_guard<std::mutex> lock(mutex_);
   in_stage_ = true;
+  stage_ = stage;
   title_ = title;
   step_.clear();
   fraction_ = -1;
@@ -80,6 +80,12 @@ void ConsoleProgress::interrupt_line() {
     std::fflush(stdout);
   }
   in_stage_ = false;
+}
+
+std::string ConsoleProgress::activity() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (!in_stage_) return "";
+  return "stage '" + stage_ + "'" + (step_.empty() ? "" : ", at " + step_);
 }
 
 // One line per stage: "  solid (blade surface trimmed ...)  3 s  general fuse 45%", redrawn with '\r'

@@ -3,8 +3,9 @@
 //
 // With `enabled`, each stage shows one line on stdout that is redrawn in place while the stage runs
 // (elapsed seconds, the running step, percent when the algorithm reports it) and ends with the stage's
-// time. Disabled (stdout not a terminal, or -q), nothing is printed. The first Ctrl-C (SIGINT) asks the
-// running job to stop at its next check point; a second one ends the process at once.
+// time. Disabled (stdout not a terminal, or -q), nothing is printed. Once install_interrupt_handler()
+// ran, the first Ctrl-C (SIGINT) asks the running job to stop at its next check point; a second one
+// ends the process at once.
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -15,6 +16,9 @@
 #include "src/core/progress.hpp"
 
 namespace cg::cli {
+
+/// Makes the first SIGINT a stop request of every ConsoleProgress (process-wide; main() calls it).
+void install_interrupt_handler();
 
 class ConsoleProgress : public ProgressSink {
  public:
@@ -34,6 +38,8 @@ class ConsoleProgress : public ProgressSink {
 
   /// Ends a stage line that did not finish (error, stop), so later output starts on a new line.
   void interrupt_line();
+  /// What runs now: "stage 'verify', at volume and area" ("" between stages). Thread-safe.
+  std::string activity();
 
  private:
   void redraw_locked(bool final_line, double seconds);
@@ -45,7 +51,7 @@ class ConsoleProgress : public ProgressSink {
   std::thread ticker_;
   bool stop_ticker_ = false;
   bool in_stage_ = false;
-  std::string title_, step_;
+  std::string stage_, title_, step_;
   double fraction_ = -1;  // < 0: not reported
   std::chrono::steady_clock::time_point stage_start_;
   std::size_t last_width_ = 0;

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "src/cli/commands.hpp"
+#include "src/cli/console_progress.hpp"
 #include "src/cli/exit_codes.hpp"
 #include "src/cli/suggest.hpp"
 #include "src/pipeline/version.hpp"
@@ -49,6 +50,7 @@ std::string unknown_command(int argc, char** argv, const std::vector<Command>& c
 }  // namespace
 
 int main(int argc, char** argv) {
+  install_interrupt_handler();
   CLI::App app{"coolinggen: verified CAD models of cooled turbine blades (units mm, degrees)", "coolinggen"};
   app.set_version_flag("--version", std::string("coolinggen ") + pipeline::version());
   app.require_subcommand(1);

@@ -24,11 +24,21 @@ struct OutputOptions {
   std::string product_name;                  ///< name of the product in the STEP file (default: the config's name)
 };
 
+/// Where a point section's points came from, so messages can speak of file lines (the model counts
+/// points from 0).
+struct PointSource {
+  std::string field;       ///< "sections[2].points"
+  std::string file;        ///< the file as read ("" for inline values)
+  std::vector<int> lines;  ///< file line of each point (empty for inline values)
+};
+
 struct Config {
   std::string name;         ///< "name", or the config file's stem
   std::string description;  ///< "description" (optional)
   blade::BladeDefinition blade;
   OutputOptions output;
+  /// One per section, in order; `field` is empty for parametric sections.
+  std::vector<PointSource> point_sources;
   nlohmann::json source;    ///< the parsed document (for the report)
   std::string source_file;  ///< the config file read (empty when parsed from a document or text)
 };
@@ -37,10 +47,13 @@ struct Config {
 /// (so a missing file is a config error). `default_name` is used when the document has no "name".
 Config parse_config(const nlohmann::json& document, const std::filesystem::path& base_dir,
                     const std::string& default_name);
-/// As parse_config, from JSON text (syntax errors become ConfigError with line and column).
+/// As parse_config, from JSON text. Syntax errors, duplicate keys and numbers beyond a double's range
+/// are ConfigErrors naming `source_name` with line and column, or the duplicate key's path
+/// (json_document.hpp).
 Config parse_config_text(const std::string& text, const std::filesystem::path& base_dir,
-                         const std::string& default_name);
+                         const std::string& default_name, const std::string& source_name = "config");
 /// Reads and parses a config file (base directory = the file's directory, default name = its stem).
+/// A missing file, a directory or an unreadable file is a ConfigError saying which.
 Config load_config_file(const std::filesystem::path& file);
 
 /// Builds the blade model from a parsed config; errors of the model are rethrown as ConfigError

@@ -6,9 +6,13 @@
 
 namespace cg::config {
 
+/// Plain notation for magnitudes in [1e-4, 1e15) ("100000", "0.0001"), exponent notation outside.
 inline std::string shortest(double x) {
-  char buf[32];
-  const auto r = std::to_chars(buf, buf + sizeof buf, x);
+  char buf[400];
+  const double a = x < 0 ? -x : x;
+  const bool plain = a == 0 || (a >= 1e-4 && a < 1e15);
+  const auto r = plain ? std::to_chars(buf, buf + sizeof buf, x, std::chars_format::fixed)
+                       : std::to_chars(buf, buf + sizeof buf, x);
   return std::string(buf, r.ptr);
 }
 

@@ -19,6 +19,7 @@
 #include "src/brep/verify.hpp"
 #include "src/config/config.hpp"
 #include "src/core/progress.hpp"
+#include "src/pipeline/time_limit.hpp"
 
 namespace cg::pipeline {
 

@@ -66,13 +66,14 @@ WrittenOutputs write_outputs(const config::Config& c, const BuildResult& r, cons
   WrittenOutputs out;
   out.directory = dir;
   StageRunner stages(progress, out.timings);
-  if (progress && progress->stop_requested()) throw Cancelled("writing outputs", "before");
   OutputDirectory od(dir, kReportFile, owned);
   if (r.valid())
     for (const OutputFormat& f : output_formats()) {
       bool selected = false;
       for (const std::string& n : c.output.formats) selected = selected || n == f.name;
-      if (selected) stages.run(f.name, "write " + f.description, [&] { f.write(od, c, r, progress); });
+      std::string files;
+      for (const std::string& n : f.files) files += (files.empty() ? "" : ", ") + n;
+      if (selected) stages.run(f.name, "write " + files, [&] { f.write(od, c, r, progress); });
     }
   stages.run("report", "write report.json", [&] {
     std::vector<StageTiming> timings = r.timings;

@@ -40,7 +40,8 @@ struct WrittenOutputs {
 /// Writes the outputs of `result` into `dir` (created if missing): when every check passed the files of
 /// config.output.formats, then report.json; when a check failed report.json only (valid: false).
 /// Earlier runs' outputs in `dir` are removed first, and if writing fails or is cancelled the files of
-/// this run are removed again (output_directory.hpp). Throws io::ExportError, Cancelled.
+/// this run are removed again, so after an exception `dir` holds no outputs (output_directory.hpp).
+/// Throws io::ExportError, Cancelled (checked before each file).
 WrittenOutputs write_outputs(const config::Config& config, const BuildResult& result, const std::filesystem::path& dir,
                              ProgressSink* progress = nullptr);
 

@@ -20,7 +20,7 @@
 #include "src/pipeline/outputs.hpp"
 #include "src/pipeline/report.hpp"
 #include "src/pipeline/sha256.hpp"
-#include "src/pipeline/stage_runner.hpp"
+#include "src/pipeline/time_limit.hpp"
 #include "src/pipeline/version.hpp"
 
 namespace fs = std::filesystem;
@@ -106,6 +106,25 @@ BOOST_AUTO_TEST_CASE(build_as_library_call) {
   BOOST_TEST((report.at("outputs") == json{"blade.step", "report.json"}));
   for (const char* stage : {"blade_model", "solid", "verify", "step"}) BOOST_TEST(report.at("timings_s").contains(stage), stage);
   BOOST_TEST(report.at("model").at("source").get<std::string>() == kC3x.string());
+}
+
+// The README's design-study loop (two variants of the C3X vane): each variant's directory holds its
+// own model, and the report's span follows the variant.
+BOOST_AUTO_TEST_CASE(design_study_loop) {
+  TempDir dir("pipeline_study");
+  config::Config c = config::load_config_file(kC3x);
+  for (int k = 0; k < 2; ++k) {
+    std::get<blade::StraightFlowPath>(c.blade.flow_path).span = 100 + 20 * k;
+    pipeline::TimeLimit limit(nullptr, 60);
+    const pipeline::BuildResult r = pipeline::run_build(c, {}, &limit);
+    BOOST_TEST(r.valid(), r.failed_checks());
+    pipeline::write_outputs(c, r, dir.path / ("span" + std::to_string(k)));
+  }
+  for (int k = 0; k < 2; ++k) {
+    const json report = json::parse(read_text(dir.path / ("span" + std::to_string(k)) / "report.json"));
+    BOOST_TEST(report.at("model").at("span_length_mm").get<double>() == 100.0 + 20 * k);
+    BOOST_TEST(fs::exists(dir.path / ("span" + std::to_string(k)) / "blade.step"));
+  }
 }
 
 // A stop request ends the build with Cancelled naming the stage, before it starts or from inside OCCT.
