@@ -168,30 +168,47 @@ VolumeMeasure measure_tool_volumes(const BooleanRun& run, const TopoDS_Shape& pa
       auto it = std::lower_bound(by_x.begin(), by_x.end(), std::make_pair(c[0] - widest, -1));
       for (; it != by_x.end() && it->first <= c[3]; ++it)
         if (!boxes[static_cast<std::size_t>(it->second)].IsOut(fb)) candidates[k].push_back(it->second);
+      if (candidates[k].size() > 1) {  // neighbours' axis-aligned boxes overlap: oriented boxes decide
+        Bnd_OBB fo;
+        BRepBndLib::AddOBB(dropped[k].face, fo, false, false, true);
+        std::vector<int> kept;
+        for (const int t : candidates[k])
+          if (!obbs[static_cast<std::size_t>(t)].IsOut(fo)) kept.push_back(t);
+        candidates[k] = kept;
+      }
     }
   }
-  std::vector<int> owner(dropped.size(), -1), owners(dropped.size(), 0);
+  // A point inside each dropped piece, then per tool one classifier for all the pieces it may hold
+  // (building a classifier explores the solid: once per tool, not once per piece).
+  std::vector<gp_Pnt> point(dropped.size());
+  std::vector<char> has_point(dropped.size(), 0);
   OSD_Parallel::For(0, static_cast<int>(dropped.size()), [&](int k) {
-    const TopoDS_Face& f = dropped[static_cast<std::size_t>(k)].face;
-    Bnd_OBB fo;
-    BRepBndLib::AddOBB(f, fo, false, false, true);
-    gp_Pnt p;
+    if (candidates[static_cast<std::size_t>(k)].empty()) return;
     gp_Pnt2d uv;
     Handle(IntTools_Context) ctx = new IntTools_Context;
-    bool have_point = false;
-    for (const int t : candidates[static_cast<std::size_t>(k)]) {
-      if (obbs[static_cast<std::size_t>(t)].IsOut(fo)) continue;
-      if (!have_point) {
-        if (BOPTools_AlgoTools3D::PointInFace(f, p, uv, ctx) != 0) return;
-        have_point = true;
-      }
-      BRepClass3d_SolidClassifier cls(tools[static_cast<std::size_t>(t)], p, 1e-7);
-      if (cls.State() == TopAbs_IN || cls.State() == TopAbs_ON) {
-        if (owner[static_cast<std::size_t>(k)] < 0) owner[static_cast<std::size_t>(k)] = t;
-        ++owners[static_cast<std::size_t>(k)];
-      }
+    has_point[static_cast<std::size_t>(k)] =
+        BOPTools_AlgoTools3D::PointInFace(dropped[static_cast<std::size_t>(k)].face, point[static_cast<std::size_t>(k)], uv, ctx) == 0;
+  }, !parallel);
+  std::vector<std::vector<int>> to_classify(n);
+  for (std::size_t k = 0; k < dropped.size(); ++k)
+    if (has_point[k])
+      for (const int t : candidates[k]) to_classify[static_cast<std::size_t>(t)].push_back(static_cast<int>(k));
+  std::vector<std::vector<int>> inside(n);
+  OSD_Parallel::For(0, static_cast<int>(n), [&](int t) {
+    const std::vector<int>& ks = to_classify[static_cast<std::size_t>(t)];
+    if (ks.empty()) return;
+    BRepClass3d_SolidClassifier cls(tools[static_cast<std::size_t>(t)]);
+    for (const int k : ks) {
+      cls.Perform(point[static_cast<std::size_t>(k)], 1e-7);
+      if (cls.State() == TopAbs_IN || cls.State() == TopAbs_ON) inside[static_cast<std::size_t>(t)].push_back(k);
     }
   }, !parallel);
+  std::vector<int> owner(dropped.size(), -1), owners(dropped.size(), 0);
+  for (std::size_t t = 0; t < n; ++t)
+    for (const int k : inside[t]) {
+      if (owner[static_cast<std::size_t>(k)] < 0) owner[static_cast<std::size_t>(k)] = static_cast<int>(t);
+      ++owners[static_cast<std::size_t>(k)];
+    }
   for (std::size_t k = 0; k < dropped.size(); ++k) {
     if (owner[k] < 0) {
       ++m.lost_pieces;

@@ -66,7 +66,7 @@ struct BooleanOptions {
   /// Faces reached by at least `patch_min_tools` tools are split into patches of about
   /// `patch_tools_per_patch` tools first (features/boolean_patches.hpp); 0 disables.
   int patch_min_tools = 64;
-  int patch_tools_per_patch = 24;
+  int patch_tools_per_patch = 32;
   /// Run brep::verify_solid on the result (BRepCheck, free edges, shells, closed mesh, volume).
   bool verify_result = true;
   brep::VerifyOptions verify;
