@@ -111,7 +111,8 @@ class BooleanStep {
   void add(FeatureTool tool);
   /// Applies every tool to `part` (made disjoint, one boolean with history, checked, guilty tools
   /// found by bisection and retried). Returns the named result; throws FeatureFailure naming the
-  /// feature(s) that failed, InvalidGeometry for a null part or tool, Cancelled when stopped.
+  /// feature(s) that failed (every one of them; report() then still lists each tool's outcome),
+  /// InvalidGeometry for a null part or tool, Cancelled when stopped.
   brep::NamedShape apply(const brep::NamedShape& part);
   bool done() const { return done_; }
   const BooleanStepReport& report() const { return report_; }
