@@ -13,6 +13,7 @@
 
 #include "src/blade/blade_surface.hpp"
 #include "src/config/config_error.hpp"
+#include "src/config/grid_config.hpp"
 #include "src/core/progress.hpp"
 
 namespace cg::config {
@@ -37,6 +38,7 @@ struct Config {
   std::string description;  ///< "description" (optional)
   blade::BladeDefinition blade;
   OutputOptions output;
+  GridConfig grid;          ///< "grid" (structured grids around the sections; optional)
   /// One per section, in order; `field` is empty for parametric sections.
   std::vector<PointSource> point_sources;
   nlohmann::json source;    ///< the parsed document (for the report)
