@@ -14,9 +14,13 @@
 
 #include <Eigen/Geometry>
 #include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
 #include <cmath>
 #include <functional>
 #include <map>
+#include <memory>
 #include <set>
 #include <sstream>
 
@@ -44,9 +48,12 @@ class Stopwatch {
   double lap() {
     const auto t = std::chrono::steady_clock::now();
     const double s = std::chrono::duration<double>(t - t0_).count();
+    if (std::getenv("CG_DEBUG")) fprintf(stderr, "   lap cpu %.3f\n", double(std::clock() - c0_) / CLOCKS_PER_SEC);
+    c0_ = std::clock();
     t0_ = t;
     return s;
   }
+  std::clock_t c0_ = std::clock();
 
  private:
   std::chrono::steady_clock::time_point t0_ = std::chrono::steady_clock::now();
@@ -54,15 +61,53 @@ class Stopwatch {
 
 gp_Pnt pnt(const Vec3& p) { return gp_Pnt(p.x(), p.y(), p.z()); }
 
-bool inside(const TopoDS_Shape& solid, const Vec3& p) {
-  BRepClass3d_SolidClassifier c(solid, pnt(p), 1e-7);
-  return c.State() == TopAbs_IN;
-}
+// Point-in-solid tests against one solid (the classifier's face explorer is built once).
+class Inside {
+ public:
+  explicit Inside(const TopoDS_Shape& solid) { c_.Load(solid); }
+  bool operator()(const Vec3& p) {
+    c_.Perform(pnt(p), 1e-7);
+    return c_.State() == TopAbs_IN;
+  }
+
+ private:
+  BRepClass3d_SolidClassifier c_;
+};
 
 std::string alerts(const Message_Report& r, Message_Gravity g) {
   std::string s;
   for (const Handle(Message_Alert)& a : r.GetAlerts(g)) s += (s.empty() ? "" : ", ") + std::string(a->GetMessageKey());
   return s;
+}
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Parameter t along x0 + t dir (|t| <= 50 mm) where the end wall's signed distance reaches `target`
+// (bisection; the distance grows along dir, which points into the flow path).
+double along_line(const EndWall& w, const Vec3& x0, const Vec3& dir, double target) {
+  double lo = -50, hi = 50;
+  for (int it = 0; it < 44; ++it) {  // 100 mm / 2^44: below 1e-11 mm
+    const double mid = 0.5 * (lo + hi);
+    (w.signed_distance(x0 + mid * dir) < target ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+// Integral of f(rho, phi) over the disc of radius r: Gauss-Legendre (8 points) in rho, 32 equal
+// steps in phi (spectrally accurate for the smooth periodic integrand).
+template <class F>
+double disc_integral(double r, F f) {
+  static const double x[8] = {-0.9602898564975363, -0.7966664774136267, -0.5255324099163290, -0.1834346424956498,
+                              0.1834346424956498,  0.5255324099163290,  0.7966664774136267,  0.9602898564975363};
+  static const double w[8] = {0.1012285362903763, 0.2223810344533745, 0.3137066458778873, 0.3626837833783620,
+                              0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
+  const int nphi = 32;
+  double sum = 0;
+  for (int i = 0; i < 8; ++i) {
+    const double rho = 0.5 * r * (x[i] + 1);
+    for (int k = 0; k < nphi; ++k) sum += w[i] * 0.5 * r * rho * (2 * kPi / nphi) * f(rho, 2 * kPi * k / nphi);
+  }
+  return sum;
 }
 
 // ---------------------------------------------------------------------------------------------------
@@ -297,9 +342,11 @@ CoreBuild build_core_tools(const blade::BladeModel& model, const CoreDefinition&
   }
   // Coolant cells: those holding chamber reference points.
   std::vector<int> cell_of(out.chambers.size(), -1);
+  std::vector<std::unique_ptr<Inside>> in_cell;
+  for (const auto& c : cells) in_cell.push_back(std::make_unique<Inside>(c));
   for (std::size_t k = 0; k < out.chambers.size(); ++k) {
     for (std::size_t c = 0; c < cells.size(); ++c)
-      if (inside(cells[c], out.chambers[k].reference)) cell_of[k] = static_cast<int>(c);
+      if ((*in_cell[c])(out.chambers[k].reference)) cell_of[k] = static_cast<int>(c);
     if (cell_of[k] < 0)
       throw FeatureFailure("chamber " + std::to_string(k + 1) + ": its reference point lies in no cell of the core");
   }
@@ -317,6 +364,7 @@ CoreBuild build_core_tools(const blade::BladeModel& model, const CoreDefinition&
 
   // 3. + 4. Per coolant cell: fillets, naming split, merge.
   std::map<int, std::vector<int>> systems;  // cell -> chambers (0-based)
+  std::vector<TopoDS_Shape> system_shapes;
   for (std::size_t k = 0; k < cell_of.size(); ++k) systems[cell_of[k]].push_back(static_cast<int>(k));
   for (const auto& [cell_index, members] : systems) {
     TopoDS_Shape cell = cells[static_cast<std::size_t>(cell_index)];
@@ -339,8 +387,10 @@ CoreBuild build_core_tools(const blade::BladeModel& model, const CoreDefinition&
       if (fillet.Contour(edge) == 0) fillet.Add(def.ribs[static_cast<std::size_t>(rib)].fillet_radius, edge);
       filleted.emplace_back(edge, rib);
     }
+    const std::clock_t c0 = std::clock();
     if (!filleted.empty()) {
       fillet.Build();
+      if (std::getenv("CG_DEBUG")) fprintf(stderr, "  fillet build cpu %.3f (%zu edges)\n", double(std::clock() - c0) / CLOCKS_PER_SEC, filleted.size());
       if (!fillet.IsDone()) {
         std::set<int> ribs;
         for (const auto& [e, r] : filleted) ribs.insert(r + 1);
@@ -360,13 +410,6 @@ CoreBuild build_core_tools(const blade::BladeModel& model, const CoreDefinition&
       }
       names.merge(next);
       cell = result;
-      const double v_after = volume_of(cell);
-      // Fillet material per rib, shared in proportion to the rib's edge count (one system rarely has
-      // ribs of different radii; the per-system total is exact).
-      std::map<int, int> per_rib;
-      for (const auto& [e, r] : filleted) ++per_rib[r];
-      for (const auto& [r, count] : per_rib)
-        out.fillet_volumes[static_cast<std::size_t>(r)] += (v_before - v_after) * count / filleted.size();
     }
     // Naming split by the turnaround sheets of this system's ribs.
     std::vector<TopoDS_Shape> pieces{cell};
@@ -376,6 +419,7 @@ CoreBuild build_core_tools(const blade::BladeModel& model, const CoreDefinition&
                          std::find(members.begin(), members.end(), static_cast<int>(r) + 1) != members.end();
       if (joins && !out.ribs[r].turnaround_sheet.IsNull()) sheets.Append(out.ribs[r].turnaround_sheet);
     }
+    if (std::getenv("CG_DEBUG")) fprintf(stderr, "  after fillet cpu %.3f\n", double(std::clock() - c0) / CLOCKS_PER_SEC);
     if (!sheets.IsEmpty()) {
       BRepAlgoAPI_Splitter split;
       TopTools_ListOfShape args;
@@ -389,13 +433,17 @@ CoreBuild build_core_tools(const blade::BladeModel& model, const CoreDefinition&
       names.merge(names.carried(split, split.Shape()));
       pieces = solids_of(split.Shape());
     }
+    if (std::getenv("CG_DEBUG")) fprintf(stderr, "  after split cpu %.3f\n", double(std::clock() - c0) / CLOCKS_PER_SEC);
     ChamberSystem sys;
     for (const TopoDS_Shape& piece : pieces) {
       int owner = -1;
+      Inside in_piece(piece);
       for (int k : members)
-        if (inside(piece, out.chambers[static_cast<std::size_t>(k)].reference)) owner = k;
+        if (in_piece(out.chambers[static_cast<std::size_t>(k)].reference)) owner = k;
       if (owner < 0) throw FeatureFailure("a piece of a chamber system holds no chamber reference point");
-      out.chambers[static_cast<std::size_t>(owner)].volume += volume_of(piece);
+      const double v = volume_of(piece);
+      out.chambers[static_cast<std::size_t>(owner)].volume += v;
+      sys.volume += v;  // the pieces' shared faces cancel: the merged solid's volume is their sum
       for (const TopoDS_Shape& f : faces_of(piece))
         if (names.get(f) == "chamber_wall") names.set(f, "chamber_" + std::to_string(owner + 1) + "_wall");
     }
@@ -407,15 +455,28 @@ CoreBuild build_core_tools(const blade::BladeModel& model, const CoreDefinition&
     sys.feature = members.size() == 1 ? "chamber_" + std::to_string(members.front() + 1)
                                       : "chambers_" + std::to_string(members.front() + 1) + "_" +
                                             std::to_string(members.back() + 1);
-    sys.volume = volume_of(merged);
+    // Fillet material per rib, shared in proportion to the rib's edge count (one system rarely has ribs
+    // of different radii; the per-system total is exact).
+    if (!filleted.empty()) {
+      std::map<int, int> per_rib;
+      for (const auto& [e, r] : filleted) ++per_rib[r];
+      for (const auto& [r, count] : per_rib)
+        out.fillet_volumes[static_cast<std::size_t>(r)] += (v_before - sys.volume) * count / filleted.size();
+    }
     FeatureTool tool;
     tool.feature = sys.feature;
     tool.shape.shape = merged;
     tool.shape.faces = names.list(merged, sys.feature);
     // Closed ends: the tool lies inside the blade (inside the inner wall, between the end walls), so it
     // removes its own volume. Open ends: the verified path computes the overlap.
-    tool.expected_volume = (def.hub_floor.open || def.tip_cap.open) ? std::numeric_limits<double>::quiet_NaN() : sys.volume;
-    out.tools.push_back(tool);
+    system_shapes.push_back(merged);
+    if (def.hub_floor.open || def.tip_cap.open) {
+      tool.expected_volume = std::numeric_limits<double>::quiet_NaN();
+      out.cut_tools.push_back(tool);
+    } else {
+      tool.expected_volume = sys.volume;
+      out.interior_tools.push_back(tool);
+    }
     out.systems.push_back(sys);
   }
   out.seconds.emplace_back("fillets_and_names", sw.lap());
@@ -443,14 +504,7 @@ CoreBuild build_core_tools(const blade::BladeModel& model, const CoreDefinition&
     const EndWall& wall = hub ? *out.hub_floor : *out.tip_cap;
     const EndWall outside(model, in.end, -0.5 * delta);
     // Along the axis (into the chamber = +dir): from outside the blade to `reach` past the end wall.
-    auto along = [&](const EndWall& w, double target) {
-      double lo = -50, hi = 50;  // mm along dir; signed distance grows with it
-      for (int it = 0; it < 80; ++it) {
-        const double mid = 0.5 * (lo + hi);
-        (w.signed_distance(x0 + mid * dir) < target ? lo : hi) = mid;
-      }
-      return 0.5 * (lo + hi);
-    };
+    auto along = [&](const EndWall& w, double target) { return along_line(w, x0, dir, target); };
     const double reach = std::max(0.5, 0.25 * in.diameter);
     const double t0 = along(outside, 0.0), t1 = along(wall, reach);
     const gp_Ax2 ax(pnt(x0 + t0 * dir), gp_Dir(dir.x(), dir.y(), dir.z()));
@@ -459,13 +513,14 @@ CoreBuild build_core_tools(const blade::BladeModel& model, const CoreDefinition&
     if (!cyl.IsDone()) throw FeatureFailure(name + ": cannot make its cylinder");
     const TopoDS_Shape s = cyl.Shape();
     // It must open into its chamber: a ring just past the end wall lies inside the chamber's tool.
-    const TopoDS_Shape& target = out.tools[static_cast<std::size_t>(out.chambers[static_cast<std::size_t>(in.chamber - 1)].system)].shape.shape;
+    const int sys = out.chambers[static_cast<std::size_t>(in.chamber - 1)].system;
+    Inside in_target(system_shapes[static_cast<std::size_t>(sys)]);
     const double tm = along(wall, 0.5 * reach);
-    Vec3 e1 = dir.unitOrthogonal(), e2 = dir.cross(e1);
+    const Vec3 e1 = dir.unitOrthogonal(), e2 = dir.cross(e1);
     for (int k = 0; k < 24; ++k) {
-      const double a = 2 * 3.14159265358979323846 * k / 24;
+      const double a = 2 * kPi * k / 24;
       const Vec3 p = x0 + tm * dir + 0.5 * in.diameter * (std::cos(a) * e1 + std::sin(a) * e2);
-      if (!inside(target, p))
+      if (!in_target(p))
         throw PassageInputError(field + ".diameter", name + " (diameter " + num(in.diameter) +
                                                          " mm) does not fit into chamber " + std::to_string(in.chamber) +
                                                          " where it passes the " + (hub ? "hub floor" : "tip cap") +
@@ -475,7 +530,16 @@ CoreBuild build_core_tools(const blade::BladeModel& model, const CoreDefinition&
     tool.feature = name;
     tool.shape.shape = s;
     for (const TopoDS_Shape& f : faces_of(s)) tool.shape.faces.push_back({TopoDS::Face(f), name});
-    out.tools.push_back(tool);
+    // It removes the material between the flow-path surface and the end wall (beyond the end wall it
+    // opens into the chamber): the integral over its disc of the axial distance between the two surfaces
+    // (Gauss-Legendre in the radius, the trapezoidal rule in the angle, exact for periodic integrands).
+    const EndWall flow_path(model, in.end, 0.0);
+    tool.expected_volume = disc_integral(0.5 * in.diameter, [&](double rho, double phi) {
+      const Vec3 base = x0 + rho * (std::cos(phi) * e1 + std::sin(phi) * e2);
+      return along_line(wall, base, dir, 0.0) - along_line(flow_path, base, dir, 0.0);
+    });
+    out.inlet_volumes.push_back(tool.expected_volume);
+    out.cut_tools.push_back(tool);
   }
   out.seconds.emplace_back("inlets", sw.lap());
   return out;

@@ -52,7 +52,14 @@ struct CoreBuild {
   std::vector<RibTube> ribs;
   std::vector<ChamberInfo> chambers;
   std::vector<ChamberSystem> systems;
-  std::vector<FeatureTool> tools;  ///< chamber systems first, then one per inlet ("inlet_<m>")
+  /// Chamber systems with both ends closed: strictly inside the blade (inside the inner wall, between
+  /// the end walls), so they can be inserted as voids; expected volume = their own volume.
+  std::vector<FeatureTool> interior_tools;
+  /// Tools that reach out of the blade: chamber systems through an open end (expected volume NaN: the
+  /// boolean path computes the overlap), then one cylinder per inlet ("inlet_<m>", expected volume =
+  /// the material between the flow-path surface and the end wall over its disc, own quadrature).
+  std::vector<FeatureTool> cut_tools;
+  std::vector<double> inlet_volumes;  ///< mm^3 per inlet, as its expected volume
   std::optional<EndWall> hub_floor, tip_cap;  ///< none when that end is open
   double core_volume = 0;                     ///< mm^3, the core before ribs and fillets
   std::vector<double> rib_volumes;            ///< mm^3 per rib, rib material inside the core

@@ -11,10 +11,34 @@
 
 namespace cg::features {
 
+/// Report of apply_passage_tools.
+struct PassageBooleanReport {
+  std::vector<ToolReport> voids;  ///< interior tools inserted as voids (expected vs measured volume)
+  double min_clearance = 0;       ///< mm, smallest distance between a void and the part's boundary
+  double void_seconds = 0;
+  BooleanStepReport cut;          ///< the cut of the other tools (tool_count 0 when none)
+};
+
+/// Applies the passage tools to the blade. `interior` tools lie strictly inside `part` by construction
+/// (chambers inside the inner wall, between the end walls): subtracting such a tool changes no face of
+/// the part, it only adds the tool's boundary as an inner shell (a void), so they are inserted that way
+/// (exact, no face intersections to compute) after checking the precondition: the tool's distance to the
+/// part's boundary (BRepExtrema_DistShapeShape) is positive and a point of it lies inside the part. The
+/// result is checked like a boolean result (verify_solid, removed volume = the tools' volume). The
+/// `cuts` then go through the verified boolean path. Throws FeatureFailure naming the feature.
+brep::NamedShape apply_passage_tools(const brep::NamedShape& part, const std::vector<FeatureTool>& interior,
+                                     const std::vector<FeatureTool>& cuts, PassageBooleanReport& report);
+
 /// Cuts `tools` from `part`; returns the named result and fills `report`. Throws FeatureFailure naming
 /// the feature(s) when a check fails.
 brep::NamedShape cut_passage_tools(const brep::NamedShape& part, const std::vector<FeatureTool>& tools,
                                    BooleanStepReport& report, const BooleanOptions& options = {});
+
+/// V(before) - V(after) for two solids that share most faces (a boolean result and its argument): the
+/// volume integrals (BRepGProp, relative accuracy 1e-9) over the faces only one of them has. Unchanged
+/// faces cancel exactly, so small removed volumes are measured precisely (the difference of two
+/// whole-solid volumes is not) and fast.
+double volume_difference(const TopoDS_Shape& before, const TopoDS_Shape& after);
 
 /// Fuses overlapping tools (any two whose solids intersect) so the list becomes pairwise disjoint;
 /// face names are carried, the feature name of a cluster joins its members' names with '+'.
