@@ -80,12 +80,24 @@ int run_build(const std::string& path, const fs::path& out_dir, bool quiet) {
   const brep::BladeSolid solid = brep::build_blade_solid(model);
   timings["solid"] = sw.lap();
   io::ReportContent report;
-  report.check = brep::verify_solid(solid.solid);
-  timings["verify"] = sw.lap();
-  for (const auto& f : solid.faces) ++report.face_names[f.name];
+  brep::NamedShape product{solid.solid, solid.faces};
+  nlohmann::json cooling_report;
+  if (!c.cooling.empty()) {
+    // The cooling features verify the solid after their last boolean step.
+    features::PassagesResult cooled = config::apply_cooling(c.cooling, model, product);
+    product = cooled.blade;
+    report.check = cooled.check;
+    cooling_report = cooled.report.to_json();
+    timings["cooling"] = sw.lap();
+  } else {
+    report.check = brep::verify_solid(solid.solid);
+    timings["verify"] = sw.lap();
+  }
+  for (const auto& f : product.faces) ++report.face_names[f.name];
   report.warnings = solid.warnings;
   report.model = config::model_summary(c, model);
   report.model["source"] = path.empty() ? "<built-in example>" : path;
+  if (!cooling_report.is_null()) report.model["cooling"] = cooling_report;
 
   // Output only from here on: the config and the model were accepted.
   std::error_code ec;
@@ -94,7 +106,7 @@ int run_build(const std::string& path, const fs::path& out_dir, bool quiet) {
   const fs::path step = out_dir / "blade.step", json = out_dir / "report.json";
   const bool ok = report.check.all_passed();
   if (ok) {
-    io::write_step(step, solid.solid, solid.faces, {c.output.step_schema, c.output.product_name});
+    io::write_step(step, product.shape, product.faces, {c.output.step_schema, c.output.product_name});
     timings["step"] = sw.lap();
   }
   report.timings_s = nlohmann::json(timings);

@@ -12,6 +12,7 @@
 #include "export/step_writer.hpp"
 #include "src/blade/blade_surface.hpp"
 #include "src/config/config_error.hpp"
+#include "src/config/cooling_config.hpp"
 
 namespace cg::config {
 
@@ -25,6 +26,7 @@ struct Config {
   std::string description;  ///< "description" (optional)
   blade::BladeDefinition blade;
   OutputOptions output;
+  CoolingConfig cooling;    ///< "cooling" (optional; empty = an uncooled blade)
   nlohmann::json source;    ///< the parsed document (for the report)
 };
 
