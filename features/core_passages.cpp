@@ -14,9 +14,6 @@
 
 #include <Eigen/Geometry>
 #include <chrono>
-#include <cstdio>
-#include <cstdlib>
-#include <ctime>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -48,12 +45,9 @@ class Stopwatch {
   double lap() {
     const auto t = std::chrono::steady_clock::now();
     const double s = std::chrono::duration<double>(t - t0_).count();
-    if (std::getenv("CG_DEBUG")) fprintf(stderr, "   lap cpu %.3f\n", double(std::clock() - c0_) / CLOCKS_PER_SEC);
-    c0_ = std::clock();
     t0_ = t;
     return s;
   }
-  std::clock_t c0_ = std::clock();
 
  private:
   std::chrono::steady_clock::time_point t0_ = std::chrono::steady_clock::now();
@@ -387,10 +381,8 @@ CoreBuild build_core_tools(const blade::BladeModel& model, const CoreDefinition&
       if (fillet.Contour(edge) == 0) fillet.Add(def.ribs[static_cast<std::size_t>(rib)].fillet_radius, edge);
       filleted.emplace_back(edge, rib);
     }
-    const std::clock_t c0 = std::clock();
     if (!filleted.empty()) {
       fillet.Build();
-      if (std::getenv("CG_DEBUG")) fprintf(stderr, "  fillet build cpu %.3f (%zu edges)\n", double(std::clock() - c0) / CLOCKS_PER_SEC, filleted.size());
       if (!fillet.IsDone()) {
         std::set<int> ribs;
         for (const auto& [e, r] : filleted) ribs.insert(r + 1);
@@ -419,7 +411,6 @@ CoreBuild build_core_tools(const blade::BladeModel& model, const CoreDefinition&
                          std::find(members.begin(), members.end(), static_cast<int>(r) + 1) != members.end();
       if (joins && !out.ribs[r].turnaround_sheet.IsNull()) sheets.Append(out.ribs[r].turnaround_sheet);
     }
-    if (std::getenv("CG_DEBUG")) fprintf(stderr, "  after fillet cpu %.3f\n", double(std::clock() - c0) / CLOCKS_PER_SEC);
     if (!sheets.IsEmpty()) {
       BRepAlgoAPI_Splitter split;
       TopTools_ListOfShape args;
@@ -433,7 +424,6 @@ CoreBuild build_core_tools(const blade::BladeModel& model, const CoreDefinition&
       names.merge(names.carried(split, split.Shape()));
       pieces = solids_of(split.Shape());
     }
-    if (std::getenv("CG_DEBUG")) fprintf(stderr, "  after split cpu %.3f\n", double(std::clock() - c0) / CLOCKS_PER_SEC);
     ChamberSystem sys;
     for (const TopoDS_Shape& piece : pieces) {
       int owner = -1;

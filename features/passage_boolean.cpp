@@ -22,9 +22,6 @@
 #include <TopTools_ListOfShape.hxx>
 
 #include <chrono>
-#include <cstdio>
-#include <cstdlib>
-#include <ctime>
 #include <cmath>
 #include <numeric>
 

@@ -37,9 +37,6 @@
 #include <cmath>
 #include <map>
 #include <memory>
-#include <cstdio>
-#include <cstdlib>
-#include <ctime>
 
 #include "adaptors/occt_convert.hpp"
 #include "features/face_names.hpp"
@@ -97,28 +94,24 @@ std::vector<Vec3> face_samples(const TopoDS_Face& f, int n) {
   return out;
 }
 
-// The section plane at a span fraction: z = const on a straight vane; on a meridional blade the plane
-// normal to the radial direction through the blade's centre, at the radius of the mid-chord point of
-// that span (a cross-section normal to the mainly radial coolant flow). Planes cut B-spline faces far
-// faster than stream surfaces of revolution (measured: ~3 s per section of the rotor).
-TopoDS_Face section_plane(const blade::BladeModel& m, const blade::BladeCoordinates& coords, double span,
-                          const Bnd_Box& box) {
+}  // namespace
+
+gp_Pln passage_section_plane(const blade::BladeModel& m, const TopoDS_Shape& cooled, double span) {
+  Bnd_Box box;
+  BRepBndLib::Add(cooled, box);
   double x0, y0, z0, x1, y1, z1;
   box.Get(x0, y0, z0, x1, y1, z1);
-  const double h = 2 * std::max({x1 - x0, y1 - y0, z1 - z0});
   if (m.trim.straight) {
     const double z = m.trim.hub_z + span * (m.trim.casing_z - m.trim.hub_z);
-    return BRepBuilderAPI_MakeFace(gp_Pln(gp_Pnt(0.5 * (x0 + x1), 0.5 * (y0 + y1), z), gp::DZ()), -h, h, -h, h).Face();
+    return gp_Pln(gp_Pnt(0.5 * (x0 + x1), 0.5 * (y0 + y1), z), gp::DZ());
   }
+  const blade::BladeCoordinates coords(m);
   const Vec3 c(0.5 * (x0 + x1), 0.5 * (y0 + y1), 0.5 * (z0 + z1));
   const Vec3 er = Vec3(0, c.y(), c.z()).normalized();
   const Vec3 p = 0.5 * (coords.frame(span, 0.5).point + coords.frame(span, -0.5).point);
   const double r = p.dot(er);
-  const gp_Pnt o(c.x(), r * er.y(), r * er.z());
-  return BRepBuilderAPI_MakeFace(gp_Pln(o, gp_Dir(0, er.y(), er.z())), -h, h, -h, h).Face();
+  return gp_Pln(gp_Pnt(c.x(), r * er.y(), r * er.z()), gp_Dir(0, er.y(), er.z()));
 }
-
-}  // namespace
 
 ThicknessMeasure measure_between(const brep::NamedShape& shape, const std::string& feature,
                                  const std::vector<std::string>& side_a, const std::vector<std::string>& side_b,
@@ -270,7 +263,6 @@ std::vector<PassageMeasure> passage_sections(const blade::BladeModel& model, con
     const auto it = std::find(passages.begin(), passages.end(), p);
     return it == passages.end() ? -1 : static_cast<int>(it - passages.begin());
   };
-  const blade::BladeCoordinates coords(model);
   std::vector<std::pair<TopoDS_Face, int>> bounding;  // faces that bound passages, with their passage
   std::vector<Bnd_Box> boxes;
   std::vector<std::unique_ptr<BRepTopAdaptor_FClass2d>> classifiers;  // built on first use
@@ -282,8 +274,11 @@ std::vector<PassageMeasure> passage_sections(const blade::BladeModel& model, con
       classifiers.emplace_back();
     }
   for (double span : spans) {
-    const TopoDS_Face plane = section_plane(model, coords, span, box);
-    const gp_Pln pln = BRepAdaptor_Surface(plane).Plane();
+    const gp_Pln pln = passage_section_plane(model, cooled.shape, span);
+    double x0, y0, z0, x1, y1, z1;
+    box.Get(x0, y0, z0, x1, y1, z1);
+    const double h = 2 * std::max({x1 - x0, y1 - y0, z1 - z0});
+    const TopoDS_Face plane = BRepBuilderAPI_MakeFace(pln, -h, h, -h, h).Face();
     const gp_Dir xd = pln.XAxis().Direction(), yd = pln.YAxis().Direction();
     const Vec3 ex(xd.X(), xd.Y(), xd.Z()), ey(yd.X(), yd.Y(), yd.Z());
     std::vector<SectionPiece> pieces;
@@ -318,8 +313,6 @@ std::vector<PassageMeasure> passage_sections(const blade::BladeModel& model, con
 
 void measure_passages(const blade::BladeModel& model, const brep::NamedShape& cooled, const PassagesDefinition& def,
                       const CoreBuild* core, const RadialPassageBuild* radial, PassageReport& report) {
-  std::clock_t c0 = std::clock();
-  auto T = [&](const char* w) { if (std::getenv("CG_DEBUG")) fprintf(stderr, "  [checks] %s cpu %.3f\n", w, double(std::clock() - c0) / CLOCKS_PER_SEC); c0 = std::clock(); };
   // Cavities: a chamber system without an opening is a closed inner shell of the solid.
   int shells = 0;
   for (TopExp_Explorer e(cooled.shape, TopAbs_SHELL); e.More(); e.Next()) ++shells;
@@ -338,7 +331,6 @@ void measure_passages(const blade::BladeModel& model, const brep::NamedShape& co
     // projected onto the outer wall (global projection, src/algo/project_point_surface).
     ThicknessMeasure wall = measure_between(cooled, "outer_wall", {"blade_wall"},
                                             {"chamber_*", "rib_*", "turnaround_*"}, cd.wall_thickness.min_value());
-    T("outer wall extrema");
     const blade::BladeCoordinates coords(model);
     double max_d = 0, worst = 0;
     for (const auto& f : faces_named(cooled, {"chamber_*"}))
@@ -349,7 +341,6 @@ void measure_passages(const blade::BladeModel& model, const brep::NamedShape& co
         worst = std::max(worst, cd.wall_thickness.at(r.coordinate.span, r.coordinate.chord) - r.coordinate.depth);
       }
     wall.max = max_d;
-    T("outer wall samples");
     wall.method += " (min); sampled projection onto the outer wall (max, local value)";
     wall.passed = wall.passed && worst <= wall.tolerance;
     report.thickness.push_back(wall);
@@ -357,7 +348,6 @@ void measure_passages(const blade::BladeModel& model, const brep::NamedShape& co
       report.thickness.push_back(measure_between(cooled, "tip_cap", {"casing"}, {"tip_cap"}, cd.tip_cap.thickness));
     if (!cd.hub_floor.open)
       report.thickness.push_back(measure_between(cooled, "hub_floor", {"hub"}, {"hub_floor"}, cd.hub_floor.thickness));
-    T("end walls");
     // Ribs: their two sides (faces named rib_<i>, told apart by the side of the mid-surface they lie on).
     for (std::size_t i = 0; i < cd.ribs.size(); ++i) {
       const std::string name = "rib_" + std::to_string(i + 1);
@@ -378,7 +368,6 @@ void measure_passages(const blade::BladeModel& model, const brep::NamedShape& co
       m.method = "BRepExtrema_DistShapeShape between its two sides";
       if (le_side.empty() || te_side.empty()) throw FeatureFailure(name + ": cannot find both of its sides on the blade");
       BRepExtrema_DistShapeShape d(compound_of(le_side), compound_of(te_side));
-      T("rib extrema");
       m.min = d.IsDone() ? d.Value() : 0;
       double mx = 0;
       for (const auto& f : le_side)
@@ -386,7 +375,6 @@ void measure_passages(const blade::BladeModel& model, const brep::NamedShape& co
           BRepExtrema_DistShapeShape dp(BRepBuilderAPI_MakeVertex(gp_Pnt(p.x(), p.y(), p.z())).Vertex(), compound_of(te_side));
           if (dp.IsDone()) mx = std::max(mx, dp.Value());
         }
-      T("rib min");
       m.max = mx;
       m.passed = m.min >= m.configured - m.tolerance;
       report.thickness.push_back(m);
@@ -425,9 +413,7 @@ void measure_passages(const blade::BladeModel& model, const brep::NamedShape& co
     if (spans.empty())
       for (int k = 0; k < 10; ++k) spans.push_back(0.05 + 0.9 * k / 9);
   }
-  T("before sections");
   std::vector<PassageMeasure> measured = passage_sections(model, cooled, spans, passages);
-  T("sections");
   for (auto& m : measured) {
     for (const auto& v : report.volumes)
       if (v.feature == m.name) m.volume = v.volume;
