@@ -13,6 +13,7 @@
 #include <Eigen/Core>
 #include <memory>
 
+#include "features/passage_definition.hpp"
 #include "src/blade/blade_surface.hpp"
 #include "src/brep/blade_solid.hpp"
 #include "src/core/bspline_curve.hpp"
@@ -23,8 +24,6 @@ class CurveProjector;
 }
 
 namespace cg::features {
-
-enum class SpanEnd { Hub, Tip };
 
 class EndWall {
  public:

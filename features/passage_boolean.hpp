@@ -1,9 +1,7 @@
 #pragma once
-// The one place where the passage features meet the blade through a boolean. It follows the contract
-// of verified_boolean.hpp (BooleanStep add/apply/report); until that implementation is on main this
-// file carries an interim implementation with the same checks the contract lists that matter here
-// (overlapping tools fused first, one cut with history, face names from history, verify_solid, no
-// BOPAlgo warning, removed volume against the tools' expected volumes).
+// The one place where the passage features meet the blade: chambers strictly inside the blade are
+// inserted as voids (checked, see apply_passage_tools), every other tool is cut through the verified
+// boolean path (verified_boolean.hpp: BooleanStep).
 #include <vector>
 
 #include "features/verified_boolean.hpp"
@@ -29,19 +27,9 @@ struct PassageBooleanReport {
 brep::NamedShape apply_passage_tools(const brep::NamedShape& part, const std::vector<FeatureTool>& interior,
                                      const std::vector<FeatureTool>& cuts, PassageBooleanReport& report);
 
-/// Cuts `tools` from `part`; returns the named result and fills `report`. Throws FeatureFailure naming
-/// the feature(s) when a check fails.
+/// Cuts `tools` from `part` through one verified BooleanStep; returns the named result and fills
+/// `report`. Throws FeatureFailure naming the feature(s) when a check fails.
 brep::NamedShape cut_passage_tools(const brep::NamedShape& part, const std::vector<FeatureTool>& tools,
                                    BooleanStepReport& report, const BooleanOptions& options = {});
-
-/// V(before) - V(after) for two solids that share most faces (a boolean result and its argument): the
-/// volume integrals (BRepGProp, relative accuracy 1e-9) over the faces only one of them has. Unchanged
-/// faces cancel exactly, so small removed volumes are measured precisely (the difference of two
-/// whole-solid volumes is not) and fast.
-double volume_difference(const TopoDS_Shape& before, const TopoDS_Shape& after);
-
-/// Fuses overlapping tools (any two whose solids intersect) so the list becomes pairwise disjoint;
-/// face names are carried, the feature name of a cluster joins its members' names with '+'.
-std::vector<FeatureTool> fuse_overlapping_tools(const std::vector<FeatureTool>& tools);
 
 }  // namespace cg::features

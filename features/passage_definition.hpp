@@ -2,16 +2,19 @@
 // What a configuration asks for under "cooling" for the internal passages (parsed and range-checked
 // by src/config/cooling_config.cpp; JSON form and ranges in data/schema/coolinggen.schema.json).
 // Lengths mm. Chordwise positions are blade-relative coordinates (src/blade/blade_coordinates.hpp):
-// 0 at the LE, (0, 1) on the suction side, (-1, 0) on the pressure side.
+// 0 at the LE, (0, 1) on the suction side, (-1, 0) on the pressure side. Plain structs without OCCT, so
+// the config stage can fill them.
 #include <Eigen/Core>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "features/end_walls.hpp"
 #include "src/blade/inner_wall.hpp"
 
 namespace cg::features {
+
+/// An end of the span: the hub side or the tip (casing) side.
+enum class SpanEnd { Hub, Tip };
 
 /// A rib stops a gap short of an end wall, so the chambers on both sides join in a U-bend.
 struct TurnaroundDefinition {

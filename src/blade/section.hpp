@@ -27,10 +27,15 @@ LengthUnit parse_length_unit(const std::string& name);
 
 /// Reads section points from a CSV ("x,y" or with a header naming x.. and y.. columns, e.g.
 /// "point,x_cm,y_cm,side") or from the "x y" .dat layout (whitespace separated; a leading name line is
-/// skipped). Lines starting with '#' are comments. A last point repeating the first is dropped. Returns mm.
-/// Throws InvalidGeometry (naming the file and line) for unreadable lines or < 4 points.
-std::vector<Eigen::Vector2d> read_section_points(const std::string& path, LengthUnit unit);
-std::vector<Eigen::Vector2d> parse_section_points(std::istream& in, LengthUnit unit, const std::string& source_name);
+/// skipped). Without a header naming x and y, 2 columns are x, y and 3 columns are (point number, x, y)
+/// when the first counts up by one; other layouts are refused as ambiguous. Lines starting with '#' are
+/// comments. A last point repeating the first is dropped. Returns mm; `source_lines` (optional) gets the
+/// file line of each point. Throws InvalidGeometry (naming the file and line) for unreadable lines,
+/// ambiguous columns or < 4 points.
+std::vector<Eigen::Vector2d> read_section_points(const std::string& path, LengthUnit unit,
+                                                 std::vector<int>* source_lines = nullptr);
+std::vector<Eigen::Vector2d> parse_section_points(std::istream& in, LengthUnit unit, const std::string& source_name,
+                                                  std::vector<int>* source_lines = nullptr);
 
 /// Which side of a point section is the suction side.
 enum class SuctionSide {

@@ -28,6 +28,7 @@
 #include <sstream>
 
 #include "adaptors/occt_convert.hpp"
+#include "src/brep/occt_progress.hpp"
 #include "src/core/error.hpp"
 
 namespace cg::brep {
@@ -179,7 +180,8 @@ std::string joined(const std::vector<std::string>& v) {
 
 }  // namespace
 
-BladeSolid build_blade_solid(const BSplineSurface<3>& surface, const EndTrim& hub, const EndTrim& casing) {
+BladeSolid build_blade_solid(const BSplineSurface<3>& surface, const EndTrim& hub, const EndTrim& casing,
+                             ProgressSink* progress) {
   require(surface.num_poles_u() > 0, "blade surface is empty");
   require(surface.is_periodic_u(), "blade surface must be periodic in u (closed chordwise section)");
   require(!surface.is_periodic_v(), "blade surface must not be periodic in v (spanwise)");
@@ -200,7 +202,9 @@ BladeSolid build_blade_solid(const BSplineSurface<3>& surface, const EndTrim& hu
   gf.AddArgument(hub_face);
   gf.AddArgument(casing_face);
   gf.SetRunParallel(true);
-  gf.Perform();
+  const Handle(OcctProgress) fuse_progress = new OcctProgress(progress, "general fuse");
+  gf.Perform(fuse_progress->Start());
+  fuse_progress->throw_if_stopped();
   if (gf.HasErrors())
     throw AlgorithmFailure("cutting the blade surface by hub and casing failed: " + joined(alert_names(gf, Message_Fail)));
 
@@ -272,8 +276,8 @@ EndTrim casing_trim(const blade::FlowPathTrim& t) {
   return RevolvedTrim{t.casing};
 }
 
-BladeSolid build_blade_solid(const blade::BladeModel& model) {
-  return build_blade_solid(model.surface, hub_trim(model.trim), casing_trim(model.trim));
+BladeSolid build_blade_solid(const blade::BladeModel& model, ProgressSink* progress) {
+  return build_blade_solid(model.surface, hub_trim(model.trim), casing_trim(model.trim), progress);
 }
 
 }  // namespace cg::brep

@@ -23,6 +23,7 @@
 #include "src/brep/named_shape.hpp"
 #include "src/core/bspline_curve.hpp"
 #include "src/core/bspline_surface.hpp"
+#include "src/core/progress.hpp"
 
 namespace cg::brep {
 
@@ -60,14 +61,16 @@ struct BladeSolid {
 /// Throws InvalidGeometry on bad input (surface not u-periodic, v-periodic, degenerate plane
 /// normal, meridional curve with r <= 0) and AlgorithmFailure when the trims do not cut the blade
 /// into one wall between them (e.g. not enough over-build, trims that cross inside the blade).
-BladeSolid build_blade_solid(const BSplineSurface<3>& surface, const EndTrim& hub, const EndTrim& casing);
+/// `progress` (optional) sees the general fuse's progress; a stop request ends it with Cancelled.
+BladeSolid build_blade_solid(const BSplineSurface<3>& surface, const EndTrim& hub, const EndTrim& casing,
+                             ProgressSink* progress = nullptr);
 
 /// The end trims of a blade model's flow path: the planes z = hub_z and z = casing_z (straight vane)
 /// or the revolved hub and casing contours (meridional).
 EndTrim hub_trim(const blade::FlowPathTrim& trim);
 EndTrim casing_trim(const blade::FlowPathTrim& trim);
 
-/// build_blade_solid(model.surface, hub_trim(model.trim), casing_trim(model.trim)).
-BladeSolid build_blade_solid(const blade::BladeModel& model);
+/// build_blade_solid(model.surface, hub_trim(model.trim), casing_trim(model.trim), progress).
+BladeSolid build_blade_solid(const blade::BladeModel& model, ProgressSink* progress = nullptr);
 
 }  // namespace cg::brep

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "src/core/progress.hpp"
+
 namespace cg::brep {
 
 struct Check {
@@ -44,10 +46,12 @@ struct VerifyOptions {
   /// mesh is made on a copy, so the checked shape is left untouched.
   double mesh_relative_deflection = 0.01;
   double mesh_angular_deflection = 0.3;
+  /// Optional: sees the checks' progress; a stop request ends verify_solid with Cancelled.
+  ProgressSink* progress = nullptr;
 };
 
 /// Runs every check on `shape` (expected: one closed solid) and measures it. Never throws for a
-/// bad shape: a bad shape gives failed checks.
+/// bad shape: a bad shape gives failed checks. Throws Cancelled when options.progress asks to stop.
 SolidCheck verify_solid(const TopoDS_Shape& shape, const VerifyOptions& options = {});
 
 }  // namespace cg::brep

@@ -190,13 +190,8 @@ CoolingConfig parse_cooling(const Field& f, const std::filesystem::path& base_di
   return c;
 }
 
-features::PassagesResult apply_cooling(const CoolingConfig& cooling, const blade::BladeModel& model,
-                                       const brep::NamedShape& blade) {
-  try {
-    return features::build_passages(model, blade, cooling.passages);
-  } catch (const features::PassageInputError& e) {
-    throw ConfigError("cooling." + e.field() + ": " + e.what());
-  }
+ConfigError cooling_error(const features::PassageInputError& e) {
+  return ConfigError("cooling." + e.field() + ": " + e.what());
 }
 
 }  // namespace cg::config

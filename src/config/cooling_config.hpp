@@ -1,6 +1,7 @@
 #pragma once
-// The "cooling" section of the configuration (data/schema/coolinggen.schema.json): parsing with
-// field-path errors, and the step that builds the configured features into the blade solid.
+// The "cooling" section of the configuration (data/schema/coolinggen.schema.json): parsing into the
+// feature definitions (features/passage_definition.hpp) with field-path errors. The pipeline builds them
+// (src/pipeline/cooling.hpp).
 //
 // Layout (each feature area adds its own key under "cooling"; unknown keys are errors):
 //   "cooling": {
@@ -9,15 +10,14 @@
 //   }
 // Errors that need the blade (a rib outside the core, ribs closer than their thickness, a wall too thick
 // for the blade, an inlet that does not fit ...) are found when the features are built and reported as
-// ConfigError with the same "cooling.<...>" paths and the span / chord where they fail.
+// ConfigError with the same "cooling.<...>" paths and the span / chord where they fail (cooling_error).
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
 
 #include "features/passage_definition.hpp"
-#include "features/passages.hpp"
 #include "src/blade/blade_surface.hpp"
-#include "src/brep/named_shape.hpp"
+#include "src/config/config_error.hpp"
 #include "src/config/json_fields.hpp"
 
 namespace cg::config {
@@ -30,10 +30,7 @@ struct CoolingConfig {
 /// Parses the "cooling" object at `f` (relative files resolved against base_dir). Throws ConfigError.
 CoolingConfig parse_cooling(const Field& f, const std::filesystem::path& base_dir);
 
-/// Builds the configured cooling features into `blade` (the solid of `model`). Input that cannot be built
-/// on this blade becomes ConfigError naming "cooling.<field>"; feature failures (booleans, design checks)
-/// stay features::FeatureFailure.
-features::PassagesResult apply_cooling(const CoolingConfig& cooling, const blade::BladeModel& model,
-                                       const brep::NamedShape& blade);
+/// The ConfigError for passage input the blade cannot take: "cooling.<field>: <what, where>".
+ConfigError cooling_error(const features::PassageInputError& e);
 
 }  // namespace cg::config

@@ -23,6 +23,7 @@
 #include "src/brep/blade_solid.hpp"
 #include "src/config/builtin_example.hpp"
 #include "src/config/config.hpp"
+#include "src/pipeline/cooling.hpp"
 
 namespace cg::test {
 
@@ -43,7 +44,7 @@ inline const CooledBlade& cooled_example(const std::string& file) {
     slot->model = config::build_model(slot->config);
     const brep::BladeSolid s = brep::build_blade_solid(slot->model);
     slot->blade = {s.solid, s.faces};
-    slot->cooled = config::apply_cooling(slot->config.cooling, slot->model, slot->blade);
+    slot->cooled = pipeline::apply_cooling(slot->config.cooling, slot->model, slot->blade);
   }
   return *slot;
 }

@@ -9,6 +9,7 @@
 #include "src/brep/blade_solid.hpp"
 #include "src/config/builtin_example.hpp"
 #include "src/config/config.hpp"
+#include "src/pipeline/cooling.hpp"
 #include "src/config/cooling_config.hpp"
 
 using namespace cg;
@@ -48,7 +49,7 @@ void expect_error(json doc, const std::function<void(json&)>& edit, const std::s
   edit(doc);
   try {
     const config::Config c = config::parse_config(doc, COOLINGGEN_SOURCE_DIR "/data/examples", "t");
-    config::apply_cooling(c.cooling, built(doc).model, built(doc).blade);
+    pipeline::apply_cooling(c.cooling, built(doc).model, built(doc).blade);
     BOOST_ERROR("no error for " << path);
   } catch (const config::ConfigError& e) {
     const std::string m = e.what();

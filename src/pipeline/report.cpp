@@ -1,0 +1,108 @@
+#include "src/pipeline/report.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "src/blade/section.hpp"
+#include "src/pipeline/sha256.hpp"
+#include "src/pipeline/version.hpp"
+
+namespace cg::pipeline {
+namespace {
+
+using json = nlohmann::ordered_json;
+
+constexpr double kDegPerRad = 57.295779513082320876798;
+
+json xyz(const Eigen::Vector3d& p) { return json::array({p.x(), p.y(), p.z()}); }
+json ab(const Eigen::Vector2d& p) { return json::array({p.x(), p.y()}); }
+
+// Section k of the built model. The built chord is the straight distance between the LE and TE of the
+// 3D section curve (on a meridional path the section is scaled to fit between the LE and TE lines, so
+// it differs from the profile's own chord).
+// Slot for the per-section diagnostics of the blade model (issue 8 items 2 and 5): detected LE/TE
+// circles, achieved surface tolerance and pole counts are added here when the model exposes them.
+json section_entry(const config::Config& c, const blade::BladeModel& m, std::size_t i) {
+  const auto& def = c.blade.sections[i];
+  const bool points = std::holds_alternative<blade::PointSectionDefinition>(def.shape);
+  json e{{"span", def.placement.span}, {"kind", points ? "points" : "parametric"}};
+  if (points && !std::get<blade::PointSectionDefinition>(def.shape).file.empty())
+    e["file"] = std::get<blade::PointSectionDefinition>(def.shape).file;
+  if (i >= m.profiles.size() || i >= m.section_curves.size()) return e;
+  const blade::SectionProfile& p = m.profiles[i];
+  const BSplineCurve<3>& curve = m.section_curves[i];
+  const Eigen::Vector3d le = curve.point(curve.check_param(p.le_param)), te = curve.point(curve.check_param(p.te_param));
+  const blade::SectionProperties props = blade::section_properties(p.curve);
+  e["chord_mm"] = (te - le).norm();
+  e["leading_edge_mm"] = xyz(le);
+  e["trailing_edge_mm"] = xyz(te);
+  e["profile"] = {{"chord_mm", p.chord()},
+                  {"stagger_deg", std::atan2(p.chord_direction.y(), p.chord_direction.x()) * kDegPerRad},
+                  {"area_mm2", std::abs(props.area)},
+                  {"perimeter_mm", props.perimeter},
+                  {"leading_edge", ab(p.le)},
+                  {"trailing_edge", ab(p.te)},
+                  {"poles", p.curve.num_period_poles()}};
+  e["poles_3d"] = curve.num_period_poles();
+  return e;
+}
+
+}  // namespace
+
+nlohmann::ordered_json report_model(const config::Config& c, const blade::BladeModel& m) {
+  json sections = json::array();
+  for (std::size_t i = 0; i < c.blade.sections.size(); ++i) sections.push_back(section_entry(c, m, i));
+  const auto& s = m.surface;
+  return json{{"name", c.name},
+              {"description", c.description},
+              {"flow_path", std::holds_alternative<blade::StraightFlowPath>(c.blade.flow_path) ? "straight" : "meridional"},
+              {"span_length_mm", m.span_length},
+              {"sections", sections},
+              {"blade_surface",
+               {{"degree_u", s.degree_u()},
+                {"degree_v", s.degree_v()},
+                {"poles_u", s.is_periodic_u() ? s.num_poles_u() - s.degree_u() : s.num_poles_u()},
+                {"poles_v", s.num_poles_v()},
+                {"rational", s.is_rational()}}},
+              {"overbuild", m.options.overbuild},
+              {"step_schema", c.output.step_schema},
+              {"config", c.source}};
+}
+
+std::string input_hash(const config::Config& c) {
+  Sha256 h;
+  // Each part is length-prefixed so that moving bytes between parts changes the hash.
+  const auto part = [&](const std::string& s) {
+    h.update(std::to_string(s.size()) + ":");
+    h.update(s);
+  };
+  part(c.source.dump());
+  for (const auto& s : c.blade.sections) {
+    const auto* p = std::get_if<blade::PointSectionDefinition>(&s.shape);
+    if (!p || p->file.empty()) continue;
+    std::ifstream in(p->file, std::ios::binary);
+    std::stringstream bytes;
+    bytes << in.rdbuf();
+    part(in ? bytes.str() : std::string("<unreadable>"));
+  }
+  return "sha256:" + h.hex_digest();
+}
+
+io::ReportContent report_content(const config::Config& c, const BuildResult& r, const std::vector<std::string>& outputs,
+                                 const std::vector<StageTiming>& timings) {
+  io::ReportContent rc;
+  rc.version = version();
+  rc.input_hash = input_hash(c);
+  if (!r.checks.empty()) rc.check = r.checks.front();
+  if (!r.part.empty()) rc.face_names = brep::count_face_names(r.part.front().geometry);
+  rc.warnings = r.warnings;
+  rc.model = report_model(c, r.model);
+  rc.model["source"] = c.source_file.empty() ? "<built-in example>" : c.source_file;
+  if (r.cooling) rc.model["cooling"] = r.cooling->to_json();
+  for (const StageTiming& s : timings) rc.timings_s[s.stage] = s.seconds;
+  rc.outputs = outputs;
+  return rc;
+}
+
+}  // namespace cg::pipeline
