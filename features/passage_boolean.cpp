@@ -61,7 +61,13 @@ brep::NamedShape apply_passage_tools(const brep::NamedShape& part, const std::ve
       const double removed = -volume_of(inserted);
       const BooleanOptions opt;
       const bool ok = std::abs(removed - t.expected_volume) <= opt.volume_rel_tolerance * t.expected_volume + opt.volume_abs_tolerance;
-      report.voids.push_back({t.feature, t.expected_volume, removed, 0, ok});
+      ToolReport tr;
+      tr.feature = t.feature;
+      tr.expected_volume = t.expected_volume;
+      tr.measured_volume = removed;
+      tr.expected_source = "given";
+      tr.passed = ok;
+      report.voids.push_back(tr);
       if (!ok)
         throw FeatureFailure(t.feature + ": as a void it removes " + std::to_string(removed) + " mm^3, expected " +
                              std::to_string(t.expected_volume) + " mm^3");

@@ -21,6 +21,7 @@ namespace cg::features {
 namespace {
 
 using Vec3 = Eigen::Vector3d;
+constexpr double kPi = 3.14159265358979323846;
 
 std::string num(double v) {
   std::ostringstream s;
@@ -29,11 +30,20 @@ std::string num(double v) {
   return s.str();
 }
 
-// Rational quarter circle from c + r u to c + r v (u, v orthonormal): The NURBS Book 7.5.
-BSplineCurve<3> quarter(const Vec3& c, const Vec3& u, const Vec3& v, double r) {
-  const double w = std::sqrt(0.5);
-  return BSplineCurve<3>(2, {0, 0, 0, 1, 1, 1}, {c + r * u, c + r * (u + v), c + r * v}, {1.0, w, 1.0});
+// Rational quadratic arc c + r (cos t u + sin t v), t from t0 to t1 (t1 - t0 < pi; u, v orthonormal):
+// The NURBS Book 7.5 (middle pole on the bisector at r / cos(sweep / 2), weight cos(sweep / 2)).
+BSplineCurve<3> arc(const Vec3& c, const Vec3& u, const Vec3& v, double r, double t0, double t1) {
+  const double h = 0.5 * (t1 - t0), m = 0.5 * (t0 + t1);
+  auto dir = [&](double t) { return Vec3(std::cos(t) * u + std::sin(t) * v); };
+  return BSplineCurve<3>(2, {0, 0, 0, 1, 1, 1}, {c + r * dir(t0), c + (r / std::cos(h)) * dir(m), c + r * dir(t1)},
+                         {1.0, std::cos(h), 1.0});
 }
+
+BSplineCurve<3> quarter(const Vec3& c, const Vec3& u, const Vec3& v, double r) { return arc(c, u, v, r, 0, 0.5 * kPi); }
+
+// A full round is split into two arcs at 115 degrees, not at its apex: the turnaround's naming sheet
+// (the rib's mid-surface) passes through the apex, and an edge there gave sliver faces.
+constexpr double kFullRoundSplit = 115.0 * kPi / 180.0;
 
 BSplineCurve<3> segment(const Vec3& a, const Vec3& b) { return BSplineCurve<3>(1, {0, 0, 1, 1}, {a, b}); }
 
@@ -117,13 +127,18 @@ class TubeBuilder {
     const Vec3 M = mid_.point(a, sj);
     const Vec3 cp = M + (half_ - r) * N, cm = M - (half_ - r) * N;
     std::vector<BSplineCurve<3>> out;
-    if (up) {
+    const bool flat = half_ - r > 1e-9 * half_;
+    if (!flat) {  // full round about M: from -N over +-T to +N (up) or from +N over -T to -N (down)
+      const Vec3 u = up ? Vec3(-N) : N, v = up ? T : Vec3(-T);
+      out.push_back(arc(M, u, v, r, 0, kFullRoundSplit));
+      out.push_back(arc(M, u, v, r, kFullRoundSplit, kPi));
+    } else if (up) {
       out.push_back(quarter(cm, -N, T, r));
-      if (half_ - r > 1e-9 * half_) out.push_back(segment(cm + r * T, cp + r * T));
+      out.push_back(segment(cm + r * T, cp + r * T));
       out.push_back(quarter(cp, T, N, r));
     } else {
       out.push_back(quarter(cp, N, -T, r));
-      if (half_ - r > 1e-9 * half_) out.push_back(segment(cp - r * T, cm - r * T));
+      out.push_back(segment(cp - r * T, cm - r * T));
       out.push_back(quarter(cm, -T, -N, r));
     }
     return out;

@@ -155,7 +155,8 @@ std::vector<features::RadialPassageDefinition> read_passage_table(const std::str
   return out;
 }
 
-std::vector<features::RadialPassageDefinition> radial_passages(const Field& f, const std::filesystem::path& base_dir) {
+std::vector<features::RadialPassageDefinition> radial_passages(const Field& f, const std::filesystem::path& base_dir,
+                                                               std::vector<std::string>& files) {
   if (f.is_array()) {
     std::vector<features::RadialPassageDefinition> out;
     const std::size_t n = f.expect_array(1, 1000);
@@ -177,6 +178,7 @@ std::vector<features::RadialPassageDefinition> radial_passages(const Field& f, c
                                                : blade::LengthUnit::Millimetre;
   std::filesystem::path p = f.at("file").string();
   if (p.is_relative()) p = base_dir / p;
+  files.push_back(p.string());
   return read_passage_table(p.string(), blade::millimetres_per(unit), f.path() + ".file");
 }
 
@@ -186,7 +188,7 @@ CoolingConfig parse_cooling(const Field& f, const std::filesystem::path& base_di
   f.expect_object({"core", "radial_passages"});
   CoolingConfig c;
   if (f.has("core")) c.passages.core = core(f.at("core"));
-  if (f.has("radial_passages")) c.passages.radial_passages = radial_passages(f.at("radial_passages"), base_dir);
+  if (f.has("radial_passages")) c.passages.radial_passages = radial_passages(f.at("radial_passages"), base_dir, c.source_files);
   return c;
 }
 

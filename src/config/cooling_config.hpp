@@ -14,6 +14,8 @@
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include "features/passage_definition.hpp"
 #include "src/blade/blade_surface.hpp"
@@ -24,6 +26,7 @@ namespace cg::config {
 
 struct CoolingConfig {
   features::PassagesDefinition passages;  ///< "core" and "radial_passages"
+  std::vector<std::string> source_files;  ///< table files read (resolved paths), for the input hash
   bool empty() const { return passages.empty(); }
 };
 
