@@ -507,8 +507,8 @@ CoreBuild build_core_tools(const blade::BladeModel& model, const CoreDefinition&
     Inside in_target(system_shapes[static_cast<std::size_t>(sys)]);
     const double tm = along(wall, 0.5 * reach);
     const Vec3 e1 = dir.unitOrthogonal(), e2 = dir.cross(e1);
-    for (int k = 0; k < 24; ++k) {
-      const double a = 2 * kPi * k / 24;
+    for (int k = 0; k < 12; ++k) {
+      const double a = 2 * kPi * k / 12;
       const Vec3 p = x0 + tm * dir + 0.5 * in.diameter * (std::cos(a) * e1 + std::sin(a) * e2);
       if (!in_target(p))
         throw PassageInputError(field + ".diameter", name + " (diameter " + num(in.diameter) +

@@ -32,7 +32,7 @@ brep::NamedShape apply_passage_tools(const brep::NamedShape& part, const std::ve
   if (!interior.empty()) {
     const std::vector<TopoDS_Shape> solids = solids_of(part.shape);
     if (solids.size() != 1) throw FeatureFailure("inserting chambers: the blade must be one solid");
-    report.min_clearance = HUGE_VAL;
+    report.min_clearance = report.wall_clearance = HUGE_VAL;
     BRep_Builder bb;
     TopoDS_Solid result;
     bb.MakeSolid(result);
@@ -42,16 +42,26 @@ brep::NamedShape apply_passage_tools(const brep::NamedShape& part, const std::ve
     for (const FeatureTool& t : interior) {
       const std::vector<TopoDS_Shape> ts = solids_of(t.shape.shape);
       if (ts.size() != 1) throw FeatureFailure(t.feature + ": an interior tool must be one solid");
-      // Between the boundaries (shells): between solids BRepExtrema reports 0 for a solid inside another.
-      TopExp_Explorer part_shell(solids.front(), TopAbs_SHELL), tool_shell(ts.front(), TopAbs_SHELL);
-      BRepExtrema_DistShapeShape d(part_shell.Current(), tool_shell.Current());
-      if (!d.IsDone()) throw FeatureFailure(t.feature + ": cannot measure its distance to the blade's boundary");
+      // Distance between the boundaries (faces: between solids BRepExtrema reports 0 for a solid inside
+      // another), from the outer wall and from the other faces of the part separately: the first is the
+      // outer wall's minimum thickness the design checks report.
+      TopoDS_Compound wall, ends;
+      bb.MakeCompound(wall);
+      bb.MakeCompound(ends);
+      for (const brep::NamedFace& f : part.faces) bb.Add(f.name == "blade_wall" ? wall : ends, f.face);
+      TopExp_Explorer tool_shell(ts.front(), TopAbs_SHELL);
+      BRepExtrema_DistShapeShape dw(wall, tool_shell.Current());
+      BRepExtrema_DistShapeShape de(ends, tool_shell.Current());
+      if (!dw.IsDone() || !de.IsDone())
+        throw FeatureFailure(t.feature + ": cannot measure its distance to the blade's boundary");
+      const double d = std::min(dw.Value(), de.Value());
       TopExp_Explorer v(ts.front(), TopAbs_VERTEX);
       in_part.Perform(BRep_Tool::Pnt(TopoDS::Vertex(v.Current())), 1e-7);
-      if (d.Value() <= 1e-6 || in_part.State() != TopAbs_IN)
+      if (d <= 1e-6 || in_part.State() != TopAbs_IN)
         throw FeatureFailure(t.feature + ": not strictly inside the blade (distance to its boundary " +
-                             std::to_string(d.Value()) + " mm)");
-      report.min_clearance = std::min(report.min_clearance, d.Value());
+                             std::to_string(d) + " mm)");
+      report.min_clearance = std::min(report.min_clearance, d);
+      report.wall_clearance = std::min(report.wall_clearance, dw.Value());
       for (TopExp_Explorer e(ts.front(), TopAbs_SHELL); e.More(); e.Next()) bb.Add(result, e.Current().Reversed());
       // The removed volume is the integral over the inserted (reversed) faces: with the tool's own volume
       // this checks the void's orientation.

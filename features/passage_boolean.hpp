@@ -2,6 +2,7 @@
 // The one place where the passage features meet the blade: chambers strictly inside the blade are
 // inserted as voids (checked, see apply_passage_tools), every other tool is cut through the verified
 // boolean path (verified_boolean.hpp: BooleanStep).
+#include <limits>
 #include <vector>
 
 #include "features/verified_boolean.hpp"
@@ -13,6 +14,8 @@ namespace cg::features {
 struct PassageBooleanReport {
   std::vector<ToolReport> voids;  ///< interior tools inserted as voids (expected vs measured volume)
   double min_clearance = 0;       ///< mm, smallest distance between a void and the part's boundary
+  /// mm, smallest distance between a void and the part's faces named blade_wall (NaN: no voids)
+  double wall_clearance = std::numeric_limits<double>::quiet_NaN();
   double void_seconds = 0;
   BooleanStepReport cut;          ///< the cut of the other tools (tool_count 0 when none)
 };

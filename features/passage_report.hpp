@@ -61,6 +61,8 @@ struct PassageReport {
   int inner_wall_poles_u = 0, inner_wall_poles_v = 0;
   double inner_wall_fit_error = 0;  ///< mm
   double min_clearance = 0;         ///< mm, chambers to the blade's boundary (void insertion precondition)
+  /// mm, chambers to the outer wall, measured when they were inserted as voids (NaN: not inserted)
+  double wall_clearance = std::numeric_limits<double>::quiet_NaN();
   std::vector<std::pair<std::string, double>> seconds;  ///< stage times
   bool passed() const;
   nlohmann::json to_json() const;

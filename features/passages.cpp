@@ -45,6 +45,7 @@ PassagesResult build_passages(const blade::BladeModel& model, const brep::NamedS
   lap("boolean");
   out.check = br.cut.check;
   out.report.min_clearance = br.min_clearance;
+  out.report.wall_clearance = br.wall_clearance;
   for (const auto& v : br.voids) out.report.tools.push_back({v.feature, v.expected_volume, v.measured_volume, v.passed, "void"});
   for (const auto& t : br.cut.tools) out.report.tools.push_back({t.feature, t.expected_volume, t.measured_volume, t.passed, "cut"});
   measure_passages(model, out.blade, def, core ? &*core : nullptr, radial ? &*radial : nullptr, out.report);
