@@ -255,6 +255,16 @@ int rib_of(const std::string& name, const std::vector<RibTube>& ribs) {
 
 }  // namespace
 
+void check_core_definition(const blade::BladeModel& model, const CoreDefinition& def) {
+  check_definition(def);
+  const blade::BladeCoordinates coords(model);
+  try {
+    check_rib_placement(coords, def);  // computes the crossing on five spans
+  } catch (const blade::InnerWallError& e) {
+    throw PassageInputError("core.wall_thickness", e.what());
+  }
+}
+
 Vec3 chamber_point(const blade::BladeCoordinates& coords, const blade::ThicknessField& wall, const ChamberInfo& c,
                    double span) {
   const Vec3 s = blade::inner_wall_point(coords, wall, span, 0.5 * (c.suction_from + c.suction_to));

@@ -71,6 +71,11 @@ struct CoreBuild {
 /// field below "cooling" (and the span / chord where it fails); OCCT failures throw FeatureFailure.
 CoreBuild build_core_tools(const blade::BladeModel& model, const CoreDefinition& def);
 
+/// The input checks of build_core_tools that need no solid (ordering, turnarounds against open ends,
+/// inlets, coolant supply, the inner wall's trailing-edge crossing and the ribs' placement on five spans),
+/// in a few ms: `coolinggen validate` and the build's first stage run them. Throws PassageInputError.
+void check_core_definition(const blade::BladeModel& model, const CoreDefinition& def);
+
 /// The reference point of a chamber: midway between its suction- and pressure-side inner-wall points at
 /// the middle of its chordwise extent, at `span`.
 Eigen::Vector3d chamber_point(const blade::BladeCoordinates& coords, const blade::ThicknessField& wall,

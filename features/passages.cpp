@@ -11,6 +11,14 @@
 
 namespace cg::features {
 
+void validate_passages(const blade::BladeModel& model, const PassagesDefinition& def) {
+  if (def.core && !def.radial_passages.empty())
+    throw PassageInputError("radial_passages", "radial passages cannot be combined with a core (they would cut "
+                                               "through its chambers); use one or the other");
+  if (def.core) check_core_definition(model, *def.core);
+  if (!def.radial_passages.empty()) build_radial_passages(model, def.radial_passages);  // checks, cheap tools
+}
+
 PassagesResult build_passages(const blade::BladeModel& model, const brep::NamedShape& blade,
                               const PassagesDefinition& def) {
   PassagesResult out;

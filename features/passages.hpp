@@ -16,6 +16,10 @@ struct PassagesResult {
   brep::SolidCheck check;  ///< verify_solid of the cooled blade (run after the last boolean step)
 };
 
+/// The checks of build_passages that need no solid (definition, inner wall crossing, rib placement,
+/// radial passages against the wall), in milliseconds. Throws PassageInputError.
+void validate_passages(const blade::BladeModel& model, const PassagesDefinition& def);
+
 /// Builds `def` into `blade` (the solid of `model`). Throws PassageInputError for input that cannot be
 /// built (field below "cooling" + where), FeatureFailure when a boolean or a design check fails (the
 /// thickness minimums: measured on the built solid, must reach the configured values).

@@ -24,7 +24,9 @@ std::string BuildResult::failed_checks() const {
 
 blade::BladeModel validate(const config::Config& config, ProgressSink* progress) {
   check_output_options(config);
-  return config::build_model(config, progress);
+  blade::BladeModel model = config::build_model(config, progress);
+  if (!config.cooling.empty()) validate_cooling(config.cooling, model);  // ms: no solid needed
+  return model;
 }
 
 BuildResult run_build(const config::Config& config, const BuildOptions& options, ProgressSink* progress) {

@@ -63,8 +63,9 @@ struct BuildResult {
 /// throw: see BuildResult::valid().
 BuildResult run_build(const config::Config& config, const BuildOptions& options = {}, ProgressSink* progress = nullptr);
 
-/// What `coolinggen validate` checks without building the solid: the config's output options and the
-/// blade model (returned). Throws ConfigError.
+/// What `coolinggen validate` checks without building the solid: the config's output options, the
+/// blade model (returned) and the cooling input that needs only the model (pipeline/cooling.hpp).
+/// Throws ConfigError.
 blade::BladeModel validate(const config::Config& config, ProgressSink* progress = nullptr);
 
 }  // namespace cg::pipeline

@@ -2,6 +2,14 @@
 
 namespace cg::pipeline {
 
+void validate_cooling(const config::CoolingConfig& cooling, const blade::BladeModel& model) {
+  try {
+    features::validate_passages(model, cooling.passages);
+  } catch (const features::PassageInputError& e) {
+    throw config::cooling_error(e);
+  }
+}
+
 features::PassagesResult apply_cooling(const config::CoolingConfig& cooling, const blade::BladeModel& model,
                                        const brep::NamedShape& blade) {
   try {

@@ -9,6 +9,9 @@
 
 namespace cg::pipeline {
 
+/// The cooling checks that need the blade model but no solid (features::validate_passages), as ConfigError.
+void validate_cooling(const config::CoolingConfig& cooling, const blade::BladeModel& model);
+
 features::PassagesResult apply_cooling(const config::CoolingConfig& cooling, const blade::BladeModel& model,
                                        const brep::NamedShape& blade);
 
