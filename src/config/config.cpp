@@ -5,6 +5,7 @@
 
 #include "src/blade/meridional_net.hpp"
 #include "src/blade/section.hpp"
+#include "src/config/handoff_fields.hpp"
 #include "src/config/json_document.hpp"
 #include "src/config/json_fields.hpp"
 #include "src/config/point_checks.hpp"
@@ -90,7 +91,8 @@ blade::LengthUnit length_unit(const Field& f) {
 
 blade::PointSectionDefinition point_section(const Field& f, const std::filesystem::path& base_dir, PointSource& source) {
   source.field = f.path();
-  f.expect_object({"file", "values", "unit", "le_index", "te_index", "suction_side"});
+  f.expect_object({"file", "values", "unit", "le_index", "te_index", "suction_side", "le_radius", "te_radius",
+                   "le_centre", "te_centre"});
   if (f.has("file") == f.has("values")) fail(f.path(), "needs exactly one of \"file\" and \"values\"");
   blade::PointSectionDefinition def;
   def.unit = f.has("unit") ? length_unit(f.at("unit")) : blade::LengthUnit::Millimetre;
@@ -119,6 +121,12 @@ blade::PointSectionDefinition point_section(const Field& f, const std::filesyste
                                                blade::SuctionSide::Clockwise};
     def.suction_side = sides[f.at("suction_side").choice({"longer", "counter_clockwise", "clockwise"})];
   }
+  // Edge-circle hints, in the section's unit.
+  const double k = blade::millimetres_per(def.unit);
+  if (f.has("le_radius")) def.le_radius = k * f.at("le_radius").number(positive(1e5));
+  if (f.has("te_radius")) def.te_radius = k * f.at("te_radius").number(positive(1e5));
+  if (f.has("le_centre")) def.le_centre = k * f.at("le_centre").pair();
+  if (f.has("te_centre")) def.te_centre = k * f.at("te_centre").pair();
   return def;
 }
 
@@ -157,11 +165,13 @@ blade::BladeSectionDefinition section(const Field& f, const std::filesystem::pat
 }
 
 blade::BladeOptions blade_options(const Field& f) {
-  f.expect_object({"overbuild", "chordwise_samples", "stacking"});
+  f.expect_object({"overbuild", "chordwise_samples", "stacking", "surface_tolerance", "seam"});
   blade::BladeOptions o;
   // > 0: the solid is cut out of the over-built surface by the hub and casing trims.
   o.overbuild = f.number_or("overbuild", o.overbuild, positive(0.5));
   o.chordwise_samples = f.integer_or("chordwise_samples", o.chordwise_samples, 8, 2000);
+  o.surface_tolerance = f.number_or("surface_tolerance", o.surface_tolerance, closed(1e-5, 0.1), "mm");
+  o.seam = f.number_or("seam", o.seam, closed(-1, 1));
   if (f.has("stacking")) {
     static const blade::StackingPoint points[] = {blade::StackingPoint::LeadingEdge, blade::StackingPoint::Centroid,
                                                   blade::StackingPoint::TrailingEdge};
@@ -174,7 +184,8 @@ blade::BladeOptions blade_options(const Field& f) {
 
 Config parse_config(const nlohmann::json& document, const std::filesystem::path& base_dir, const std::string& default_name) {
   const Field root(document, "");
-  root.expect_object({"$schema", "name", "description", "units", "flow_path", "sections", "blade", "output", "cooling"});
+  root.expect_object({"$schema", "name", "description", "units", "flow_path", "sections", "blade", "output", "mesh",
+                      "grid", "cooling"});
   Config c;
   c.source = document;
   c.name = root.has("name") ? root.at("name").string() : default_name;
@@ -198,7 +209,8 @@ Config parse_config(const nlohmann::json& document, const std::filesystem::path&
   c.output.product_name = c.name;
   if (root.has("output")) {
     const Field out = root.at("output");
-    out.expect_object({"formats", "step_schema", "product_name"});
+    out.expect_object({"formats", "step_schema", "product_name", "stl_deflection", "stl_angular_deflection_deg",
+                       "section_spans"});
     if (out.has("formats")) {
       const Field formats = out.at("formats");
       const std::size_t n = formats.expect_array(0);
@@ -208,7 +220,10 @@ Config parse_config(const nlohmann::json& document, const std::filesystem::path&
     if (out.has("step_schema"))
       c.output.step_schema = out.at("step_schema").choice({"AP214", "AP242"}) == 1 ? "AP242" : "AP214";
     if (out.has("product_name")) c.output.product_name = out.at("product_name").string();
+    read_handoff_output_fields(out, c.output);
   }
+  if (root.has("mesh")) c.mesh = mesh_config(root.at("mesh"));
+  if (root.has("grid")) c.grid = parse_grid_config(root.at("grid"), n);
   return c;
 }
 
