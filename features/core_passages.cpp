@@ -22,19 +22,16 @@
 #include <sstream>
 
 #include "features/face_names.hpp"
+#include "src/blade/format.hpp"
 #include "src/brep/blade_solid.hpp"
 
 namespace cg::features {
 namespace {
 
+using blade::detail::fmt;
+
 using Vec3 = Eigen::Vector3d;
 
-std::string num(double v) {
-  std::ostringstream s;
-  s.precision(4);
-  s << v;
-  return s.str();
-}
 
 std::string rib_field(std::size_t i, const char* member) {
   return "core.ribs[" + std::to_string(i) + "]." + member;
@@ -114,13 +111,13 @@ void check_definition(const CoreDefinition& def) {
     if (i > 0 && !(r.suction_chord > def.ribs[i - 1].suction_chord))
       throw PassageInputError(rib_field(i, "suction_chord"),
                               "ribs must be listed from the LE to the TE: must be > " +
-                                  num(def.ribs[i - 1].suction_chord) + " (ribs[" + std::to_string(i - 1) + "]), got " +
-                                  num(r.suction_chord));
+                                  fmt(def.ribs[i - 1].suction_chord) + " (ribs[" + std::to_string(i - 1) + "]), got " +
+                                  fmt(r.suction_chord));
     if (i > 0 && !(r.pressure_chord < def.ribs[i - 1].pressure_chord))
       throw PassageInputError(rib_field(i, "pressure_chord"),
                               "ribs must be listed from the LE to the TE: must be < " +
-                                  num(def.ribs[i - 1].pressure_chord) + " (ribs[" + std::to_string(i - 1) +
-                                  "], pressure-side chords are negative), got " + num(r.pressure_chord));
+                                  fmt(def.ribs[i - 1].pressure_chord) + " (ribs[" + std::to_string(i - 1) +
+                                  "], pressure-side chords are negative), got " + fmt(r.pressure_chord));
     if (r.turnaround) {
       const TurnaroundDefinition& t = *r.turnaround;
       const bool open = t.end == SpanEnd::Tip ? def.tip_cap.open : def.hub_floor.open;
@@ -131,8 +128,8 @@ void check_definition(const CoreDefinition& def) {
                                     " is open");
       if (t.tip_radius > 0.5 * r.thickness * (1 + 1e-12))
         throw PassageInputError(rib_field(i, "turnaround.tip_radius"),
-                                "must be in (0, thickness / 2 = " + num(0.5 * r.thickness) + "] mm, got " +
-                                    num(t.tip_radius));
+                                "must be in (0, thickness / 2 = " + fmt(0.5 * r.thickness) + "] mm, got " +
+                                    fmt(t.tip_radius));
     }
   }
   const int chambers = static_cast<int>(n) + 1;
@@ -189,18 +186,18 @@ void check_rib_placement(const blade::BladeCoordinates& coords, const CoreDefini
       const double reach = 0.5 * r.thickness + r.fillet_radius + 0.1;  // mm the rib needs beyond its chord
       if (r.suction_chord + reach / ls >= cr.suction_chord)
         throw PassageInputError(rib_field(i, "suction_chord"),
-                                "rib " + std::to_string(i + 1) + " lies outside the core at span " + num(s) +
-                                    ": with its thickness and fillets it reaches chord " + num(r.suction_chord + reach / ls) +
-                                    ", the inner wall ends at suction chord " + num(cr.suction_chord) + " there");
+                                "rib " + std::to_string(i + 1) + " lies outside the core at span " + fmt(s) +
+                                    ": with its thickness and fillets it reaches chord " + fmt(r.suction_chord + reach / ls) +
+                                    ", the inner wall ends at suction chord " + fmt(cr.suction_chord) + " there");
       if (r.pressure_chord - reach / lp <= cr.pressure_chord)
         throw PassageInputError(rib_field(i, "pressure_chord"),
-                                "rib " + std::to_string(i + 1) + " lies outside the core at span " + num(s) +
-                                    ": with its thickness and fillets it reaches chord " + num(r.pressure_chord - reach / lp) +
-                                    ", the inner wall ends at pressure chord " + num(cr.pressure_chord) + " there");
+                                "rib " + std::to_string(i + 1) + " lies outside the core at span " + fmt(s) +
+                                    ": with its thickness and fillets it reaches chord " + fmt(r.pressure_chord - reach / lp) +
+                                    ", the inner wall ends at pressure chord " + fmt(cr.pressure_chord) + " there");
       if (r.suction_chord - reach / ls <= 0 || r.pressure_chord + reach / lp >= 0)
         throw PassageInputError(rib_field(i, r.suction_chord - reach / ls <= 0 ? "suction_chord" : "pressure_chord"),
                                 "rib " + std::to_string(i + 1) + " with its thickness and fillets reaches over the "
-                                "leading edge at span " + num(s));
+                                "leading edge at span " + fmt(s));
       if (i == 0) continue;
       const RibDefinition& q = def.ribs[i - 1];
       const double need = std::max(r.thickness, q.thickness);
@@ -215,7 +212,7 @@ void check_rib_placement(const blade::BladeCoordinates& coords, const CoreDefini
         throw PassageInputError(rib_field(i, ss ? "suction_chord" : "pressure_chord"),
                                 "ribs " + std::to_string(i) + " and " + std::to_string(i + 1) + " overlap or are closer "
                                 "than their thickness on the " + (ss ? "suction" : "pressure") + " side at span " +
-                                    num(s) + ": clear width " + num(ss ? clear_s : clear_p) + " mm, at least " + num(need) +
+                                    fmt(s) + ": clear width " + fmt(ss ? clear_s : clear_p) + " mm, at least " + fmt(need) +
                                     " mm needed");
     }
   }
@@ -521,7 +518,7 @@ CoreBuild build_core_tools(const blade::BladeModel& model, const CoreDefinition&
       const double a = 2 * kPi * k / 12;
       const Vec3 p = x0 + tm * dir + 0.5 * in.diameter * (std::cos(a) * e1 + std::sin(a) * e2);
       if (!in_target(p))
-        throw PassageInputError(field + ".diameter", name + " (diameter " + num(in.diameter) +
+        throw PassageInputError(field + ".diameter", name + " (diameter " + fmt(in.diameter) +
                                                          " mm) does not fit into chamber " + std::to_string(in.chamber) +
                                                          " where it passes the " + (hub ? "hub floor" : "tip cap") +
                                                          ": its rim leaves the chamber; use a smaller diameter or move it");

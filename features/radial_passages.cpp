@@ -8,17 +8,14 @@
 #include <sstream>
 
 #include "features/face_names.hpp"
+#include "src/blade/format.hpp"
 #include "src/blade/blade_coordinates.hpp"
 
 namespace cg::features {
 namespace {
+
+using blade::detail::fmt;
 constexpr double kPi = 3.14159265358979323846;
-std::string num(double v) {
-  std::ostringstream s;
-  s.precision(4);
-  s << v;
-  return s.str();
-}
 }  // namespace
 
 RadialPassageBuild build_radial_passages(const blade::BladeModel& model,
@@ -43,9 +40,9 @@ RadialPassageBuild build_radial_passages(const blade::BladeModel& model,
       const double d = loc.found ? loc.coordinate.depth : -HUGE_VAL;
       if (!(d > r))
         throw PassageInputError(field + ".position", "radial passage " + std::to_string(k + 1) + " (diameter " +
-                                                         num(p.diameter) + " mm at [" + num(p.position.x()) + ", " +
-                                                         num(p.position.y()) + "] mm) breaks through the wall at span " +
-                                                         num(s) + ": its axis is " + num(d) + " mm inside the wall");
+                                                         fmt(p.diameter) + " mm at [" + fmt(p.position.x()) + ", " +
+                                                         fmt(p.position.y()) + "] mm) breaks through the wall at span " +
+                                                         fmt(s) + ": its axis is " + fmt(d) + " mm inside the wall");
       wall = std::min(wall, d - r);
     }
     for (std::size_t j = 0; j < k; ++j)

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "adaptors/occt_convert.hpp"
+#include "src/blade/format.hpp"
 #include "src/algo/project_point_surface.hpp"
 #include "src/core/error.hpp"
 #include "src/fit/interpolate.hpp"
@@ -20,15 +21,11 @@
 namespace cg::features {
 namespace {
 
+using blade::detail::fmt;
+
 using Vec3 = Eigen::Vector3d;
 constexpr double kPi = 3.14159265358979323846;
 
-std::string num(double v) {
-  std::ostringstream s;
-  s.precision(6);
-  s << v;
-  return s.str();
-}
 
 // Rational quadratic arc c + r (cos t u + sin t v), t from t0 to t1 (t1 - t0 < pi; u, v orthonormal):
 // The NURBS Book 7.5 (middle pole on the bisector at r / cos(sweep / 2), weight cos(sweep / 2)).
@@ -161,10 +158,10 @@ class TubeBuilder {
     auto f = [&](double s) { return end_distance(a, s, up, e) - e.gap; };
     const double far_side = up ? lo : hi, near_side = up ? hi : lo;
     if (f(far_side) <= 0)
-      throw InvalidGeometry("rib " + std::to_string(index_) + ": the turnaround gap " + num(e.gap) +
+      throw InvalidGeometry("rib " + std::to_string(index_) + ": the turnaround gap " + fmt(e.gap) +
                             " mm leaves no rib (the end wall is closer than the gap even at the rib's other end)");
     if (f(near_side) >= 0)
-      throw InvalidGeometry("rib " + std::to_string(index_) + ": cannot place the turnaround end " + num(e.gap) +
+      throw InvalidGeometry("rib " + std::to_string(index_) + ": cannot place the turnaround end " + fmt(e.gap) +
                             " mm from its end wall within the blade");
     double x0 = far_side, x1 = near_side;  // f(x0) > 0 >= f(x1)
     for (int it = 0; it < 60; ++it) {
@@ -276,8 +273,8 @@ RibTube build_rib_tube(const blade::BladeCoordinates& coords, const blade::Thick
     const TurnaroundDefinition& t = *rib.turnaround;
     require(t.gap > 0, who + ": turnaround gap must be > 0 mm");
     require(t.tip_radius > 0 && t.tip_radius <= 0.5 * rib.thickness * (1 + 1e-12),
-            who + ": tip radius must be in (0, thickness / 2 = " + num(0.5 * rib.thickness) + "] mm, got " +
-                num(t.tip_radius));
+            who + ": tip radius must be in (0, thickness / 2 = " + fmt(0.5 * rib.thickness) + "] mm, got " +
+                fmt(t.tip_radius));
     EndSpec& e = t.end == SpanEnd::Tip ? tip : hub;
     e.kind = EndKind::Turnaround;
     e.radius = std::min(t.tip_radius, 0.5 * rib.thickness);
@@ -327,8 +324,8 @@ RibTube build_rib_tube(const blade::BladeCoordinates& coords, const blade::Thick
       out.max_station_error = worst;
       if (worst > tolerance && n < 49) continue;
       if (worst > tolerance)
-        throw AlgorithmFailure(who + ": the skinned rib surfaces stay " + num(worst) + " mm from the exact rib (tolerance " +
-                               num(tolerance) + " mm)");
+        throw AlgorithmFailure(who + ": the skinned rib surfaces stay " + fmt(worst) + " mm from the exact rib (tolerance " +
+                               fmt(tolerance) + " mm)");
       // The open ends must lie outside the core: farther than t from no wall point, i.e. within the wall.
       for (double a : {st.front(), st.back()}) {
         const TubeBuilder::Profile e = tb.profile(a);
