@@ -10,6 +10,7 @@
 #include "src/algo/offset_exact.hpp"
 #include "src/algo/project_point_curve.hpp"
 #include "src/core/error.hpp"
+#include "src/core/format.hpp"
 #include "src/modify/split.hpp"
 
 namespace cg {
@@ -97,7 +98,7 @@ Fillet2d fillet_2d(const Curve2& c1, const Curve2& c2, double radius, int side1,
     }
   }
   if (cands.empty()) {
-    out.reason = "no fillet of radius " + std::to_string(radius) +
+    out.reason = "no fillet of radius " + format_number(radius) +
                  ": the offset curves do not meet (radius too large for the curves, or parallel curves)";
     return out;
   }
@@ -107,7 +108,7 @@ Fillet2d fillet_2d(const Curve2& c1, const Curve2& c2, double radius, int side1,
   const double x1 = pr1.project(corner).param, x2 = pr2.project(corner).param;
   // The circle may touch but not cut a curve: its global distance to each must be r (to rounding).
   const double touch_tol = 1e-10 * scale;
-  std::string why = "no fillet of radius " + std::to_string(radius) + ": ";
+  std::string why = "no fillet of radius " + format_number(radius) + ": ";
   for (const auto& c : cands) {
     if (at_end(c1, c.u1) || at_end(c2, c.u2)) {
       why += "the circle would touch a curve beyond its end (radius too large for the curves)";

@@ -7,6 +7,7 @@
 #include "src/algo/fillet_arc.hpp"
 #include "src/core/curve_evaluator.hpp"
 #include "src/core/error.hpp"
+#include "src/core/format.hpp"
 #include "src/fit/approximate.hpp"
 
 namespace cg {
@@ -81,8 +82,8 @@ OffsetFit fit_offset_stretch(ExactOffset& offset, double u0, double u1, double t
       // Half the tolerance at the check points leaves room for the error between them.
       if (err > 0.5 * tol) {
         if (b - a <= 1e-12 * (u1 - u0))
-          throw AlgorithmFailure("offset fit cannot reach tolerance " + std::to_string(tol) +
-                                 " (span length at the rounding level near u = " + std::to_string(a) + ")");
+          throw AlgorithmFailure("offset fit cannot reach tolerance " + format_number(tol) +
+                                 " (span length at the rounding level near u = " + format_number(a) + ")");
         refine.push_back(0.5 * (a + b));
       }
     }
@@ -90,7 +91,7 @@ OffsetFit fit_offset_stretch(ExactOffset& offset, double u0, double u1, double t
     interior.insert(interior.end(), refine.begin(), refine.end());
     std::sort(interior.begin(), interior.end());
   }
-  throw AlgorithmFailure("offset fit did not reach tolerance " + std::to_string(tol) + " in " +
+  throw AlgorithmFailure("offset fit did not reach tolerance " + format_number(tol) + " in " +
                          std::to_string(kMaxRounds) + " refinement rounds");
 }
 

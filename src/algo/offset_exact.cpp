@@ -6,6 +6,7 @@
 #include <string>
 
 #include "src/core/error.hpp"
+#include "src/core/format.hpp"
 
 namespace cg {
 
@@ -21,7 +22,7 @@ ExactOffset::Local ExactOffset::eval(double u, int side) {
   ev_.d2(u, L.C, L.C1, L.C2);
   const double speed = L.C1.norm();
   if (!(speed > 1e-300) || !(speed > 1e-14 * L.C2.norm()))
-    throw InvalidGeometry("offset: the base curve tangent vanishes at u = " + std::to_string(u) +
+    throw InvalidGeometry("offset: the base curve tangent vanishes at u = " + format_number(u) +
                           " (the normal is undefined; the base must be regular)");
   return L;
 }

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "src/core/error.hpp"
+#include "src/core/format.hpp"
 
 namespace cg {
 
@@ -91,7 +92,7 @@ template <int Dim>
 std::vector<double> span_lengths(const BSplineCurve<Dim>& c, const std::vector<double>& breaks, double rel_tol,
                                  double& abs_tol) {
   require(rel_tol >= 1e-15 && rel_tol < 1,
-          "arc length tolerance " + std::to_string(rel_tol) + " out of range [1e-15, 1)");
+          "arc length tolerance " + format_number(rel_tol) + " out of range [1e-15, 1)");
   std::vector<double> len(breaks.size() - 1);
   double estimate = 0;
   for (std::size_t i = 0; i < len.size(); ++i) estimate += len[i] = gauss_panel(c, breaks[i], breaks[i + 1]);
@@ -124,8 +125,8 @@ template <int Dim>
 double ArcLength<Dim>::length_to(double u) const {
   const double a = breaks_.front(), b = breaks_.back();
   const double eps = 1e-12 * (b - a);
-  require(u >= a - eps && u <= b + eps, "parameter " + std::to_string(u) + " outside the curve domain [" +
-                                            std::to_string(a) + ", " + std::to_string(b) + "]");
+  require(u >= a - eps && u <= b + eps, "parameter " + format_number(u) + " outside the curve domain [" +
+                                            format_number(a) + ", " + format_number(b) + "]");
   u = std::clamp(u, a, b);
   if (u == b) return cumulative_.back();
   const std::size_t i =
@@ -136,7 +137,7 @@ double ArcLength<Dim>::length_to(double u) const {
 template <int Dim>
 double ArcLength<Dim>::param_at(double s) const {
   const double L = total();
-  require(s >= -tol_ && s <= L + tol_, "arc length " + std::to_string(s) + " outside [0, " + std::to_string(L) + "]");
+  require(s >= -tol_ && s <= L + tol_, "arc length " + format_number(s) + " outside [0, " + format_number(L) + "]");
   if (s <= 0) return breaks_.front();
   if (s >= L) return breaks_.back();
   std::size_t i =
@@ -162,7 +163,7 @@ double ArcLength<Dim>::param_at(double s) const {
 
 template <int Dim>
 double arc_length(const BSplineCurve<Dim>& curve, double a, double b, double rel_tol) {
-  require(a <= b, "arc length needs a <= b, got a = " + std::to_string(a) + ", b = " + std::to_string(b));
+  require(a <= b, "arc length needs a <= b, got a = " + format_number(a) + ", b = " + format_number(b));
   a = curve.check_param(a);
   if (b != curve.last_param()) b = curve.check_param(b);  // a periodic curve would wrap its end to the start
   if (a == b) return 0;

@@ -7,6 +7,7 @@
 
 #include "src/core/basis.hpp"
 #include "src/core/error.hpp"
+#include "src/core/format.hpp"
 #include "src/core/periodic.hpp"
 #include "src/core/rational.hpp"
 
@@ -111,7 +112,7 @@ void BSplineSurface<Dim>::set_periodic(bool periodic_u, bool periodic_v) {
 
 namespace {
 double wrap_or_check(double t, double a, double b, bool periodic, const char* name) {
-  if (!std::isfinite(t)) throw InvalidGeometry(std::string("surface parameter ") + name + " = " + std::to_string(t) + " is not finite");
+  if (!std::isfinite(t)) throw InvalidGeometry(std::string("surface parameter ") + name + " = " + format_number(t) + " is not finite");
   if (periodic) {
     if (t >= a && t < b) return t;
     double r = std::fmod(t - a, b - a);
@@ -120,8 +121,8 @@ double wrap_or_check(double t, double a, double b, bool periodic, const char* na
   }
   const double eps = 1e-12 * (b - a);
   if (!(t >= a - eps && t <= b + eps))
-    throw InvalidGeometry(std::string("surface parameter ") + name + " = " + std::to_string(t) + " outside [" +
-                          std::to_string(a) + ", " + std::to_string(b) + "]");
+    throw InvalidGeometry(std::string("surface parameter ") + name + " = " + format_number(t) + " outside [" +
+                          format_number(a) + ", " + format_number(b) + "]");
   return t < a ? a : (t > b ? b : t);
 }
 }  // namespace
@@ -154,7 +155,7 @@ typename BSplineSurface<Dim>::Point BSplineSurface<Dim>::point(double u, double 
 
 template <int Dim>
 void BSplineSurface<Dim>::derivatives(double u, double v, int order, Point* out) const {
-  require(order >= 0 && order <= kMaxDegree, "surface derivative order must be in [0, 25]");
+  check_derivative_order(order, "surface");
   check_params(u, v);
   const int su = find_span(U_.data(), nu_ - 1, pu_, u);
   const int sv = find_span(V_.data(), nv_ - 1, pv_, v);

@@ -5,6 +5,7 @@
 
 #include "src/core/basis.hpp"
 #include "src/core/error.hpp"
+#include "src/core/format.hpp"
 
 namespace cg {
 
@@ -50,8 +51,8 @@ void CurveEvaluator<Dim>::relocate(double& u) {
   if (periodic_) {
     u = curve_->check_param(u);  // wraps into the base period; rejects non-finite u
   } else if (!(u >= first_ - eps_ && u <= last_ + eps_)) {
-    throw InvalidGeometry("parameter " + std::to_string(u) + " outside the curve domain [" + std::to_string(first_) +
-                          ", " + std::to_string(last_) + "] (tolerance " + std::to_string(eps_) + ")");
+    throw InvalidGeometry("parameter " + format_number(u) + " outside the curve domain [" + format_number(first_) +
+                          ", " + format_number(last_) + "] (tolerance " + format_number(eps_) + ")");
   }
   if (u >= sp_.lo && u < sp_.hi) return;  // wrapping landed in the current span
   span_ = spans_.find(u);
