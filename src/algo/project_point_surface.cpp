@@ -228,14 +228,13 @@ bool SurfaceProjector::single_critical_point() const {
 // the domain, with backtracking so the distance never increases. The end point is a candidate; returns
 // true when it is a critical point (uv receives it).
 bool SurfaceProjector::newton(double u, double v, Eigen::Vector2d& uv) {
-  Eigen::Vector3d d[9];
   const double eu = 1e-15 * (umax_ - umin_ + std::abs(umax_)), ev = 1e-15 * (vmax_ - vmin_ + std::abs(vmax_));
   Eigen::Vector3d S = s_->point(u, v);
   double f = 0.5 * (S - P_).squaredNorm();
   for (int it = 0; it < 40; ++it) {
-    s_->derivatives(u, v, 2, d);
-    const Eigen::Vector3d r = d[0] - P_;
-    const Eigen::Vector3d &Su = d[3], &Sv = d[1], &Suu = d[6], &Suv = d[4], &Svv = d[2];
+    const auto d = s_->derivatives<2>(u, v);
+    const Eigen::Vector3d r = d.S() - P_;
+    const Eigen::Vector3d &Su = d.S_u(), &Sv = d.S_v(), &Suu = d.S_uu(), &Suv = d.S_uv(), &Svv = d.S_vv();
     const Eigen::Vector2d g(Su.dot(r), Sv.dot(r));
     Eigen::Matrix2d H;
     H << Su.dot(Su) + Suu.dot(r), Su.dot(Sv) + Suv.dot(r), Su.dot(Sv) + Suv.dot(r), Sv.dot(Sv) + Svv.dot(r);
@@ -267,10 +266,10 @@ bool SurfaceProjector::newton(double u, double v, Eigen::Vector2d& uv) {
   uv = Eigen::Vector2d(u, v);
   // A critical point: the residual is orthogonal to both tangents to ~1e-9 (Newton converges
   // quadratically, so a converged point is far below this; a stalled one far above).
-  s_->derivatives(u, v, 1, d);
+  const auto d = s_->derivatives<1>(u, v);
   const double r = (S - P_).norm();
-  return std::abs(d[2].dot(S - P_)) <= 1e-9 * d[2].norm() * (r + tol_) &&
-         std::abs(d[1].dot(S - P_)) <= 1e-9 * d[1].norm() * (r + tol_);
+  return std::abs(d.S_u().dot(S - P_)) <= 1e-9 * d.S_u().norm() * (r + tol_) &&
+         std::abs(d.S_v().dot(S - P_)) <= 1e-9 * d.S_v().norm() * (r + tol_);
 }
 
 void SurfaceProjector::examine(const double* hp, const Piece& piece) {

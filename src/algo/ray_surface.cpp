@@ -45,11 +45,10 @@ bool RaySurfaceCaster::newton(const Item& it, const Eigen::Vector3d& o, const Ei
   const double mu = 0.5 * (it.u1 - it.u0), mv = 0.5 * (it.v1 - it.v0);
   const double ulo = std::max(s_->first_u(), it.u0 - mu), uhi = std::min(s_->last_u(), it.u1 + mu);
   const double vlo = std::max(s_->first_v(), it.v0 - mv), vhi = std::min(s_->last_v(), it.v1 + mv);
-  Eigen::Vector3d D[4];
-  s_->derivatives(u, v, 1, D);
-  double s = d.dot(D[0] - o) / d.squaredNorm();
+  auto D = s_->derivatives<1>(u, v);
+  double s = d.dot(D.S() - o) / d.squaredNorm();
   for (int k = 0; k < 30; ++k) {
-    const Eigen::Vector3d F = o + s * d - D[0];
+    const Eigen::Vector3d F = o + s * d - D.S();
     if (F.norm() <= tol_) {
       const double eu = 1e-12 * (it.u1 - it.u0), ev = 1e-12 * (it.v1 - it.v0);
       if (u < it.u0 - eu || u > it.u1 + eu || v < it.v0 - ev || v > it.v1 + ev) return false;
@@ -57,14 +56,14 @@ bool RaySurfaceCaster::newton(const Item& it, const Eigen::Vector3d& o, const Ei
       hit.ray_param = s;
       hit.u = u;
       hit.v = v;
-      hit.point = D[0];
+      hit.point = D.S();
       hit.gap = F.norm();
       return true;
     }
     Eigen::Matrix3d J;
     J.col(0) = d;
-    J.col(1) = -D[2];
-    J.col(2) = -D[1];
+    J.col(1) = -D.S_u();
+    J.col(2) = -D.S_v();
     const auto lu = J.partialPivLu();
     if (!(std::abs(lu.determinant()) > 1e-300)) return false;
     const Eigen::Vector3d step = lu.solve(-F);
@@ -72,7 +71,7 @@ bool RaySurfaceCaster::newton(const Item& it, const Eigen::Vector3d& o, const Ei
     s += step[0];
     u = std::clamp(u + step[1], ulo, uhi);
     v = std::clamp(v + step[2], vlo, vhi);
-    s_->derivatives(u, v, 1, D);
+    D = s_->derivatives<1>(u, v);
   }
   return false;
 }

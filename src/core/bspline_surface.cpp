@@ -218,9 +218,8 @@ typename BSplineSurface<Dim>::Point BSplineSurface<Dim>::normal(double u, double
   if constexpr (Dim != 3) {
     throw InvalidGeometry("surface normal is defined for 3D surfaces only");
   } else {
-    Point d[4];
-    derivatives(u, v, 1, d);
-    const Point n = d[2].cross(d[1]);  // S_u = d[1*2+0] = d[2], S_v = d[0*2+1] = d[1]
+    const auto d = derivatives<1>(u, v);
+    const Point n = d.S_u().cross(d.S_v());
     const double len = n.norm();
     require(len > 0.0, "surface normal undefined at a degenerate point");
     return n / len;

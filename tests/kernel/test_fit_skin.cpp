@@ -192,13 +192,12 @@ BOOST_AUTO_TEST_CASE(explicit_v_params_and_smooth_iso_curves) {
     const double h = 1e-7 * (v.back() - v.front());
     for (std::size_t k = 4; k + 4 < V.size(); ++k)
       for (int j = 0; j <= 5; ++j) {
-        Eigen::Vector3d lo[16], hi[16];
-        res.surface.derivatives(j / 5.0, V[k] - h, 3, lo);
-        res.surface.derivatives(j / 5.0, V[k] + h, 3, hi);
-        const double scale = lo[1].norm() + lo[2].norm() + lo[3].norm();
-        BOOST_TEST((lo[1] - hi[1]).norm() <= 4 * h * lo[2].norm() + 1e-9 * scale);
+        const auto lo = res.surface.derivatives<3>(j / 5.0, V[k] - h);
+        const auto hi = res.surface.derivatives<3>(j / 5.0, V[k] + h);
+        const double scale = lo.S_v().norm() + lo.S_vv().norm() + lo.S_vvv().norm();
+        BOOST_TEST((lo.S_v() - hi.S_v()).norm() <= 4 * h * lo.S_vv().norm() + 1e-9 * scale);
         // S_vvv itself jumps at a cubic knot: the change of S_vv is h times the sum of both sides.
-        BOOST_TEST((lo[2] - hi[2]).norm() <= 2 * h * (lo[3].norm() + hi[3].norm()) + 1e-7 * scale);
+        BOOST_TEST((lo.S_vv() - hi.S_vv()).norm() <= 2 * h * (lo.S_vvv().norm() + hi.S_vvv().norm()) + 1e-7 * scale);
       }
   }
 }
