@@ -11,11 +11,16 @@ namespace cg {
 
 template <int Dim>
 CurveEvaluator<Dim>::CurveEvaluator(const BSplineCurve<Dim>& curve)
-    : curve_(&curve),
-      p_(curve.degree()),
-      n_(curve.num_poles() - 1),
-      rational_(curve.is_rational()),
-      periodic_(curve.is_periodic()) {
+    : CurveEvaluator(std::make_shared<const BSplineCurve<Dim>>(curve)) {}
+
+template <int Dim>
+CurveEvaluator<Dim>::CurveEvaluator(std::shared_ptr<const BSplineCurve<Dim>> shared)
+    : curve_(std::move(shared)),
+      p_(curve_->degree()),
+      n_(curve_->num_poles() - 1),
+      rational_(curve_->is_rational()),
+      periodic_(curve_->is_periodic()) {
+  const BSplineCurve<Dim>& curve = *curve_;
   require(curve.num_poles() > 0, "CurveEvaluator needs a non-empty curve");
   first_ = curve.first_param();
   last_ = curve.last_param();

@@ -372,47 +372,6 @@ PoleBundle clamped(const PoleBundle& b) {
   return segment_raw(open, b.first(), b.last());
 }
 
-std::vector<Eigen::MatrixXd> bezier_segments(const PoleBundle& B, std::vector<double>& breaks) {
-  // The NURBS Book A5.6 (DecomposeCurve).
-  const int p = B.degree, n = B.num_poles() - 1, m = n + p + 1;
-  const auto& U = B.knots;
-  const auto& P = B.poles;
-  std::vector<Eigen::MatrixXd> Q;
-  breaks.assign(1, U[static_cast<size_t>(p)]);
-  Q.emplace_back(P.leftCols(p + 1));
-  std::vector<double> alphas(static_cast<size_t>(p));
-  int a = p, b = p + 1;
-  while (b < m) {
-    const int i = b;
-    while (b < m && U[static_cast<size_t>(b + 1)] == U[static_cast<size_t>(b)]) ++b;
-    const int mult = b - i + 1;
-    Eigen::MatrixXd next(P.rows(), p + 1);
-    if (mult < p) {
-      const double numer = U[static_cast<size_t>(b)] - U[static_cast<size_t>(a)];
-      for (int j = p; j > mult; --j)
-        alphas[static_cast<size_t>(j - mult - 1)] = numer / (U[static_cast<size_t>(a + j)] - U[static_cast<size_t>(a)]);
-      const int r = p - mult;
-      auto& cur = Q.back();
-      for (int j = 1; j <= r; ++j) {
-        const int save = r - j, s = mult + j;
-        for (int k = p; k >= s; --k) {
-          const double al = alphas[static_cast<size_t>(k - s)];
-          cur.col(k) = al * cur.col(k) + (1.0 - al) * cur.col(k - 1);
-        }
-        if (b < m) next.col(save) = cur.col(p);
-      }
-    }
-    breaks.push_back(U[static_cast<size_t>(b)]);
-    if (b < m) {
-      for (int j = p - mult; j <= p; ++j) next.col(j) = P.col(b - p + j);
-      Q.push_back(std::move(next));
-      a = b;
-      ++b;
-    }
-  }
-  return Q;
-}
-
 PoleBundle reversed(const PoleBundle& b) {
   const int p = b.degree;
   const double a = b.first(), c = b.last();
