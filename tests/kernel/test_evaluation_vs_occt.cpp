@@ -221,7 +221,7 @@ BOOST_AUTO_TEST_CASE(batched_surface_points_match_de_boor) {
   // Grid walked row by row (the row cache), then the same pairs shuffled; equal and unequal degrees
   // (compile-time and generic loops), periodic directions with wrapped parameters.
   test::Rng r(8);
-  for (int i = 0; i < 300; ++i) {
+  for (int i = 0; i < 1000; ++i) {
     const bool pu = i % 3 == 1, pv = i % 5 == 1;
     const auto s = test::random_periodic_surface(r, i % 2 == 1, pu, pv);
     const double scale = test::pole_scale(s);
