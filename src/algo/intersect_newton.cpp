@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "src/algo/project_point_curve.hpp"
 #include "src/core/newton.hpp"
 
 namespace cg::detail {
@@ -71,25 +72,10 @@ bool refine_tangency(CurveEvaluator<2>& a, CurveEvaluator<2>& b, double& s, doub
 }
 
 double project_point(CurveEvaluator<2>& c, const Eigen::Vector2d& x, double& t, double lo, double hi) {
-  // Local minimum of |C(t) - x|^2 / 2 near t in [lo, hi]: gradient (C - x).C', Hessian |C'|^2 + (C - x).C''.
   newton::Domain<1> dom;
   dom.lo[0] = lo;
   dom.hi[0] = hi;
-  newton::MinimizeOptions<1> opt;
-  opt.max_iterations = 30;
-  opt.xtol[0] = 1e-15 * std::max(hi - lo, 1e-300);
-  V2 C, d1, d2;
-  const auto r = newton::minimize<1>(
-      [&](const Eigen::Matrix<double, 1, 1>& u, Eigen::Matrix<double, 1, 1>* g, Eigen::Matrix<double, 1, 1>* H) {
-        if (!g) return 0.5 * (c.point(u[0]) - x).squaredNorm();
-        c.d2(u[0], C, d1, d2);
-        const V2 res = C - x;
-        (*g)[0] = res.dot(d1);
-        (*H)(0, 0) = d1.squaredNorm() + res.dot(d2);
-        return 0.5 * res.squaredNorm();
-      },
-      Eigen::Matrix<double, 1, 1>(t), dom, opt);
-  t = r.x[0];
+  t = refine_foot<2>(c, x, t, dom, 30);
   return (c.point(t) - x).norm();
 }
 

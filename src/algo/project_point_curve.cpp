@@ -87,8 +87,31 @@ void CurveProjector<Dim>::newton(double lo, double hi, double u) {
   consider(u, (C0 - P_).norm(), C0);
 }
 
-// Damped Newton on |C(u) - P|^2 / 2 from c.u (gradient f = C'.(C - P), Hessian f'), wrapping a
-// periodic curve's parameter into its period and clamping others.
+template <int Dim>
+double refine_foot(CurveEvaluator<Dim>& ev, const Eigen::Matrix<double, Dim, 1>& P, double u,
+                   const newton::Domain<1>& dom, int max_iterations, double value_noise) {
+  using Point = Eigen::Matrix<double, Dim, 1>;
+  using V1 = Eigen::Matrix<double, 1, 1>;
+  newton::MinimizeOptions<1> opt;
+  opt.max_iterations = max_iterations;
+  opt.value_noise = value_noise;
+  const double width = std::isfinite(dom.hi[0] - dom.lo[0]) ? dom.hi[0] - dom.lo[0] : 1.0;
+  opt.xtol[0] = 4e-16 * (std::abs(dom.lo[0]) + std::abs(dom.hi[0]) + width);
+  Point C, C1, C2;
+  const auto r = newton::minimize<1>(
+      [&](const V1& x, V1* g, Eigen::Matrix<double, 1, 1>* H) {
+        if (!g) return 0.5 * (ev.point(x[0]) - P).squaredNorm();
+        ev.d2(x[0], C, C1, C2);
+        const Point res = C - P;
+        (*g)[0] = C1.dot(res);
+        (*H)(0, 0) = C1.squaredNorm() + C2.dot(res);
+        return 0.5 * res.squaredNorm();
+      },
+      V1(u), dom, opt);
+  return r.x[0];
+}
+
+// Step 4: refine_foot from c.u over the whole curve (wrapping a periodic curve's parameter).
 template <int Dim>
 typename CurveProjector<Dim>::Candidate CurveProjector<Dim>::polish(const Candidate& c) {
   const BSplineCurve<Dim>& curve = ev_.curve();
@@ -96,24 +119,11 @@ typename CurveProjector<Dim>::Candidate CurveProjector<Dim>::polish(const Candid
   dom.lo[0] = curve.first_param();
   dom.hi[0] = curve.last_param();
   dom.periodic[0] = curve.is_periodic();
-  newton::MinimizeOptions<1> opt;
-  opt.xtol[0] = 4e-16 * (std::abs(dom.lo[0]) + std::abs(dom.hi[0]) + (dom.hi[0] - dom.lo[0]));
   // Rounding of |C - P|^2 / 2: |C - P| times the rounding of the coordinates (see newton.hpp).
   const double ulp = 4e-16 * (scale_ + P_.cwiseAbs().maxCoeff());
-  opt.value_noise = ulp * (c.dist + ulp);
-  Point C, C1, C2;
-  const auto r = newton::minimize<1>(
-      [&](const Eigen::Matrix<double, 1, 1>& u, Eigen::Matrix<double, 1, 1>* g, Eigen::Matrix<double, 1, 1>* H) {
-        if (!g) return 0.5 * (ev_.point(u[0]) - P_).squaredNorm();
-        ev_.d2(u[0], C, C1, C2);
-        const Point res = C - P_;
-        (*g)[0] = C1.dot(res);
-        (*H)(0, 0) = C1.squaredNorm() + C2.dot(res);
-        return 0.5 * res.squaredNorm();
-      },
-      Eigen::Matrix<double, 1, 1>(c.u), dom, opt);
-  const Point q = ev_.point(r.x[0]);
-  return Candidate{r.x[0], (q - P_).norm(), q};
+  const double u = refine_foot<Dim>(ev_, P_, c.u, dom, 40, ulp * (c.dist + ulp));
+  const Point q = ev_.point(u);
+  return Candidate{u, (q - P_).norm(), q};
 }
 
 // Examines one Bézier piece [a, b] with homogeneous poles hp; see the header for the method.
@@ -312,6 +322,9 @@ CurveProjectionAll<Dim> project_point_on_curve(const BSplineCurve<Dim>& curve,
 template class CurveProjector<1>;
 template class CurveProjector<2>;
 template class CurveProjector<3>;
+template double refine_foot<1>(CurveEvaluator<1>&, const Eigen::Matrix<double, 1, 1>&, double, const newton::Domain<1>&, int, double);
+template double refine_foot<2>(CurveEvaluator<2>&, const Eigen::Vector2d&, double, const newton::Domain<1>&, int, double);
+template double refine_foot<3>(CurveEvaluator<3>&, const Eigen::Vector3d&, double, const newton::Domain<1>&, int, double);
 template CurveProjectionAll<1> project_point_on_curve<1>(const BSplineCurve<1>&, const Eigen::Matrix<double, 1, 1>&);
 template CurveProjectionAll<2> project_point_on_curve<2>(const BSplineCurve<2>&, const Eigen::Vector2d&);
 template CurveProjectionAll<3> project_point_on_curve<3>(const BSplineCurve<3>&, const Eigen::Vector3d&);

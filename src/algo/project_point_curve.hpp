@@ -28,6 +28,7 @@
 #include "src/algo/bounding_spans.hpp"
 #include "src/core/bspline_curve.hpp"
 #include "src/core/curve_evaluator.hpp"
+#include "src/core/newton.hpp"
 
 namespace cg {
 
@@ -110,6 +111,14 @@ class CurveProjector {
   std::vector<Piece> stack_;
   std::vector<double> pool_;  // poles of the pieces on stack_, one block per entry
 };
+
+/// Local foot of P on the curve of `ev` from u: damped Newton on |C(u) - P|^2 / 2 (newton::minimize,
+/// gradient (C - P).C', Hessian |C'|^2 + (C - P).C'') on `domain` (clamped, or wrapped when periodic),
+/// accepting steps that raise the squared distance by at most value_noise (its rounding level). Returns
+/// the end parameter. The shared refinement of CurveProjector and of curve-curve intersection.
+template <int Dim>
+double refine_foot(CurveEvaluator<Dim>& ev, const Eigen::Matrix<double, Dim, 1>& P, double u,
+                   const newton::Domain<1>& domain, int max_iterations = 40, double value_noise = 0.0);
 
 /// One-shot projection (builds a CurveProjector): closest point and all minimising parameters.
 template <int Dim>

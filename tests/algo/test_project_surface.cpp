@@ -60,27 +60,41 @@ double sampled_min(const BSplineSurface<3>& s, const Eigen::Vector3d& P, int n) 
 
 }  // namespace
 
+namespace {
+
+// Two random query points near s (within 5 of a random surface point): ours must be a surface point
+// at its distance, with parameters in the domain (a periodic direction's in [first, last)), never
+// farther than OCCT's answer (1e-10) nor than a dense sample (1e-12). Returns the cases where OCCT's
+// answer is a non-global minimum (ours strictly closer).
+int compare_with_occt(const BSplineSurface<3>& s, test::Rng& r, int& cases) {
+  const auto os = occt::to_occt(s);
+  SurfaceProjector proj(s);
+  int occt_missed = 0;
+  for (int k = 0; k < 2; ++k) {
+    const Eigen::Vector3d P = s.point(r.uniform(s.first_u(), s.last_u()), r.uniform(s.first_v(), s.last_v())) +
+                              r.uniform(0, 5) * Eigen::Vector3d(r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1));
+    const auto res = proj.project(P);
+    BOOST_TEST_REQUIRE(res.found);
+    ++cases;
+    const bool pu = s.is_periodic_u(), pv = s.is_periodic_v();
+    BOOST_TEST((res.u >= s.first_u() && (pu ? res.u < s.last_u() : res.u <= s.last_u())));
+    BOOST_TEST((res.v >= s.first_v() && (pv ? res.v < s.last_v() : res.v <= s.last_v())));
+    BOOST_TEST((s.point(res.u, res.v) - res.point).norm() <= 1e-12 * (1 + res.point.norm()));
+    BOOST_TEST(std::abs((res.point - P).norm() - res.distance) <= 1e-13 * (1 + res.distance));
+    const double o = occt_distance(os, s, P);
+    BOOST_TEST(res.distance <= o + 1e-10);
+    if (res.distance < o - 1e-10) ++occt_missed;
+    BOOST_TEST(res.distance <= sampled_min(s, P, 30) + 1e-12);
+  }
+  return occt_missed;
+}
+
+}  // namespace
+
 BOOST_AUTO_TEST_CASE(random_vs_occt) {
   test::Rng r(21);
   int cases = 0, occt_missed = 0;
-  for (int i = 0; i < 250; ++i) {
-    const auto s = test::random_surface(r, i % 2 == 1);
-    const auto os = occt::to_occt(s);
-    SurfaceProjector proj(s);
-    for (int k = 0; k < 2; ++k) {
-      const Eigen::Vector3d P = s.point(r.uniform(s.first_u(), s.last_u()), r.uniform(s.first_v(), s.last_v())) +
-                                r.uniform(0, 5) * Eigen::Vector3d(r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1));
-      const auto res = proj.project(P);
-      BOOST_TEST_REQUIRE(res.found);
-      ++cases;
-      BOOST_TEST((s.point(res.u, res.v) - res.point).norm() <= 1e-12 * (1 + res.point.norm()));
-      BOOST_TEST(std::abs((res.point - P).norm() - res.distance) <= 1e-13 * (1 + res.distance));
-      const double o = occt_distance(os, s, P);
-      BOOST_TEST(res.distance <= o + 1e-10);
-      if (res.distance < o - 1e-10) ++occt_missed;
-      BOOST_TEST(res.distance <= sampled_min(s, P, 30) + 1e-12);
-    }
-  }
+  for (int i = 0; i < 250; ++i) occt_missed += compare_with_occt(test::random_surface(r, i % 2 == 1), r, cases);
   std::printf("surface: %d cases, ours strictly closer than OCCT in %d\n", cases, occt_missed);
   BOOST_TEST(cases == 500);
 }
@@ -204,24 +218,7 @@ BOOST_AUTO_TEST_CASE(periodic_surfaces_vs_occt) {
   int cases = 0, occt_missed = 0;
   for (int i = 0; i < 250; ++i) {
     const bool pu = i % 3 != 1, pv = i % 3 != 0;
-    const auto s = test::random_periodic_surface(r, i % 2 == 1, pu, pv);
-    const auto os = occt::to_occt(s);
-    SurfaceProjector proj(s);
-    for (int k = 0; k < 2; ++k) {
-      const Eigen::Vector3d P = s.point(r.uniform(s.first_u(), s.last_u()), r.uniform(s.first_v(), s.last_v())) +
-                                r.uniform(0, 5) * Eigen::Vector3d(r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1));
-      const auto res = proj.project(P);
-      BOOST_TEST_REQUIRE(res.found);
-      ++cases;
-      // Parameters in the domain; a periodic direction's in [first, last).
-      BOOST_TEST((res.u >= s.first_u() && (pu ? res.u < s.last_u() : res.u <= s.last_u())));
-      BOOST_TEST((res.v >= s.first_v() && (pv ? res.v < s.last_v() : res.v <= s.last_v())));
-      BOOST_TEST((s.point(res.u, res.v) - res.point).norm() <= 1e-12 * (1 + res.point.norm()));
-      const double o = occt_distance(os, s, P);
-      BOOST_TEST(res.distance <= o + 1e-10);
-      if (res.distance < o - 1e-10) ++occt_missed;
-      BOOST_TEST(res.distance <= sampled_min(s, P, 30) + 1e-12);
-    }
+    occt_missed += compare_with_occt(test::random_periodic_surface(r, i % 2 == 1, pu, pv), r, cases);
   }
   std::printf("periodic surfaces: %d cases, ours strictly closer than OCCT in %d\n", cases, occt_missed);
   BOOST_TEST(cases == 500);
