@@ -37,23 +37,27 @@ cg_add_library(coolinggen_export DIRS export DEPS coolinggen_brep coolinggen_vtk
 vtk_module_autoinit(TARGETS coolinggen_export MODULES ${VTK_LIBRARIES})
 # Meshing through gmsh's C++ API (gmsh takes the OCCT shape).
 cg_add_library(coolinggen_mesh DIRS src/mesh DEPS coolinggen_brep coolinggen_gmsh_deps)
-# Configuration file (JSON) -> model and feature definitions.
-cg_add_library(coolinggen_config DIRS src/config DEPS coolinggen_brep coolinggen_export)
+# Configuration file (JSON) -> plain option structs and the blade model's definitions (no OCCT).
+cg_add_library(coolinggen_config DIRS src/config DEPS coolinggen_model nlohmann_json::nlohmann_json)
 # The whole job (config -> verified, exported model) as a library call; the CLI is a thin layer on it.
-cg_add_library(coolinggen_pipeline DIRS src/pipeline DEPS coolinggen_config coolinggen_export coolinggen_mesh)
+cg_add_library(coolinggen_pipeline DIRS src/pipeline DEPS OpenSSL::Crypto coolinggen_config coolinggen_export coolinggen_mesh)
+target_compile_definitions(coolinggen_pipeline PRIVATE COOLINGGEN_VERSION="${PROJECT_VERSION}")
 
 add_library(coolinggen INTERFACE)
 add_library(coolinggen::coolinggen ALIAS coolinggen)
 target_link_libraries(coolinggen INTERFACE coolinggen_pipeline coolinggen_config coolinggen_mesh coolinggen_export
   coolinggen_brep coolinggen_model coolinggen_adaptors coolinggen_kernel)
 
+# The CLI: its commands in a library (tests/cli links it to test them without a process), main.cpp
+# in the executable.
 file(GLOB cli_srcs CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/cli/*.cpp)
-if(cli_srcs)
-  add_executable(coolinggen_cli ${cli_srcs})
-  set_target_properties(coolinggen_cli PROPERTIES OUTPUT_NAME coolinggen RUNTIME_OUTPUT_DIRECTORY ${PROJECT_BINARY_DIR})
-  target_link_libraries(coolinggen_cli PRIVATE coolinggen CLI11::CLI11)
-  install(TARGETS coolinggen_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-endif()
+list(FILTER cli_srcs EXCLUDE REGEX "/src/cli/main\\.cpp$")
+add_library(coolinggen_cli_commands STATIC ${cli_srcs})
+target_link_libraries(coolinggen_cli_commands PUBLIC coolinggen CLI11::CLI11)
+add_executable(coolinggen_cli ${PROJECT_SOURCE_DIR}/src/cli/main.cpp)
+set_target_properties(coolinggen_cli PROPERTIES OUTPUT_NAME coolinggen RUNTIME_OUTPUT_DIRECTORY ${PROJECT_BINARY_DIR})
+target_link_libraries(coolinggen_cli PRIVATE coolinggen_cli_commands)
+install(TARGETS coolinggen_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 
 install(TARGETS coolinggen coolinggen_pipeline coolinggen_config coolinggen_mesh coolinggen_export coolinggen_brep
   coolinggen_model coolinggen_kernel coolinggen_adaptors coolinggen_occt_deps coolinggen_vtk_deps coolinggen_gmsh_deps

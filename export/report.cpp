@@ -6,8 +6,8 @@
 
 namespace cg::io {
 
-nlohmann::json report_json(const ReportContent& c) {
-  using nlohmann::json;
+nlohmann::ordered_json report_json(const ReportContent& c) {
+  using json = nlohmann::ordered_json;
   const brep::SolidCheck& k = c.check;
   json checks = json::object();
   for (const brep::Check* x : k.checks()) checks[x->name] = {{"passed", x->passed}, {"message", x->message}};
@@ -15,6 +15,8 @@ nlohmann::json report_json(const ReportContent& c) {
   for (int i = 0; i < 3; ++i) size.push_back(k.bbox_max[static_cast<std::size_t>(i)] - k.bbox_min[static_cast<std::size_t>(i)]);
   return json{
       {"generator", "coolinggen"},
+      {"version", c.version},
+      {"input_hash", c.input_hash},
       {"valid", k.all_passed()},
       {"units", {{"length", "mm"}, {"area", "mm^2"}, {"volume", "mm^3"}, {"angle", "deg"}, {"time", "s"}}},
       {"model", c.model},
@@ -30,6 +32,7 @@ nlohmann::json report_json(const ReportContent& c) {
       {"checks", checks},
       {"warnings", c.warnings},
       {"timings_s", c.timings_s},
+      {"outputs", c.outputs},
   };
 }
 

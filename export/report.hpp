@@ -1,10 +1,13 @@
 #pragma once
-// report.json: what was built and whether every check passed. Written atomically.
-// Layout (units mm, mm^2, mm^3, seconds):
-//   { "generator": "coolinggen", "valid": bool, "units": {...}, "model": <caller's model info>,
+// report.json: what was built, from what, and whether every check passed. Written atomically.
+// Layout (units mm, mm^2, mm^3, deg, seconds; keys in this order):
+//   { "generator": "coolinggen", "version": "0.1.0", "input_hash": "sha256:...", "valid": bool,
+//     "units": {...}, "model": <caller's model info>,
 //     "solid": { "volume_mm3", "volume_error_mm3", "surface_area_mm2", "bbox_mm": {"min", "max", "size"},
 //                "face_count", "solid_count", "faces": {name: count}, "mesh_triangles" },
-//     "checks": { name: {"passed": bool, "message": str} }, "warnings": [str], "timings_s": {stage: s} }
+//     "checks": { name: {"passed": bool, "message": str} }, "warnings": [str], "timings_s": {stage: s},
+//     "outputs": [file names written with this report, report.json included] }
+// "outputs" makes the report the index of its directory (src/pipeline/output_directory.hpp).
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
@@ -17,14 +20,17 @@
 namespace cg::io {
 
 struct ReportContent {
+  std::string version;                         ///< tool version
+  std::string input_hash;                      ///< fingerprint of the inputs ("sha256:...")
   brep::SolidCheck check;
   std::map<std::string, int> face_names;       ///< face name -> number of faces with it
   std::vector<std::string> warnings;           ///< e.g. general-fuse alerts
-  nlohmann::json model = nlohmann::json::object();      ///< caller's model description
-  nlohmann::json timings_s = nlohmann::json::object();  ///< stage -> seconds
+  nlohmann::ordered_json model = nlohmann::ordered_json::object();  ///< caller's model description
+  nlohmann::ordered_json timings_s = nlohmann::ordered_json::object();  ///< stage -> seconds, in run order
+  std::vector<std::string> outputs;            ///< files written with the report
 };
 
-nlohmann::json report_json(const ReportContent& content);
+nlohmann::ordered_json report_json(const ReportContent& content);
 
 /// Writes report_json(content), pretty-printed, through write_atomically. Throws ExportError.
 void write_report(const std::filesystem::path& file, const ReportContent& content);

@@ -1,6 +1,7 @@
 // Section point files: CSV (optionally with a header naming the x and y columns) and the "x y" .dat layout.
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -68,26 +69,44 @@ LengthUnit parse_length_unit(const std::string& name) {
   throw InvalidGeometry("length unit '" + name + "' is not supported; allowed: mm, cm, m, in");
 }
 
-std::vector<Eigen::Vector2d> parse_section_points(std::istream& in, LengthUnit unit, const std::string& source_name) {
-  const double f = millimetres_per(unit);
-  std::vector<Eigen::Vector2d> pts;
+// A data line: its number in the file and its fields.
+struct Row {
+  int line;
+  std::vector<std::string> fields;
+};
+
+// True when column `col` of every row is an integer and the values count up by one (0, 1, 2, ... or
+// 1, 2, 3, ...): a point-number column.
+bool is_index_column(const std::vector<Row>& rows, std::size_t col) {
+  double prev = 0;
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    double v = 0;
+    if (rows[k].fields.size() <= col || !parse_number(rows[k].fields[col], v) || v != std::floor(v)) return false;
+    if (k > 0 && v != prev + 1) return false;
+    prev = v;
+  }
+  return rows.size() >= 2;
+}
+
+std::vector<Eigen::Vector2d> parse_section_points(std::istream& in, LengthUnit unit, const std::string& source_name,
+                                                  std::vector<int>* source_lines) {
+  // Pass 1: a header (the first non-numeric line before any data) and the data rows.
+  std::vector<Row> rows;
   int xcol = -1, ycol = -1;  // from a header line, if any
+  std::string header;
   std::string line;
   int lineno = 0;
-  bool seen_data = false;
   while (std::getline(in, line)) {
     ++lineno;
     const std::string t = trim(line);
     if (t.empty() || t[0] == '#') continue;
     const auto fields = split_fields(t);
-    const int xi = xcol >= 0 ? xcol : 0, yi = ycol >= 0 ? ycol : 1;
-    double x = 0, y = 0;
-    const bool numeric = static_cast<int>(fields.size()) > std::max(xi, yi) &&
-                         parse_number(fields[static_cast<std::size_t>(xi)], x) &&
-                         parse_number(fields[static_cast<std::size_t>(yi)], y);
-    if (!numeric) {
-      require(!seen_data, source_name + " line " + std::to_string(lineno) + ": expected numbers x and y, got '" + t + "'");
-      // A header (or a .dat name line): take the columns whose names start with x and y.
+    double v = 0;
+    const bool numeric = !fields.empty() && parse_number(fields[0], v);
+    if (!numeric && rows.empty()) {
+      // A header (or a .dat name line; a later one before the data replaces it): take the columns whose
+      // names start with x and y.
+      header = t;
       xcol = ycol = -1;
       for (std::size_t k = 0; k < fields.size(); ++k) {
         const std::string h = lower(fields[k]);
@@ -97,18 +116,54 @@ std::vector<Eigen::Vector2d> parse_section_points(std::istream& in, LengthUnit u
       if (xcol < 0 || ycol < 0) xcol = ycol = -1;
       continue;
     }
-    seen_data = true;
-    pts.emplace_back(x * f, y * f);
+    rows.push_back({lineno, fields});
   }
-  if (pts.size() > 1 && (pts.front() - pts.back()).norm() <= 1e-12 * (1.0 + pts.front().norm())) pts.pop_back();
+  // Pass 2: which columns are x and y. Without a header naming them, two numeric columns are x, y;
+  // three are (point number, x, y) when the first counts up by one, and ambiguous otherwise (reading
+  // them as x, y would build a wrong profile without any error).
+  if (xcol < 0 && !rows.empty()) {
+    std::size_t columns = rows.front().fields.size();
+    for (const Row& r : rows) columns = std::max(columns, r.fields.size());
+    const std::string ask = "; name the columns in a header line, e.g. \"x,y\", \"i,x,y\" or \"x,y,z\"";
+    if (columns == 2) {
+      xcol = 0, ycol = 1;
+    } else if (columns == 3 && is_index_column(rows, 0)) {
+      xcol = 1, ycol = 2;
+    } else if (columns >= 3) {
+      require(false, source_name + ": " + std::to_string(columns) + " columns and " +
+                         (header.empty() ? std::string("no header") : "no header naming x and y ('" + header + "')") +
+                         ", so which are x and y is ambiguous" + ask);
+    }
+  }
+  const double f = millimetres_per(unit);
+  std::vector<Eigen::Vector2d> pts;
+  std::vector<int> lines;
+  for (const Row& r : rows) {
+    const int xi = std::max(xcol, 0), yi = std::max(ycol, 1);
+    double x = 0, y = 0;
+    const bool ok = static_cast<int>(r.fields.size()) > std::max(xi, yi) && parse_number(r.fields[static_cast<std::size_t>(xi)], x) &&
+                    parse_number(r.fields[static_cast<std::size_t>(yi)], y);
+    std::string text;
+    for (const auto& fld : r.fields) text += (text.empty() ? "" : ",") + fld;
+    require(ok, source_name + " line " + std::to_string(r.line) + ": expected numbers x and y (columns " +
+                    std::to_string(xi + 1) + " and " + std::to_string(yi + 1) + "), got '" + text + "'");
+    require(std::isfinite(x) && std::isfinite(y), source_name + " line " + std::to_string(r.line) + ": x and y must be finite");
+    pts.emplace_back(x * f, y * f);
+    lines.push_back(r.line);
+  }
+  if (pts.size() > 1 && (pts.front() - pts.back()).norm() <= 1e-12 * (1.0 + pts.front().norm())) {
+    pts.pop_back();
+    lines.pop_back();
+  }
   require(pts.size() >= 4, source_name + ": a section needs at least 4 points, got " + std::to_string(pts.size()));
+  if (source_lines) *source_lines = std::move(lines);
   return pts;
 }
 
-std::vector<Eigen::Vector2d> read_section_points(const std::string& path, LengthUnit unit) {
+std::vector<Eigen::Vector2d> read_section_points(const std::string& path, LengthUnit unit, std::vector<int>* source_lines) {
   std::ifstream in(path);
   require(static_cast<bool>(in), "section file '" + path + "' cannot be opened");
-  return parse_section_points(in, unit, "section file '" + path + "'");
+  return parse_section_points(in, unit, "section file '" + path + "'", source_lines);
 }
 
 }  // namespace cg::blade

@@ -5,7 +5,10 @@
 
 #include "src/blade/meridional_net.hpp"
 #include "src/blade/section.hpp"
+#include "src/config/json_document.hpp"
 #include "src/config/json_fields.hpp"
+#include "src/config/point_checks.hpp"
+#include "src/config/number_format.hpp"
 
 namespace cg::config {
 namespace {
@@ -42,8 +45,8 @@ blade::MeridionalNetDefinition meridional_net(const Field& f) {
       if (e.is_number()) {
         const double span = e.number(open(0, 1));
         if (!net.interpolated_spans.empty() && span <= net.interpolated_spans.back())
-          fail(e.path(), "streamline span fractions must be strictly increasing, got " + std::to_string(span) +
-                             " after " + std::to_string(net.interpolated_spans.back()));
+          fail(e.path(), "streamline span fractions must be strictly increasing, got " + shortest(span) +
+                             " after " + shortest(net.interpolated_spans.back()));
         net.interpolated_spans.push_back(span);
         continue;
       }
@@ -53,7 +56,7 @@ blade::MeridionalNetDefinition meridional_net(const Field& f) {
       const double span = e.at("span").number(open(0, 1));
       if (!net.streamline_spans.empty() && span <= net.streamline_spans.back())
         fail(e.path() + ".span", "explicit streamlines must be listed with strictly increasing span, got " +
-                                     std::to_string(span) + " after " + std::to_string(net.streamline_spans.back()));
+                                     shortest(span) + " after " + shortest(net.streamline_spans.back()));
       net.streamline_spans.push_back(span);
       net.streamlines.push_back(polyline(e.at("points"), 2));
     }
@@ -85,8 +88,10 @@ blade::LengthUnit length_unit(const Field& f) {
   return units[f.choice({"mm", "cm", "m", "in"})];
 }
 
-blade::PointSectionDefinition point_section(const Field& f, const std::filesystem::path& base_dir) {
-  f.expect_object({"file", "values", "unit", "le_index", "te_index", "suction_side"});
+blade::PointSectionDefinition point_section(const Field& f, const std::filesystem::path& base_dir, PointSource& source) {
+  source.field = f.path();
+  f.expect_object({"file", "values", "unit", "le_index", "te_index", "suction_side", "le_radius", "te_radius",
+                   "le_centre", "te_centre"});
   if (f.has("file") == f.has("values")) fail(f.path(), "needs exactly one of \"file\" and \"values\"");
   blade::PointSectionDefinition def;
   def.unit = f.has("unit") ? length_unit(f.at("unit")) : blade::LengthUnit::Millimetre;
@@ -95,8 +100,9 @@ blade::PointSectionDefinition point_section(const Field& f, const std::filesyste
     std::filesystem::path p = file.string();
     if (p.is_relative()) p = base_dir / p;
     def.file = p.string();
+    source.file = def.file;
     try {
-      def.points = blade::read_section_points(def.file, def.unit);
+      def.points = blade::read_section_points(def.file, def.unit, &source.lines);
     } catch (const InvalidGeometry& e) {
       fail(file.path(), e.what());
     }
@@ -114,6 +120,12 @@ blade::PointSectionDefinition point_section(const Field& f, const std::filesyste
                                                blade::SuctionSide::Clockwise};
     def.suction_side = sides[f.at("suction_side").choice({"longer", "counter_clockwise", "clockwise"})];
   }
+  // Edge-circle hints, in the section's unit.
+  const double k = blade::millimetres_per(def.unit);
+  if (f.has("le_radius")) def.le_radius = k * f.at("le_radius").number(positive(1e5));
+  if (f.has("te_radius")) def.te_radius = k * f.at("te_radius").number(positive(1e5));
+  if (f.has("le_centre")) def.le_centre = k * f.at("le_centre").pair();
+  if (f.has("te_centre")) def.te_centre = k * f.at("te_centre").pair();
   return def;
 }
 
@@ -134,12 +146,12 @@ blade::ParametricSectionDefinition parametric_section(const Field& f) {
   return d;
 }
 
-blade::BladeSectionDefinition section(const Field& f, const std::filesystem::path& base_dir) {
+blade::BladeSectionDefinition section(const Field& f, const std::filesystem::path& base_dir, PointSource& source) {
   f.expect_object({"span", "points", "parametric", "rotation_deg", "scale", "offset", "theta_deg"});
   if (f.has("points") == f.has("parametric")) fail(f.path(), "needs exactly one of \"points\" and \"parametric\"");
   blade::BladeSectionDefinition s;
   if (f.has("points"))
-    s.shape = point_section(f.at("points"), base_dir);
+    s.shape = point_section(f.at("points"), base_dir, source);
   else
     s.shape = parametric_section(f.at("parametric"));
   auto& p = s.placement;
@@ -152,11 +164,13 @@ blade::BladeSectionDefinition section(const Field& f, const std::filesystem::pat
 }
 
 blade::BladeOptions blade_options(const Field& f) {
-  f.expect_object({"overbuild", "chordwise_samples", "stacking"});
+  f.expect_object({"overbuild", "chordwise_samples", "stacking", "surface_tolerance", "seam"});
   blade::BladeOptions o;
   // > 0: the solid is cut out of the over-built surface by the hub and casing trims.
   o.overbuild = f.number_or("overbuild", o.overbuild, positive(0.5));
   o.chordwise_samples = f.integer_or("chordwise_samples", o.chordwise_samples, 8, 2000);
+  o.surface_tolerance = f.number_or("surface_tolerance", o.surface_tolerance, closed(1e-5, 0.1), "mm");
+  o.seam = f.number_or("seam", o.seam, closed(-1, 1));
   if (f.has("stacking")) {
     static const blade::StackingPoint points[] = {blade::StackingPoint::LeadingEdge, blade::StackingPoint::Centroid,
                                                   blade::StackingPoint::TrailingEdge};
@@ -169,7 +183,7 @@ blade::BladeOptions blade_options(const Field& f) {
 
 Config parse_config(const nlohmann::json& document, const std::filesystem::path& base_dir, const std::string& default_name) {
   const Field root(document, "");
-  root.expect_object({"$schema", "name", "description", "units", "flow_path", "sections", "blade", "output"});
+  root.expect_object({"$schema", "name", "description", "units", "flow_path", "sections", "blade", "output", "grid"});
   Config c;
   c.source = document;
   c.name = root.has("name") ? root.at("name").string() : default_name;
@@ -179,46 +193,62 @@ Config parse_config(const nlohmann::json& document, const std::filesystem::path&
   const Field sections = root.at("sections");
   const std::size_t n = sections.expect_array(1);
   for (std::size_t i = 0; i < n; ++i) {
-    c.blade.sections.push_back(section(sections.item(i), base_dir));
+    c.point_sources.emplace_back();
+    c.blade.sections.push_back(section(sections.item(i), base_dir, c.point_sources.back()));
     if (i > 0) {
       const double prev = c.blade.sections[i - 1].placement.span, cur = c.blade.sections[i].placement.span;
       if (cur <= prev)
         fail(sections.item(i).path() + ".span", "sections must have strictly increasing span: must be > " +
-                                                  std::to_string(prev) + ", got " + std::to_string(cur));
+                                                  shortest(prev) + ", got " + shortest(cur));
     }
   }
   if (root.has("blade")) c.blade.options = blade_options(root.at("blade"));
   c.output.product_name = c.name;
   if (root.has("output")) {
     const Field out = root.at("output");
-    out.expect_object({"step_schema", "product_name"});
+    out.expect_object({"formats", "step_schema", "product_name"});
+    if (out.has("formats")) {
+      const Field formats = out.at("formats");
+      const std::size_t n = formats.expect_array(0);
+      c.output.formats.clear();
+      for (std::size_t i = 0; i < n; ++i) c.output.formats.push_back(formats.item(i).string());
+    }
     if (out.has("step_schema"))
-      c.output.step_schema = out.at("step_schema").choice({"AP214", "AP242"}) == 1 ? io::StepSchema::AP242 : io::StepSchema::AP214;
+      c.output.step_schema = out.at("step_schema").choice({"AP214", "AP242"}) == 1 ? "AP242" : "AP214";
     if (out.has("product_name")) c.output.product_name = out.at("product_name").string();
   }
+  if (root.has("grid")) c.grid = parse_grid_config(root.at("grid"), n);
   return c;
 }
 
-Config parse_config_text(const std::string& text, const std::filesystem::path& base_dir, const std::string& default_name) {
-  nlohmann::json doc;
-  try {
-    doc = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw ConfigError(std::string("config: invalid JSON: ") + e.what());
-  }
-  return parse_config(doc, base_dir, default_name);
+Config parse_config_text(const std::string& text, const std::filesystem::path& base_dir, const std::string& default_name,
+                         const std::string& source_name) {
+  return parse_config(parse_json_document(text, source_name), base_dir, default_name);
 }
 
 Config load_config_file(const std::filesystem::path& file) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status st = fs::status(file, ec);
+  if (!fs::exists(st)) throw ConfigError("config: " + file.string() + " does not exist");
+  if (fs::is_directory(st)) {
+    std::string found;
+    for (const auto& e : fs::directory_iterator(file, ec))
+      if (e.path().extension() == ".json") found += (found.empty() ? "" : ", ") + e.path().filename().string();
+    throw ConfigError("config: " + file.string() + " is a directory, not a config file" +
+                      (found.empty() ? std::string() : " (it contains " + found + ")"));
+  }
   std::ifstream in(file, std::ios::binary);
-  if (!in) throw ConfigError("config: cannot read file " + file.string());
   std::stringstream s;
-  s << in.rdbuf();
-  return parse_config_text(s.str(), file.has_parent_path() ? file.parent_path() : std::filesystem::path("."),
-                           file.stem().string());
+  if (in) s << in.rdbuf();
+  if (!in || in.bad()) throw ConfigError("config: cannot read " + file.string());
+  Config c = parse_config_text(s.str(), file.parent_path(),  // empty: relative to the working directory
+                               file.stem().string(), file.string());
+  c.source_file = file.string();
+  return c;
 }
 
-blade::BladeModel build_model(const Config& config) {
+blade::BladeModel build_model(const Config& config, ProgressSink* progress) {
   const blade::BladeDefinition& def = config.blade;
   // Check the parts separately first, so a failure names the part of the config it comes from.
   if (const auto* m = std::get_if<blade::MeridionalFlowPath>(&def.flow_path)) {
@@ -228,50 +258,37 @@ blade::BladeModel build_model(const Config& config) {
       throw ConfigError(std::string("flow_path: ") + e.what());
     }
   }
+  const double steps = static_cast<double>(def.sections.size() + 2);
   for (std::size_t i = 0; i < def.sections.size(); ++i) {
+    const std::string name = "sections[" + std::to_string(i) + "]";
+    report_progress(progress, static_cast<double>(i + 1) / steps, name);
+    check_cancel(progress, name);
     const auto& shape = def.sections[i].shape;
-    const bool points = std::holds_alternative<blade::PointSectionDefinition>(shape);
+    if (const auto* p = std::get_if<blade::PointSectionDefinition>(&shape)) {
+      const PointSource source = i < config.point_sources.size() ? config.point_sources[i] : PointSource{name + ".points", p->file, {}};
+      check_point_outline(*p, source);
+      try {
+        blade::section_from_points(*p);
+      } catch (const InvalidGeometry& e) {
+        throw ConfigError(source.field + ": " + e.what());
+      } catch (const AlgorithmFailure& e) {  // LE/TE detection
+        throw ConfigError(source.field + ": " + e.what() + "; " + le_te_index_hint(*p, source));
+      }
+      continue;
+    }
     try {
-      if (points)
-        blade::section_from_points(std::get<blade::PointSectionDefinition>(shape));
-      else
-        blade::section_from_parameters(std::get<blade::ParametricSectionDefinition>(shape));
+      blade::section_from_parameters(std::get<blade::ParametricSectionDefinition>(shape));
     } catch (const InvalidGeometry& e) {
-      throw ConfigError("sections[" + std::to_string(i) + "]." + (points ? "points" : "parametric") + ": " + e.what());
+      throw ConfigError(name + ".parametric: " + e.what());
     }
   }
+  report_progress(progress, (steps - 1) / steps, "blade surface");
+  check_cancel(progress, "blade surface");
   try {
     return blade::build_blade(def);
   } catch (const InvalidGeometry& e) {
     throw ConfigError(std::string("blade model (flow_path + sections): ") + e.what());
   }
-}
-
-nlohmann::json model_summary(const Config& c, const blade::BladeModel& m) {
-  using nlohmann::json;
-  json sections = json::array();
-  for (std::size_t i = 0; i < c.blade.sections.size(); ++i) {
-    const auto& s = c.blade.sections[i];
-    json e{{"span", s.placement.span},
-           {"kind", std::holds_alternative<blade::PointSectionDefinition>(s.shape) ? "points" : "parametric"}};
-    if (i < m.profiles.size()) e["chord_mm"] = m.profiles[i].chord();
-    sections.push_back(e);
-  }
-  const auto& s = m.surface;
-  return json{{"name", c.name},
-              {"description", c.description},
-              {"flow_path", std::holds_alternative<blade::StraightFlowPath>(c.blade.flow_path) ? "straight" : "meridional"},
-              {"span_length_mm", m.span_length},
-              {"sections", sections},
-              {"blade_surface",
-               {{"degree_u", s.degree_u()},
-                {"degree_v", s.degree_v()},
-                {"poles_u", s.is_periodic_u() ? s.num_poles_u() - s.degree_u() : s.num_poles_u()},
-                {"poles_v", s.num_poles_v()},
-                {"rational", s.is_rational()}}},
-              {"overbuild", m.options.overbuild},
-              {"step_schema", io::step_schema_name(c.output.step_schema)},
-              {"config", c.source}};
 }
 
 }  // namespace cg::config

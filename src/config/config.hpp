@@ -9,15 +9,28 @@
 #include <filesystem>
 #include <string>
 
-#include "export/step_writer.hpp"
+#include <vector>
+
 #include "src/blade/blade_surface.hpp"
 #include "src/config/config_error.hpp"
+#include "src/config/grid_config.hpp"
+#include "src/core/progress.hpp"
 
 namespace cg::config {
 
+/// "output": plain options; the pipeline (src/pipeline/outputs.hpp) checks the format names and writes.
 struct OutputOptions {
-  io::StepSchema step_schema = io::StepSchema::AP214;
-  std::string product_name;  ///< name of the product in the STEP file (default: the config's name)
+  std::vector<std::string> formats{"step"};  ///< model files to write (report.json is always written)
+  std::string step_schema = "AP214";         ///< "AP214" | "AP242"
+  std::string product_name;                  ///< name of the product in the STEP file (default: the config's name)
+};
+
+/// Where a point section's points came from, so messages can speak of file lines (the model counts
+/// points from 0).
+struct PointSource {
+  std::string field;       ///< "sections[2].points"
+  std::string file;        ///< the file as read ("" for inline values)
+  std::vector<int> lines;  ///< file line of each point (empty for inline values)
 };
 
 struct Config {
@@ -25,24 +38,29 @@ struct Config {
   std::string description;  ///< "description" (optional)
   blade::BladeDefinition blade;
   OutputOptions output;
+  GridConfig grid;          ///< "grid" (structured grids around the sections; optional)
+  /// One per section, in order; `field` is empty for parametric sections.
+  std::vector<PointSource> point_sources;
   nlohmann::json source;    ///< the parsed document (for the report)
+  std::string source_file;  ///< the config file read (empty when parsed from a document or text)
 };
 
 /// Parses a document. Relative section point files are resolved against `base_dir` and read here
 /// (so a missing file is a config error). `default_name` is used when the document has no "name".
 Config parse_config(const nlohmann::json& document, const std::filesystem::path& base_dir,
                     const std::string& default_name);
-/// As parse_config, from JSON text (syntax errors become ConfigError with line and column).
+/// As parse_config, from JSON text. Syntax errors, duplicate keys and numbers beyond a double's range
+/// are ConfigErrors naming `source_name` with line and column, or the duplicate key's path
+/// (json_document.hpp).
 Config parse_config_text(const std::string& text, const std::filesystem::path& base_dir,
-                         const std::string& default_name);
+                         const std::string& default_name, const std::string& source_name = "config");
 /// Reads and parses a config file (base directory = the file's directory, default name = its stem).
+/// A missing file, a directory or an unreadable file is a ConfigError saying which.
 Config load_config_file(const std::filesystem::path& file);
 
 /// Builds the blade model from a parsed config; errors of the model are rethrown as ConfigError
 /// naming the part of the config they come from ("flow_path", "sections[i]", "blade").
-blade::BladeModel build_model(const Config& config);
-
-/// A small model description for the report: name, flow path type, section count and kinds, options.
-nlohmann::json model_summary(const Config& config, const blade::BladeModel& model);
+/// `progress` (optional) may stop it between its steps (Cancelled).
+blade::BladeModel build_model(const Config& config, ProgressSink* progress = nullptr);
 
 }  // namespace cg::config

@@ -3,15 +3,12 @@
 #include <cmath>
 #include <sstream>
 
+#include "src/config/number_format.hpp"
+
 namespace cg::config {
 namespace {
 
-std::string num(double x) {
-  std::ostringstream s;
-  s.precision(12);
-  s << x;
-  return s.str();
-}
+std::string num(double x) { return shortest(x); }
 
 std::string shown(const nlohmann::json& j) {
   std::string s = j.dump();
@@ -87,12 +84,14 @@ double Field::number(const Range& range, const char* unit) const {
   return x;
 }
 
+// JSON Schema's "integer" is any number with zero fractional part, so 97.0 and 1e2 are integers too.
+// Compared as double: exact below 2^53, and larger values are out of any int range anyway.
 int Field::integer(int lo, int hi) const {
-  if (!j_->is_number_integer()) fail(path_, "must be an integer, got " + json_type_name(*j_) + " " + shown(*j_));
-  const auto x = j_->get<long long>();
-  if (x < lo || x > hi)
-    fail(path_, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " + std::to_string(x));
-  return static_cast<int>(x);
+  const double v = j_->is_number() ? j_->get<double>() : 0.0;
+  if (!j_->is_number() || !std::isfinite(v) || std::trunc(v) != v)
+    fail(path_, "must be an integer, got " + json_type_name(*j_) + " " + shown(*j_));
+  if (v < lo || v > hi) fail(path_, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " + shown(*j_));
+  return static_cast<int>(v);
 }
 
 std::string Field::string() const {

@@ -25,9 +25,10 @@ struct TempDir {
   TempDir(const TempDir&) = delete;
   TempDir& operator=(const TempDir&) = delete;
   /// Names of the entries, in directory order.
-  std::vector<std::string> entries() const {
+  std::vector<std::string> entries() const { return entries_of(path); }
+  static std::vector<std::string> entries_of(const std::filesystem::path& dir) {
     std::vector<std::string> v;
-    for (const auto& e : std::filesystem::directory_iterator(path)) v.push_back(e.path().filename().string());
+    for (const auto& e : std::filesystem::directory_iterator(dir)) v.push_back(e.path().filename().string());
     return v;
   }
 };

@@ -6,7 +6,6 @@
 #include <boost/test/unit_test.hpp>
 
 #include <STEPControl_Reader.hxx>
-#include <sys/wait.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -15,6 +14,7 @@
 #include <sstream>
 
 #include "brep/temp_files.hpp"
+#include "cli/run_cli.hpp"
 #include "src/blade/section.hpp"
 #include "src/brep/verify.hpp"
 
@@ -23,33 +23,11 @@ using namespace cg;
 
 namespace {
 
-const fs::path kBinary = fs::path(COOLINGGEN_BINARY_DIR) / "coolinggen";
-
 using test::read_text;
 using test::TempDir;
 
-struct Run {
-  int exit_code;
-  std::string out, err;
-};
-
-// Runs the binary with `args` (shell words), capturing stdout and stderr in files of `dir`.
-Run run(const std::string& args, const fs::path& dir) {
-  BOOST_TEST_REQUIRE(fs::exists(kBinary), "build the coolinggen target first: " << kBinary);
-  const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
-  const std::string cmd = "'" + kBinary.string() + "' " + args + " > '" + out.string() + "' 2> '" + err.string() + "'";
-  const int status = std::system(cmd.c_str());
-  Run r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_text(out), read_text(err)};
-  fs::remove(out);
-  fs::remove(err);
-  return r;
-}
-
-int lines(const std::string& s) {
-  int n = 0;
-  for (char c : s) n += c == '\n';
-  return n;
-}
+test::Run run(const std::string& args, const fs::path& dir) { return test::run_cli(args, dir); }
+int lines(const std::string& s) { return test::count_lines(s); }
 
 // Reads DIR/blade.step and DIR/report.json and checks them against each other.
 void check_outputs(const fs::path& dir, const std::string& expected_name) {
@@ -77,7 +55,7 @@ void check_outputs(const fs::path& dir, const std::string& expected_name) {
 
 BOOST_AUTO_TEST_CASE(builtin_example_builds) {
   TempDir dir("cli_example");
-  const Run r = run("build -o '" + (dir.path / "out").string() + "'", dir.path);
+  const test::Run r = run("build -o '" + (dir.path / "out").string() + "'", dir.path);
   BOOST_TEST_REQUIRE(r.exit_code == 0, r.err);
   BOOST_TEST(r.err.empty(), r.err);
   BOOST_TEST(r.out.find("volume") != std::string::npos, r.out);
@@ -92,9 +70,9 @@ BOOST_AUTO_TEST_CASE(builtin_example_builds) {
 BOOST_AUTO_TEST_CASE(straight_c3x_vane_builds) {
   TempDir dir("cli_c3x");
   const std::string cfg = COOLINGGEN_SOURCE_DIR "/data/examples/c3x_vane.json";
-  const Run v = run("validate '" + cfg + "'", dir.path);
+  const test::Run v = run("validate '" + cfg + "'", dir.path);
   BOOST_TEST(v.exit_code == 0, v.err);
-  const Run r = run("build '" + cfg + "' -q -o '" + (dir.path / "out").string() + "'", dir.path);
+  const test::Run r = run("build '" + cfg + "' -q -o '" + (dir.path / "out").string() + "'", dir.path);
   BOOST_TEST_REQUIRE(r.exit_code == 0, r.err);
   BOOST_TEST(r.out.empty());
   check_outputs(dir.path / "out", "c3x_vane");
@@ -119,7 +97,7 @@ BOOST_AUTO_TEST_CASE(ap242_option) {
   cfg["output"]["step_schema"] = "AP242";
   cfg["flow_path"]["span"] = 20.0;
   std::ofstream(dir.path / "c3x.json") << cfg.dump(2);
-  const Run r = run("build '" + (dir.path / "c3x.json").string() + "' -q -o '" + (dir.path / "out").string() + "'", dir.path);
+  const test::Run r = run("build '" + (dir.path / "c3x.json").string() + "' -q -o '" + (dir.path / "out").string() + "'", dir.path);
   BOOST_TEST_REQUIRE(r.exit_code == 0, r.err);
   BOOST_TEST(read_text(dir.path / "out" / "blade.step").find("AP242") != std::string::npos);
 }
@@ -130,38 +108,38 @@ BOOST_AUTO_TEST_CASE(bad_config_fails_without_output) {
   nlohmann::json cfg;
   {
     TempDir ex("cli_example_json");
-    const Run e = run("example", ex.path);
+    const test::Run e = run("example", ex.path);
     BOOST_TEST_REQUIRE(e.exit_code == 0);
     cfg = nlohmann::json::parse(e.out);
   }
   cfg["sections"][2]["parametric"]["max_thickness"] = -2.0;
   std::ofstream(dir.path / "bad.json") << cfg.dump(2);
   const fs::path out = dir.path / "out";
-  const Run b = run("build '" + (dir.path / "bad.json").string() + "' -o '" + out.string() + "'", dir.path);
+  const test::Run b = run("build '" + (dir.path / "bad.json").string() + "' -o '" + out.string() + "'", dir.path);
   BOOST_TEST(b.exit_code == 2);
   BOOST_TEST(lines(b.err) == 1, b.err);
   BOOST_TEST(b.err.find("sections[2].parametric.max_thickness") != std::string::npos, b.err);
   BOOST_TEST(b.out.empty());
   BOOST_TEST(!fs::exists(out));
 
-  const Run v = run("validate '" + (dir.path / "bad.json").string() + "'", dir.path);
+  const test::Run v = run("validate '" + (dir.path / "bad.json").string() + "'", dir.path);
   BOOST_TEST(v.exit_code == 2);
   BOOST_TEST(lines(v.err) == 1, v.err);
 
-  const Run missing = run("validate '" + (dir.path / "none.json").string() + "'", dir.path);
+  const test::Run missing = run("validate '" + (dir.path / "none.json").string() + "'", dir.path);
   BOOST_TEST(missing.exit_code != 0);
   BOOST_TEST(lines(missing.err) == 1, missing.err);
 
-  const Run usage = run("build", dir.path);  // -o missing
+  const test::Run usage = run("build", dir.path);  // -o missing
   BOOST_TEST(usage.exit_code == 1);
   BOOST_TEST(lines(usage.err) == 1, usage.err);
-  const Run nothing = run("", dir.path);
+  const test::Run nothing = run("", dir.path);
   BOOST_TEST(nothing.exit_code != 0);
 }
 
 BOOST_AUTO_TEST_CASE(help_lists_commands) {
   TempDir dir("cli_help");
-  const Run h = run("--help", dir.path);
+  const test::Run h = run("--help", dir.path);
   BOOST_TEST(h.exit_code == 0);
   for (const char* cmd : {"build", "validate", "example"}) BOOST_TEST(h.out.find(cmd) != std::string::npos, cmd);
 }

@@ -1,0 +1,394 @@
+#include "features/verified_boolean.hpp"
+
+#include <BRepBndLib.hxx>
+#include <Bnd_Box.hxx>
+#include <OSD_Parallel.hxx>
+#include <TopExp.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <numeric>
+#include <sstream>
+
+#include "features/boolean_disjoint.hpp"
+#include "features/boolean_expected.hpp"
+#include "features/boolean_naming.hpp"
+#include "features/boolean_patches.hpp"
+#include "features/boolean_perturb.hpp"
+#include "features/boolean_run.hpp"
+#include "features/boolean_volume.hpp"
+#include "src/brep/occt_progress.hpp"
+
+namespace cg::features {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+std::string fmt(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.9g", v);
+  return b;
+}
+
+int count_solids(const TopoDS_Shape& s) {
+  TopTools_IndexedMapOfShape m;
+  TopExp::MapShapes(s, TopAbs_SOLID, m);
+  return m.Extent();
+}
+
+// A tool of the step after overlapping tools were fused: pairwise disjoint from the others.
+struct Unit {
+  std::vector<int> members;  // indices into the step's tools
+  std::string label;         // member features, " + " separated
+  brep::NamedShape shape;
+  std::optional<gp_Ax1> axis;
+  double expected = std::numeric_limits<double>::quiet_NaN();
+  std::string expected_source;
+  // Outcome.
+  double measured = 0, closure = 0, uncertainty = 0;
+  int retries = 0;
+  std::string perturbation;
+  bool passed = false;
+};
+
+// One boolean of a part with some units and its cheap checks (and verify_solid when asked).
+struct Attempt {
+  brep::NamedShape result;
+  std::string failure;        // a failure not attributable to one tool ("" = none)
+  std::vector<int> suspects;  // units whose measured volume is wrong
+  std::vector<ToolVolume> volumes;
+  brep::SolidCheck check;
+  bool verified = false;
+  bool ok() const { return failure.empty() && suspects.empty(); }
+};
+
+class Engine {
+ public:
+  Engine(BooleanOperation op, const BooleanOptions& o, BooleanStepReport& report)
+      : op_(op), opt_(o), report_(report) {}
+
+  std::vector<Unit> units;
+
+  // Applies units `ids` to `part`: one boolean; on failure, guilty units are isolated (by their volume
+  // or by bisection) and retried perturbed. Throws FeatureFailure when a unit cannot be applied.
+  brep::NamedShape apply_group(const brep::NamedShape& part, std::vector<int> ids) {
+    if (ids.empty()) return part;
+    Attempt a = attempt(part, ids, units_shapes(ids), ids);
+    if (a.ok()) return accept(a, ids);
+    note(a, ids);
+    if (ids.size() == 1) return retry(part, ids.front(), a);
+    if (a.failure.empty()) {
+      // Only some volumes are wrong: the others first (in one boolean), then each suspect alone.
+      std::vector<int> rest;
+      for (int id : ids)
+        if (std::find(a.suspects.begin(), a.suspects.end(), id) == a.suspects.end()) rest.push_back(id);
+      brep::NamedShape r = apply_group(part, rest);
+      for (int id : a.suspects) r = apply_group(r, {id});
+      return r;
+    }
+    // Not attributable: bisect (spatially coherent halves).
+    sort_spatially(ids);
+    const std::vector<int> low(ids.begin(), ids.begin() + static_cast<std::ptrdiff_t>(ids.size() / 2));
+    const std::vector<int> high(ids.begin() + static_cast<std::ptrdiff_t>(ids.size() / 2), ids.end());
+    return apply_group(apply_group(part, low), high);
+  }
+
+ private:
+  std::vector<TopoDS_Shape> units_shapes(const std::vector<int>& ids) const {
+    std::vector<TopoDS_Shape> s;
+    for (int id : ids) s.push_back(units[static_cast<std::size_t>(id)].shape.shape);
+    return s;
+  }
+
+  // The B-rep defines each volume only to within its edge tolerances (ToolVolume::uncertainty).
+  bool volume_ok(double measured, double expected, const ToolVolume& tv) const {
+    const double tol = opt_.volume_rel_tolerance * std::abs(expected) + opt_.volume_abs_tolerance + tv.uncertainty;
+    return std::abs(measured - expected) <= tol && tv.closure <= tol;
+  }
+
+  // `shapes[k]` is the (possibly perturbed) shape of unit ids[k]; `expected` from units unless given.
+  Attempt attempt(const brep::NamedShape& part, const std::vector<int>& ids, const std::vector<TopoDS_Shape>& shapes,
+                  const std::vector<int>& for_names, const std::vector<double>* expected = nullptr,
+                  const std::vector<const brep::NamedShape*>* named = nullptr) {
+    Attempt a;
+    ++report_.boolean_runs;
+    check_cancel(opt_.progress, "verified boolean");
+    auto t = Clock::now();
+    const Handle(brep::OcctProgress) progress = new brep::OcctProgress(opt_.progress, "verified boolean");
+    const BooleanRun run = run_boolean(part.shape, shapes, op_, opt_.parallel, progress->Start());
+    progress->throw_if_stopped();
+    report_.seconds_boolean += since(t);
+    if (run.result.IsNull() || !run.errors.empty()) {
+      a.failure = "OCCT boolean failed (" + join(run.errors) + ")";
+      return a;
+    }
+    if (!run.warnings.empty()) {
+      a.failure = "OCCT boolean warned (" + join(run.warnings) + ")";
+      return a;
+    }
+    t = Clock::now();
+    std::vector<const brep::NamedShape*> tool_names;
+    if (named) tool_names = *named;
+    else
+      for (int id : for_names) tool_names.push_back(&units[static_cast<std::size_t>(id)].shape);
+    NamingResult naming = name_result(run, part, tool_names);
+    a.result = std::move(naming.shape);
+    const int solids = count_solids(run.result);
+    if (naming.unnamed > 0) a.failure = std::to_string(naming.unnamed) + " result faces without a history";
+    else if (solids != opt_.expected_solids)
+      a.failure = std::to_string(solids) + " solids instead of " + std::to_string(opt_.expected_solids);
+    const VolumeMeasure vm = measure_tool_volumes(run, part.shape, shapes, op_, opt_.parallel);
+    report_.seconds_measure += since(t);
+    if (a.failure.empty() && vm.lost_pieces > 0)
+      a.failure = std::to_string(vm.lost_pieces) + " pieces of the part (" + fmt(vm.lost_area) +
+                  " mm^2) dropped outside every tool";
+    if (a.failure.empty() && vm.ambiguous_pieces > 0)
+      a.failure = std::to_string(vm.ambiguous_pieces) + " dropped pieces inside more than one tool";
+    a.volumes = vm.tools;
+    for (std::size_t k = 0; k < ids.size(); ++k) {
+      const double e = expected ? (*expected)[k] : units[static_cast<std::size_t>(ids[k])].expected;
+      if (!volume_ok(vm.tools[k].volume, e, vm.tools[k])) a.suspects.push_back(ids[k]);
+    }
+    if (!a.ok() || !opt_.verify_result) return a;
+    t = Clock::now();
+    brep::VerifyOptions vo = opt_.verify;
+    vo.progress = opt_.progress;
+    a.check = brep::verify_solid(run.result, vo);
+    a.verified = true;
+    report_.seconds_verify += since(t);
+    // verify_solid asks for one solid; a step expecting several checks the count itself.
+    a.check.one_solid.passed = solids == opt_.expected_solids;
+    if (!a.check.all_passed()) a.failure = "checks failed: " + a.check.failed_names();
+    return a;
+  }
+
+  brep::NamedShape accept(Attempt& a, const std::vector<int>& ids) {
+    for (std::size_t k = 0; k < ids.size(); ++k) {
+      Unit& u = units[static_cast<std::size_t>(ids[k])];
+      u.measured = a.volumes[k].volume;
+      u.closure = a.volumes[k].closure;
+      u.uncertainty = a.volumes[k].uncertainty;
+      u.passed = true;
+    }
+    if (a.verified) report_.check = a.check;
+    return std::move(a.result);
+  }
+
+  void note(const Attempt& a, const std::vector<int>& ids) {
+    std::string what = a.failure;
+    for (int id : a.suspects) {
+      const Unit& u = units[static_cast<std::size_t>(id)];
+      const auto k = static_cast<std::size_t>(std::find(ids.begin(), ids.end(), id) - ids.begin());
+      what += (what.empty() ? "" : "; ") + u.label + ": measured " + fmt(a.volumes[k].volume) + " mm^3, expected " +
+              fmt(u.expected) + " mm^3 (closure " + fmt(a.volumes[k].closure) + ", B-rep uncertainty " + fmt(a.volumes[k].uncertainty) + ")";
+    }
+    report_.warnings.push_back("boolean of " + std::to_string(ids.size()) + " tool(s) rejected: " + what);
+  }
+
+  // Unit `id` failed alone on `part`: perturbed retries, else FeatureFailure.
+  brep::NamedShape retry(const brep::NamedShape& part, int id, const Attempt& first) {
+    Unit& u = units[static_cast<std::size_t>(id)];
+    std::string last = describe(first, u);
+    for (int k = 1; k <= opt_.max_retries; ++k) {
+      const Perturbed p = perturb_tool(u.shape, u.axis, k, opt_.perturbation);
+      // A shift changes the volume a little: the independent expectation moves by the change OCCT
+      // measures (Common before and after the shift), so a wrong expectation stays wrong.
+      double expected = u.expected;
+      if (!p.same_geometry)
+        expected += occt_expected_volume(p.shape.shape, part.shape, op_, u.label) -
+                    occt_expected_volume(u.shape.shape, part.shape, op_, u.label);
+      const std::vector<double> e{expected};
+      const std::vector<const brep::NamedShape*> named{&p.shape};
+      Attempt a = attempt(part, {id}, {p.shape.shape}, {id}, &e, &named);
+      ++u.retries;
+      if (a.ok()) {
+        u.perturbation = p.what;
+        u.expected = expected;
+        report_.warnings.push_back(u.label + ": accepted after retry " + std::to_string(k) + " (" + p.what + ")");
+        return accept(a, {id});
+      }
+      last = describe(a, u, expected) + " after " + p.what;
+      report_.warnings.push_back(u.label + ": retry " + std::to_string(k) + " (" + p.what + ") rejected: " + last);
+    }
+    throw FeatureFailure("feature " + u.label + " could not be applied correctly (" + last + ", " +
+                         std::to_string(opt_.max_retries) + " perturbed retries failed)");
+  }
+
+  std::string describe(const Attempt& a, const Unit& u, double expected = std::numeric_limits<double>::quiet_NaN()) const {
+    if (!a.failure.empty()) return a.failure;
+    if (std::isnan(expected)) expected = u.expected;
+    const std::string verb = op_ == BooleanOperation::Cut ? "removed " : "added ";
+    return verb + fmt(a.volumes.empty() ? 0 : a.volumes.front().volume) + " mm^3 instead of " + fmt(expected) +
+           " mm^3 (closure " + fmt(a.volumes.empty() ? 0 : a.volumes.front().closure) + " mm^3)";
+  }
+
+  void sort_spatially(std::vector<int>& ids) const {
+    std::vector<gp_Pnt> c(units.size());
+    Bnd_Box all;
+    for (int id : ids) {
+      Bnd_Box b;
+      BRepBndLib::Add(units[static_cast<std::size_t>(id)].shape.shape, b, false);
+      double x[6];
+      b.Get(x[0], x[1], x[2], x[3], x[4], x[5]);
+      c[static_cast<std::size_t>(id)] = gp_Pnt(0.5 * (x[0] + x[3]), 0.5 * (x[1] + x[4]), 0.5 * (x[2] + x[5]));
+      all.Add(b);
+    }
+    double x[6];
+    all.Get(x[0], x[1], x[2], x[3], x[4], x[5]);
+    const int axis = (x[3] - x[0] >= x[4] - x[1] && x[3] - x[0] >= x[5] - x[2]) ? 1 : (x[4] - x[1] >= x[5] - x[2] ? 2 : 3);
+    std::sort(ids.begin(), ids.end(), [&](int a, int b) {
+      return c[static_cast<std::size_t>(a)].Coord(axis) < c[static_cast<std::size_t>(b)].Coord(axis);
+    });
+  }
+
+  static std::string join(const std::vector<std::string>& v) {
+    std::string s;
+    for (const std::string& x : v) s += (s.empty() ? "" : ", ") + x;
+    return s;
+  }
+
+  BooleanOperation op_;
+  const BooleanOptions& opt_;
+  BooleanStepReport& report_;
+};
+
+}  // namespace
+
+BooleanStep::BooleanStep(BooleanOperation operation, BooleanOptions options)
+    : operation_(operation), options_(std::move(options)) {
+  require(options_.volume_rel_tolerance >= 0 && options_.volume_abs_tolerance >= 0,
+          "boolean step: volume tolerances must be >= 0");
+  require(options_.expected_solids >= 1, "boolean step: expected_solids must be >= 1");
+  require(options_.max_retries >= 0 && options_.perturbation > 0, "boolean step: max_retries >= 0, perturbation > 0");
+  require(options_.overlap_gap >= 0, "boolean step: overlap_gap must be >= 0");
+}
+
+void BooleanStep::add(FeatureTool tool) {
+  require(!tool.shape.shape.IsNull() && count_solids(tool.shape.shape) >= 1,
+          "boolean step: tool '" + tool.feature + "' is not a solid");
+  tools_.push_back(std::move(tool));
+}
+
+brep::NamedShape BooleanStep::apply(const brep::NamedShape& part) {
+  require(!part.shape.IsNull() && count_solids(part.shape) >= 1, "boolean step: the part is not a solid");
+  require(!done_, "boolean step: apply() runs once");
+  const auto t0 = Clock::now();
+  report_ = BooleanStepReport{};
+  report_.operation = operation_;
+  report_.tool_count = static_cast<int>(tools_.size());
+  Engine engine(operation_, options_, report_);
+  ProgressSink* const progress = options_.progress;
+
+  // 1. Disjoint tools: fuse clusters of overlapping ones.
+  auto t = Clock::now();
+  report_progress(progress, 0.0, "disjoint tools");
+  std::vector<TopoDS_Shape> shapes;
+  for (const FeatureTool& ft : tools_) shapes.push_back(ft.shape.shape);
+  const OverlapClusters oc = overlap_clusters(shapes, options_.overlap_gap, options_.parallel);
+  std::vector<int> cluster_of(tools_.size(), -1);
+  for (const std::vector<int>& members : oc.clusters) {
+    Unit u;
+    u.members = members;
+    std::vector<const brep::NamedShape*> named;
+    for (int m : members) {
+      u.label += (u.label.empty() ? "" : " + ") + tools_[static_cast<std::size_t>(m)].feature;
+      named.push_back(&tools_[static_cast<std::size_t>(m)].shape);
+    }
+    if (members.size() == 1) {
+      const FeatureTool& ft = tools_[static_cast<std::size_t>(members.front())];
+      u.shape = ft.shape;
+      u.axis = ft.symmetry_axis ? ft.symmetry_axis : detect_symmetry_axis(ft.shape.shape);
+      u.expected = ft.expected_volume;
+      u.expected_source = "given";
+    } else {
+      check_cancel(progress, "fusing overlapping tools");
+      u.shape = fuse_cluster(named, u.label, options_.parallel);
+      for (int m : members) cluster_of[static_cast<std::size_t>(m)] = report_.cluster_count;
+      ++report_.cluster_count;
+    }
+    engine.units.push_back(std::move(u));
+  }
+  report_.seconds_disjoint = since(t);
+
+  // 2. Independent expectations where the features gave none (and of every fused cluster).
+  t = Clock::now();
+  report_progress(progress, 0.1, "expected volumes");
+  std::vector<int> missing;
+  for (std::size_t k = 0; k < engine.units.size(); ++k)
+    if (std::isnan(engine.units[k].expected) || engine.units[k].members.size() > 1) missing.push_back(static_cast<int>(k));
+  std::vector<std::string> errors(missing.size());
+  OSD_Parallel::For(0, static_cast<int>(missing.size()), [&](int k) {
+    Unit& u = engine.units[static_cast<std::size_t>(missing[static_cast<std::size_t>(k)])];
+    try {
+      u.expected = occt_expected_volume(u.shape.shape, part.shape, operation_, u.label);
+      u.expected_source = "occt";
+    } catch (const FeatureFailure& e) {
+      errors[static_cast<std::size_t>(k)] = e.what();
+    }
+  }, !options_.parallel);
+  for (const std::string& e : errors)
+    if (!e.empty()) throw FeatureFailure(e);
+  report_.seconds_expected = since(t);
+
+  // 3. Patches, when many tools reach one face.
+  t = Clock::now();
+  brep::NamedShape base = part;
+  if (options_.patch_min_tools > 0 && static_cast<int>(engine.units.size()) >= options_.patch_min_tools) {
+    report_progress(progress, 0.15, "patches");
+    std::vector<TopoDS_Shape> us;
+    for (const Unit& u : engine.units) us.push_back(u.shape.shape);
+    PatchOptions po;
+    po.min_tools = options_.patch_min_tools;
+    po.tools_per_patch = options_.patch_tools_per_patch;
+    po.parallel = options_.parallel;
+    PatchedPart pp = patch_faces(part, us, po);
+    for (const std::string& w : pp.warnings) report_.warnings.push_back("patches: " + w);
+    if (pp.cut_lines > 0) {
+      // A patch split is kept only when clean: otherwise the step works on the part as it is.
+      const bool clean = pp.warnings.empty() && count_solids(pp.part.shape) == count_solids(part.shape);
+      if (clean) {
+        base = std::move(pp.part);
+        report_.patched_faces = pp.faces_after - pp.faces_before;
+      } else {
+        report_.warnings.push_back("patches: the split was not clean, the part is used unsplit");
+      }
+    }
+  }
+  report_.seconds_patches = since(t);
+
+  // 4. The boolean(s), checked; guilty tools isolated and retried.
+  report_progress(progress, 0.2, "boolean");
+  std::vector<int> all(engine.units.size());
+  std::iota(all.begin(), all.end(), 0);
+  brep::NamedShape result = engine.apply_group(base, all);
+
+  // 5. Report, one entry per tool in the order they were added.
+  report_.tools.assign(tools_.size(), ToolReport{});
+  for (std::size_t k = 0; k < engine.units.size(); ++k) {
+    const Unit& u = engine.units[k];
+    for (int m : u.members) {
+      ToolReport tr;
+      tr.feature = tools_[static_cast<std::size_t>(m)].feature;
+      tr.expected_volume = u.expected;
+      tr.measured_volume = u.measured;
+      tr.closure = u.closure;
+      tr.uncertainty = u.uncertainty;
+      tr.expected_source = u.expected_source;
+      tr.cluster = cluster_of[static_cast<std::size_t>(m)];
+      tr.retries = u.retries;
+      tr.perturbation = u.perturbation;
+      tr.passed = u.passed;
+      report_.tools[static_cast<std::size_t>(m)] = tr;
+    }
+  }
+  report_.seconds = since(t0);
+  report_progress(progress, 1.0, "done");
+  done_ = true;
+  return result;
+}
+
+}  // namespace cg::features

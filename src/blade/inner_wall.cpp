@@ -1,0 +1,533 @@
+#include "src/blade/inner_wall.hpp"
+
+#include <Eigen/Geometry>
+#include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
+
+#include "src/blade/format.hpp"
+#include "src/core/knots.hpp"
+#include "src/fit/approximate.hpp"
+#include "src/fit/skin.hpp"
+
+namespace cg::blade {
+namespace {
+
+using detail::fmt;
+using Vec3 = Eigen::Vector3d;
+constexpr double kPi = 3.14159265358979323846;
+
+// ---------------------------------------------------------------------------------------------------
+// Thickness interpolation
+
+// Fritsch-Carlson slopes: harmonic-mean type, zero at extrema, so the interpolant stays monotone.
+std::vector<double> monotone_slopes(const std::vector<double>& x, const std::vector<double>& y) {
+  const std::size_t n = x.size();
+  std::vector<double> d(n - 1), m(n, 0.0);
+  for (std::size_t i = 0; i + 1 < n; ++i) d[i] = (y[i + 1] - y[i]) / (x[i + 1] - x[i]);
+  m[0] = d[0];
+  m[n - 1] = d[n - 2];
+  for (std::size_t i = 1; i + 1 < n; ++i) {
+    if (d[i - 1] * d[i] <= 0) continue;
+    const double h0 = x[i] - x[i - 1], h1 = x[i + 1] - x[i];
+    const double w1 = 2 * h1 + h0, w2 = h1 + 2 * h0;  // Fritsch & Butland weights
+    m[i] = (w1 + w2) / (w1 / d[i - 1] + w2 / d[i]);
+  }
+  // End slopes limited as in Fritsch & Carlson (no overshoot in the end intervals).
+  for (std::size_t e : {std::size_t(0), n - 1}) {
+    const double de = e == 0 ? d[0] : d[n - 2];
+    if (m[e] * de <= 0) m[e] = 0;
+    else if (std::abs(m[e]) > 3 * std::abs(de)) m[e] = 3 * de;
+  }
+  return m;
+}
+
+}  // namespace
+
+double monotone_cubic(const std::vector<double>& x, const std::vector<double>& y, double t) {
+  require(!x.empty() && x.size() == y.size(), "monotone_cubic: need as many values as abscissae (>= 1)");
+  if (x.size() == 1 || t <= x.front()) return y.front();
+  if (t >= x.back()) return y.back();
+  const std::vector<double> m = monotone_slopes(x, y);
+  const std::size_t i = static_cast<std::size_t>(std::upper_bound(x.begin(), x.end(), t) - x.begin()) - 1;
+  const double h = x[i + 1] - x[i], s = (t - x[i]) / h;
+  const double h00 = (1 + 2 * s) * (1 - s) * (1 - s), h10 = s * (1 - s) * (1 - s), h01 = s * s * (3 - 2 * s),
+               h11 = s * s * (s - 1);
+  return h00 * y[i] + h10 * h * m[i] + h01 * y[i + 1] + h11 * h * m[i + 1];
+}
+
+ThicknessField ThicknessField::constant(double thickness) {
+  require(std::isfinite(thickness) && thickness > 0, "wall thickness must be > 0 mm, got " + fmt(thickness));
+  ThicknessField f;
+  f.values_ = {{thickness}};
+  f.min_ = f.max_ = thickness;
+  return f;
+}
+
+ThicknessField ThicknessField::table(std::vector<double> spans, std::vector<double> chords,
+                                     std::vector<std::vector<double>> values) {
+  require(!spans.empty() && !chords.empty(), "thickness table: needs at least one span and one chord");
+  for (std::size_t i = 1; i < spans.size(); ++i)
+    require(spans[i] > spans[i - 1], "thickness table: spans must be strictly increasing");
+  for (std::size_t j = 1; j < chords.size(); ++j)
+    require(chords[j] > chords[j - 1], "thickness table: chords must be strictly increasing");
+  require(values.size() == spans.size(), "thickness table: one row of values per span (" +
+                                             std::to_string(spans.size()) + "), got " + std::to_string(values.size()));
+  ThicknessField f;
+  f.min_ = HUGE_VAL;
+  f.max_ = -HUGE_VAL;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    require(values[i].size() == chords.size(), "thickness table: row " + std::to_string(i) + " needs " +
+                                                   std::to_string(chords.size()) + " values");
+    for (double v : values[i]) {
+      require(std::isfinite(v) && v > 0, "thickness table: values must be > 0 mm, got " + fmt(v));
+      f.min_ = std::min(f.min_, v);
+      f.max_ = std::max(f.max_, v);
+    }
+  }
+  f.spans_ = std::move(spans);
+  f.chords_ = std::move(chords);
+  f.values_ = std::move(values);
+  return f;
+}
+
+double ThicknessField::at(double span, double chord) const {
+  if (spans_.empty()) return values_.empty() ? 0.0 : values_[0][0];
+  std::vector<double> along_span(spans_.size());
+  for (std::size_t i = 0; i < spans_.size(); ++i) along_span[i] = monotone_cubic(chords_, values_[i], chord);
+  return monotone_cubic(spans_, along_span, span);
+}
+
+Vec3 inner_wall_point(const BladeCoordinates& coords, const ThicknessField& thickness, double span, double chord) {
+  const BladeFrame f = coords.frame(span, chord);
+  return f.point - thickness.at(span, chord) * f.normal;
+}
+
+namespace {
+
+// ---------------------------------------------------------------------------------------------------
+// Crease (trailing-edge crossing of the suction- and pressure-side offsets)
+
+double point_segment_distance(const Vec3& p, const Vec3& a, const Vec3& b, double& t) {
+  const Vec3 ab = b - a;
+  const double l2 = ab.squaredNorm();
+  t = l2 > 0 ? std::clamp((p - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
+  return (a + t * ab - p).norm();
+}
+
+// Distance from p to the polyline and the chord coordinate of the closest point (chords linear per segment).
+double polyline_distance(const Vec3& p, const std::vector<Vec3>& pts, const std::vector<double>& chords,
+                         double& chord_at) {
+  double best = HUGE_VAL;
+  for (std::size_t k = 0; k + 1 < pts.size(); ++k) {
+    double t = 0;
+    const double d = point_segment_distance(p, pts[k], pts[k + 1], t);
+    if (d < best) {
+      best = d;
+      chord_at = chords[k] + t * (chords[k + 1] - chords[k]);
+    }
+  }
+  return best;
+}
+
+struct SpanRange {
+  double lo, hi;
+};
+
+SpanRange span_domain(const BladeModel& m) {
+  return {m.surface.first_v(), m.surface.last_v()};
+}
+
+// Relative margin below t at which a point counts as too close to the opposite wall (covers the
+// polyline's sagitta against the true wall).
+constexpr double kCloseMargin = 0.01;
+constexpr int kScanSamples = 400;
+
+}  // namespace
+
+InnerWallSection inner_wall_crease(const BladeCoordinates& coords, const ThicknessField& thickness, double span) {
+  const SpanRange dom = span_domain(coords.model());
+  const int n = kScanSamples;
+  std::vector<Vec3> pressure(n + 1), suction(n + 1);
+  std::vector<double> pc(n + 1), sc(n + 1);
+  for (int k = 0; k <= n; ++k) {
+    pc[k] = -static_cast<double>(k) / n;
+    sc[k] = static_cast<double>(k) / n;
+    pressure[k] = coords.frame(span, pc[k]).point;
+    suction[k] = coords.frame(span, sc[k]).point;
+  }
+  InnerWallSection out;
+  out.span = out.pressure_span = span;
+  // Walk the suction-side offset from the LE: the first point closer than t to the pressure side.
+  int hit = -1;
+  double hit_pressure_chord = -1;
+  for (int i = 1; i <= n; ++i) {
+    const Vec3 q = inner_wall_point(coords, thickness, span, sc[i]);
+    double c_at = 0;
+    const double d = polyline_distance(q, pressure, pc, c_at);
+    if (d < thickness.at(span, sc[i]) * (1 - kCloseMargin)) {
+      hit = i;
+      hit_pressure_chord = c_at;
+      break;
+    }
+  }
+  if (hit < 0) {
+    // No crossing: the inner wall goes round the TE (TE radius >= t). Seam at the TE.
+    out.trimmed = false;
+    out.suction_chord = 1;
+    out.pressure_chord = -1;
+    out.crease = inner_wall_point(coords, thickness, span, 1.0);
+    return out;
+  }
+  if (hit == 1)
+    throw InnerWallError("inner wall: the wall thickness " + fmt(thickness.at(span, sc[1])) +
+                             " mm leaves no core at span " + fmt(span) + " (the blade is thinner than twice the wall "
+                             "thickness right behind the leading edge)",
+                         span, sc[1]);
+  // Newton on F(c_s, c_p, s_p) = I(span, c_s) - I(s_p, c_p) = 0 with central-difference Jacobian.
+  auto I = [&](double s, double c) { return inner_wall_point(coords, thickness, s, c); };
+  double cs = sc[hit] - 0.5 / n, cp = hit_pressure_chord, sp = span;
+  const double h = 1e-6;
+  bool converged = false;
+  Vec3 F = Vec3::Zero();
+  for (int it = 0; it < 40; ++it) {
+    F = I(span, cs) - I(sp, cp);
+    if (F.norm() < 1e-11) {
+      converged = true;
+      break;
+    }
+    auto dc = [&](double s, double c) {
+      const double a = std::max(c - h, -1.0), b = std::min(c + h, 1.0);
+      return Vec3((I(s, b) - I(s, a)) / (b - a));
+    };
+    const double sa = std::max(sp - h, dom.lo), sb = std::min(sp + h, dom.hi);
+    Eigen::Matrix3d J;
+    J.col(0) = dc(span, cs);
+    J.col(1) = -dc(sp, cp);
+    J.col(2) = -(I(sb, cp) - I(sa, cp)) / (sb - sa);
+    Vec3 step = J.fullPivLu().solve(-F);
+    if (!step.allFinite()) break;
+    const double limit = 0.02;  // chord units per step
+    const double scale = std::max({std::abs(step[0]), std::abs(step[1]), std::abs(step[2])}) / limit;
+    if (scale > 1) step /= scale;
+    cs = std::clamp(cs + step[0], 1e-9, 1.0);
+    cp = std::clamp(cp + step[1], -1.0, -1e-9);
+    sp = std::clamp(sp + step[2], dom.lo, dom.hi);
+  }
+  if (!converged || cs >= 1.0 || cp <= -1.0 || std::abs(cs - (sc[hit] - 0.5 / n)) > 4.0 / n)
+    throw InnerWallError("inner wall: cannot locate where the suction- and pressure-side offsets cross at span " +
+                             fmt(span) + " near chord " + fmt(sc[hit]) + " (residual " + fmt(F.norm()) +
+                             " mm); the wall may be too thick for the trailing-edge region",
+                         span, sc[hit]);
+  // The pressure side up to the crease must keep its distance from the suction side: otherwise the
+  // offsets cross a second time (blade thinner than 2t away from the TE).
+  for (int k = 1; k <= n && pc[k] > cp + 2.0 / n; ++k) {
+    const Vec3 q = I(span, pc[k]);
+    double c_at = 0;
+    const double d = polyline_distance(q, suction, sc, c_at);
+    if (d < thickness.at(span, pc[k]) * (1 - kCloseMargin))
+      throw InnerWallError("inner wall: the wall thickness exceeds half the blade thickness at span " + fmt(span) +
+                               ", pressure-side chord " + fmt(pc[k]) + " before the trailing-edge crossing at chord " +
+                               fmt(cp) + " (the offsets cross twice)",
+                           span, pc[k]);
+  }
+  out.trimmed = true;
+  out.suction_chord = cs;
+  out.pressure_chord = cp;
+  out.pressure_span = sp;
+  out.crease = I(span, cs);
+  return out;
+}
+
+namespace {
+
+// ---------------------------------------------------------------------------------------------------
+// Exact sections
+
+struct Sample {
+  double x = 0;  // position along the section: [0, 1] pressure half (crease -> LE), [1, 2] suction half
+  double span = 0, chord = 0;
+  Vec3 outer, normal, inner;
+};
+
+double smoothstep(double x) { return x * x * (3 - 2 * x); }
+
+// Exact inner-wall points of one span, sampled along the trimmed section.
+class ExactSection {
+ public:
+  ExactSection(const BladeCoordinates& coords, const ThicknessField& thickness, double span)
+      : coords_(&coords), thickness_(&thickness), span_(span) {
+    info = inner_wall_crease(coords, thickness, span);
+    // Steps: at most 1 degree of normal turning and 1/400 of the LE-TE distance along the inner wall,
+    // so the curve between samples is resolved far below any fit tolerance.
+    const double max_turn = 1.0 * kPi / 180;
+    const double max_step = (coords.frame(span, 0.0).point - coords.frame(span, 1.0).point).norm() / 400;
+    const int base = 48;
+    Sample prev = sample(0.0);
+    samples_.push_back(prev);
+    std::vector<Sample> stack;
+    for (int k = 1; k <= 2 * base; ++k) {
+      stack.assign(1, sample(2.0 * k / (2 * base)));
+      while (!stack.empty()) {
+        const Sample& b = stack.back();
+        const double angle = std::acos(std::clamp(prev.normal.dot(b.normal), -1.0, 1.0));
+        if ((angle > max_turn || (b.inner - prev.inner).norm() > max_step) && b.x - prev.x > 1e-7) {
+          stack.push_back(sample(0.5 * (prev.x + b.x)));
+          continue;
+        }
+        prev = b;
+        samples_.push_back(b);
+        stack.pop_back();
+      }
+    }
+    // A fold: the offset runs backwards where t exceeds the wall's radius of curvature.
+    for (std::size_t i = 0; i + 1 < samples_.size(); ++i) {
+      const Sample &a = samples_[i], &b = samples_[i + 1];
+      if ((b.inner - a.inner).dot(b.outer - a.outer) <= 0)
+        throw InnerWallError("inner wall: the wall thickness " + fmt(thickness.at(a.span, a.chord)) +
+                                 " mm exceeds the wall's radius of curvature at span " + fmt(a.span) + ", chord " +
+                                 fmt(a.chord) + " (the offset folds; use a thinner wall there)",
+                             a.span, a.chord);
+    }
+    update();
+  }
+
+  InnerWallSection info;
+  std::vector<Vec3> points;    // crease -> pressure side -> LE -> suction side -> crease
+  std::vector<double> params;  // normalised chord length, [0, 1]
+  double span() const { return span_; }
+
+  /// Number of samples with parameter in [a, b].
+  int count(double a, double b) const {
+    return static_cast<int>(std::upper_bound(params.begin(), params.end(), b) -
+                            std::lower_bound(params.begin(), params.end(), a));
+  }
+  /// Halves every sample step that touches [a, b].
+  void densify(double a, double b) {
+    std::vector<Sample> out;
+    for (std::size_t i = 0; i + 1 < samples_.size(); ++i) {
+      out.push_back(samples_[i]);
+      if (params[i + 1] >= a && params[i] <= b) out.push_back(sample(0.5 * (samples_[i].x + samples_[i + 1].x)));
+    }
+    out.push_back(samples_.back());
+    samples_ = std::move(out);
+    update();
+  }
+
+ private:
+  // Foot point of position x: the pressure half blends its span from the crease's pressure span to
+  // the section span with zero slope at both ends, so the section stays smooth through the LE.
+  Sample sample(double x) const {
+    Sample s;
+    s.x = x;
+    if (x <= 1) {
+      s.chord = info.pressure_chord * (1 - x);
+      s.span = span_ + (info.pressure_span - span_) * (1 - smoothstep(x));
+    } else {
+      s.chord = info.suction_chord * (x - 1);
+      s.span = span_;
+    }
+    const BladeFrame f = coords_->frame(s.span, s.chord);
+    s.outer = f.point;
+    s.normal = f.normal;
+    s.inner = f.point - thickness_->at(s.span, s.chord) * f.normal;
+    return s;
+  }
+  void update() {
+    points.clear();
+    for (const Sample& s : samples_) points.push_back(s.inner);
+    points.back() = points.front();  // the crease (or the TE offset point), to ~1e-11 mm already
+    params.assign(points.size(), 0.0);
+    for (std::size_t i = 1; i < points.size(); ++i) params[i] = params[i - 1] + (points[i] - points[i - 1]).norm();
+    const double total = params.back();
+    require(total > 0, "inner wall: degenerate section at span " + fmt(span_));
+    for (double& p : params) p /= total;
+    params.back() = 1.0;
+  }
+
+  const BladeCoordinates* coords_;
+  const ThicknessField* thickness_;
+  double span_;
+  std::vector<Sample> samples_;
+};
+
+// ---------------------------------------------------------------------------------------------------
+// Fitting
+
+struct SectionFit {
+  BSplineCurve<3> curve;
+  std::vector<double> interval_error;  // max residual per distinct knot interval
+};
+
+// Distinct knot intervals of a clamped knot vector: [breaks[k], breaks[k + 1]].
+std::vector<double> breaks_of(const std::vector<double>& U) {
+  std::vector<double> b;
+  for (double u : U)
+    if (b.empty() || u > b.back()) b.push_back(u);
+  return b;
+}
+
+SectionFit fit_section(const ExactSection& s, const std::vector<double>& knots) {
+  SectionFit f;
+  f.curve = fit_least_squares<3>(s.points, s.params, 3, knots);
+  const std::vector<double> br = breaks_of(knots);
+  f.interval_error.assign(br.size() - 1, 0.0);
+  for (std::size_t i = 0; i < s.points.size(); ++i) {
+    const double e = (f.curve.point(s.params[i]) - s.points[i]).norm();
+    std::size_t k = static_cast<std::size_t>(std::upper_bound(br.begin(), br.end(), s.params[i]) - br.begin());
+    k = std::clamp<std::size_t>(k, 1, br.size() - 1) - 1;
+    f.interval_error[k] = std::max(f.interval_error[k], e);
+  }
+  return f;
+}
+
+// Fits every section on one shared knot vector, refining it where any section exceeds tol / 2.
+std::vector<BSplineCurve<3>> fit_sections(std::vector<ExactSection>& sections, std::vector<double>& knots,
+                                          double tol) {
+  for (int round = 0; round < 30; ++round) {
+    // Schoenberg-Whitney with margin: every section needs a few samples in every knot interval.
+    const std::vector<double> b0 = breaks_of(knots);
+    for (auto& sec : sections)
+      for (std::size_t k = 0; k + 1 < b0.size(); ++k)
+        for (int guard = 0; guard < 8 && sec.count(b0[k], b0[k + 1]) < 4; ++guard) sec.densify(b0[k], b0[k + 1]);
+    std::vector<SectionFit> fits;
+    fits.reserve(sections.size());
+    for (const auto& s : sections) fits.push_back(fit_section(s, knots));
+    const std::vector<double> br = breaks_of(knots);
+    std::vector<double> insert;
+    for (std::size_t k = 0; k + 1 < br.size(); ++k) {
+      double e = 0;
+      for (const auto& f : fits) e = std::max(e, f.interval_error[k]);
+      if (e <= 0.5 * tol) continue;
+      const double m = 0.5 * (br[k] + br[k + 1]);
+      insert.push_back(m);
+    }
+    if (insert.empty()) {
+      std::vector<BSplineCurve<3>> out;
+      for (auto& f : fits) out.push_back(std::move(f.curve));
+      return out;
+    }
+    knots.insert(knots.end(), insert.begin(), insert.end());
+    std::sort(knots.begin(), knots.end());
+  }
+  throw AlgorithmFailure("inner wall: the section fit does not reach the tolerance " + fmt(tol) +
+                         " mm after 30 refinements");
+}
+
+// Newton foot point of q on the surface from (u, v): the fitting error at an exact point.
+double surface_distance(const BSplineSurface<3>& S, const Vec3& q, double u, double v) {
+  for (int it = 0; it < 12; ++it) {
+    Vec3 d[9];
+    S.derivatives(u, v, 2, d);  // d[k * 3 + l] = S^(k, l)
+    const Vec3 r = d[0] - q;
+    const Vec3 &Su = d[3], &Sv = d[1], &Suu = d[6], &Suv = d[4], &Svv = d[2];
+    Eigen::Matrix2d H;
+    H << Su.dot(Su) + r.dot(Suu), Su.dot(Sv) + r.dot(Suv), Su.dot(Sv) + r.dot(Suv), Sv.dot(Sv) + r.dot(Svv);
+    const Eigen::Vector2d g(r.dot(Su), r.dot(Sv));
+    Eigen::Vector2d step = H.fullPivLu().solve(-g);
+    if (!step.allFinite()) break;
+    u = std::clamp(u + step.x(), S.first_u(), S.last_u());
+    v = std::clamp(v + step.y(), S.first_v(), S.last_v());
+    if (step.norm() < 1e-14) break;
+  }
+  return (S.point(u, v) - q).norm();
+}
+
+// The clamped, closed (first pole == last pole) cubic surface in u as a u-periodic surface with a knot
+// of full multiplicity p at the seam: unwrapped poles [P_{n-p+1} .. P_{n-1}, P_0 .. P_{n-1}, P_0]
+// (the seam point is pole p - 1; see the periodic storage in bspline_curve.hpp).
+BSplineSurface<3> to_periodic_u(const BSplineSurface<3>& S) {
+  const int p = S.degree_u(), N = S.num_poles_u() - 1;  // poles 0..N, pole N == pole 0
+  const int nv = S.num_poles_v();
+  const std::vector<double>& U = S.knots_u();
+  // One period of flat knots: the seam 0 with multiplicity p, then the interior knots.
+  std::vector<double> period(static_cast<std::size_t>(p), U[static_cast<std::size_t>(p)]);
+  for (int i = p + 1; i < N + 1; ++i) period.push_back(U[static_cast<std::size_t>(i)]);
+  const int n = static_cast<int>(period.size());  // == N distinct poles
+  require(n == N, "inner wall: periodic conversion: knot count mismatch");
+  const std::vector<double> Uper = unwrap_periodic_knots(p, period, U[static_cast<std::size_t>(N + p)] - U[static_cast<std::size_t>(p)]);
+  BSplineSurface<3>::HPoles h(4, static_cast<Eigen::Index>((n + p) * nv));
+  for (int i = 0; i < n + p; ++i) {
+    const int src = ((i - (p - 1)) % n + n) % n;
+    for (int j = 0; j < nv; ++j) h.col(i * nv + j) = S.homogeneous_pole(src, j);
+  }
+  return BSplineSurface<3>::from_homogeneous(p, S.degree_v(), Uper, S.knots_v(), n + p, nv, h, true, false);
+}
+
+}  // namespace
+
+InnerWall build_inner_wall(const BladeModel& model, const ThicknessField& thickness, const InnerWallOptions& options) {
+  require(options.tolerance > 0 && std::isfinite(options.tolerance),
+          "inner wall: tolerance must be > 0 mm, got " + fmt(options.tolerance));
+  require(thickness.max_value() > 0, "inner wall: the thickness field is empty");
+  const BladeCoordinates coords(model);
+  const SpanRange dom = span_domain(model);
+  const double ob = std::min(0.0 - dom.lo, dom.hi - 1.0);
+  const double lo = std::isnan(options.span_min) ? dom.lo + 0.2 * ob : options.span_min;
+  const double hi = std::isnan(options.span_max) ? dom.hi - 0.2 * ob : options.span_max;
+  require(lo >= dom.lo && hi <= dom.hi && hi > lo, "inner wall: span range [" + fmt(lo) + ", " + fmt(hi) +
+                                                       "] must lie inside the blade's [" + fmt(dom.lo) + ", " +
+                                                       fmt(dom.hi) + "]");
+  const double tol = options.tolerance;
+
+  std::vector<double> spans;
+  const int initial = 9;
+  for (int k = 0; k < initial; ++k) spans.push_back(lo + (hi - lo) * k / (initial - 1));
+  std::vector<ExactSection> sections;
+  for (double s : spans) sections.push_back(ExactSection(coords, thickness, s));
+
+  // Initial knots: averaged over the middle section's parameters, about one pole per four samples.
+  const ExactSection& mid = sections[sections.size() / 2];
+  const int npoles = std::clamp(static_cast<int>(mid.params.size()) / 4, 8, 60);
+  std::vector<double> knots = approximation_knots(mid.params, 3, npoles);
+
+  InnerWall wall;
+  for (int round = 0; round < 12; ++round) {
+    const std::vector<BSplineCurve<3>> curves = fit_sections(sections, knots, tol);
+    SkinOptions so;
+    so.degree_v = 3;
+    so.v_params = spans;
+    const BSplineSurface<3> S = skin(curves, so).surface;
+    // Verify midway between fitted spans; bisect where the exact section is farther than tol.
+    std::vector<double> new_spans;
+    std::vector<ExactSection> new_sections;
+    double worst = 0;
+    int checked = 0;
+    for (std::size_t k = 0; k + 1 < spans.size(); ++k) {
+      const double sm = 0.5 * (spans[k] + spans[k + 1]);
+      ExactSection e(coords, thickness, sm);
+      double err = 0;
+      for (std::size_t i = 0; i < e.points.size(); i += 2) {
+        err = std::max(err, surface_distance(S, e.points[i], e.params[i], sm));
+        ++checked;
+      }
+      worst = std::max(worst, err);
+      if (err > 0.5 * tol) {
+        new_spans.push_back(sm);
+        new_sections.push_back(std::move(e));
+      }
+    }
+    if (new_spans.empty()) {
+      wall.surface = to_periodic_u(S);
+      wall.max_fit_error = worst;
+      wall.checked_points = checked;
+      break;
+    }
+    if (spans.size() + new_spans.size() > 400)
+      throw AlgorithmFailure("inner wall: more than 400 spans needed to reach the tolerance " + fmt(tol) + " mm");
+    for (std::size_t k = 0; k < new_spans.size(); ++k) {
+      const auto pos = std::upper_bound(spans.begin(), spans.end(), new_spans[k]) - spans.begin();
+      spans.insert(spans.begin() + pos, new_spans[k]);
+      sections.insert(sections.begin() + pos, std::move(new_sections[k]));
+    }
+    if (round == 11) throw AlgorithmFailure("inner wall: span refinement does not converge");
+  }
+  for (const ExactSection& s : sections) {
+    wall.sections.push_back(s.info);
+    wall.min_suction_chord = std::min(wall.min_suction_chord, s.info.suction_chord);
+    wall.max_pressure_chord = std::max(wall.max_pressure_chord, s.info.pressure_chord);
+  }
+  return wall;
+}
+
+}  // namespace cg::blade

@@ -1,0 +1,33 @@
+// coolinggen validate CONFIG: parse the config and build the blade model; write nothing.
+// coolinggen example: print the built-in example config.
+#include <cstdio>
+
+#include "src/cli/commands.hpp"
+#include "src/cli/exit_codes.hpp"
+#include "src/config/builtin_example.hpp"
+#include "src/pipeline/build.hpp"
+
+namespace cg::cli {
+
+Command add_validate_command(CLI::App& app) {
+  auto path = std::make_shared<std::string>();
+  CLI::App* cmd = app.add_subcommand("validate", "Parse and check a config (builds the blade model); writes nothing");
+  cmd->add_option("config", *path, "Config file (JSON)")->required();
+  return {cmd, [path] {
+            const config::Config c = load_config_argument(*path);
+            const blade::BladeModel m = pipeline::validate(c);
+            std::printf("%s: valid (%s flow path, %zu sections)\n", path->c_str(),
+                        m.trim.straight ? "straight" : "meridional", c.blade.sections.size());
+            return int{kOk};
+          }};
+}
+
+Command add_example_command(CLI::App& app) {
+  CLI::App* cmd = app.add_subcommand("example", "Print the built-in example config (JSON) to stdout");
+  return {cmd, [] {
+            std::fputs(config::builtin_example_json(), stdout);
+            return int{kOk};
+          }};
+}
+
+}  // namespace cg::cli

@@ -1,0 +1,64 @@
+#pragma once
+// The whole job of `coolinggen build` as a library call, for scripts and design studies:
+//
+//   config::Config c = config::load_config_file("blade.json");
+//   pipeline::BuildResult r = pipeline::run_build(c);          // model -> solid -> checks
+//   pipeline::write_outputs(c, r, "out/blade_17");             // blade.step ..., report.json last
+//
+// Stages, in order (ids as in BuildResult::timings, the progress sink and report.json):
+//   blade_model  config -> blade model (config::build_model; errors are ConfigError naming the field)
+//   solid        blade surface trimmed to the flow path (brep::build_blade_solid) -> Part bodies[0]
+//   verify       brep::verify_solid on every body of the Part
+// A later stage slots in as one more StageRunner::run call in run_build (e.g. cooling features applied
+// to bodies[0].geometry between "solid" and "verify"); outputs are added in output_formats.cpp.
+#include <string>
+#include <vector>
+
+#include "src/blade/blade_surface.hpp"
+#include "src/brep/named_shape.hpp"
+#include "src/brep/verify.hpp"
+#include "src/config/config.hpp"
+#include "src/core/progress.hpp"
+#include "src/pipeline/time_limit.hpp"
+
+namespace cg::pipeline {
+
+struct BuildOptions {
+  /// Options of the solid checks (mesh deflection); `verify.progress` is set by run_build.
+  brep::VerifyOptions verify;
+};
+
+/// Wall-clock time of one stage, seconds.
+struct StageTiming {
+  std::string stage;
+  double seconds = 0;
+};
+
+struct BuildResult {
+  blade::BladeModel model;
+  /// The product: bodies[0] is the blade ("blade"), each body's faces named (src/brep/named_shape.hpp).
+  brep::Part part;
+  /// checks[i]: the checks of part[i].
+  std::vector<brep::SolidCheck> checks;
+  /// Warnings of the stages (e.g. general-fuse alerts), each prefixed with its stage.
+  std::vector<std::string> warnings;
+  /// Stages in run order.
+  std::vector<StageTiming> timings;
+
+  /// Every check of every body passed.
+  bool valid() const;
+  /// "blade: closed_mesh, brep_valid; insert_1: one_solid" (empty when valid).
+  std::string failed_checks() const;
+};
+
+/// Builds and checks the model of `config`. `progress` (optional) sees the stages and may stop the
+/// build (Cancelled naming the stage and the step). Throws ConfigError for inputs only the model can
+/// reject, InvalidGeometry / AlgorithmFailure when the solid cannot be made. Failed checks do not
+/// throw: see BuildResult::valid().
+BuildResult run_build(const config::Config& config, const BuildOptions& options = {}, ProgressSink* progress = nullptr);
+
+/// What `coolinggen validate` checks without building the solid: the config's output options and the
+/// blade model (returned). Throws ConfigError.
+blade::BladeModel validate(const config::Config& config, ProgressSink* progress = nullptr);
+
+}  // namespace cg::pipeline

@@ -1,0 +1,89 @@
+#include "src/pipeline/outputs.hpp"
+
+#include <BRep_Builder.hxx>
+#include <TopoDS_Compound.hxx>
+
+#include <set>
+
+#include "export/atomic_file.hpp"
+#include "export/report.hpp"
+#include "export/step_writer.hpp"
+#include "src/config/json_fields.hpp"
+#include "src/pipeline/report.hpp"
+#include "src/pipeline/stage_runner.hpp"
+
+namespace cg::pipeline {
+namespace fs = std::filesystem;
+namespace {
+
+// All bodies in one STEP file: the blade alone as its solid, several bodies as a compound.
+void write_step_file(OutputDirectory& dir, const config::Config& c, const BuildResult& r, ProgressSink*) {
+  if (r.part.empty()) throw io::ExportError("STEP: the build produced no body");
+  TopoDS_Shape shape = r.part.front().geometry.shape;
+  std::vector<brep::NamedFace> faces = r.part.front().geometry.faces;
+  if (r.part.size() > 1) {
+    TopoDS_Compound compound;
+    BRep_Builder bb;
+    bb.MakeCompound(compound);
+    faces.clear();
+    for (const brep::NamedBody& b : r.part) {
+      bb.Add(compound, b.geometry.shape);
+      faces.insert(faces.end(), b.geometry.faces.begin(), b.geometry.faces.end());
+    }
+    shape = compound;
+  }
+  const io::StepOptions options{io::parse_step_schema(c.output.step_schema), c.output.product_name};
+  dir.write("blade.step", [&](const fs::path& target) { io::write_step(target, shape, faces, options); });
+}
+
+}  // namespace
+
+const std::vector<OutputFormat>& output_formats() {
+  static const std::vector<OutputFormat> formats{
+      {"step", "STEP (AP214 or AP242, unit mm) with named faces", {"blade.step"}, write_step_file},
+  };
+  return formats;
+}
+
+void check_output_options(const config::Config& c) {
+  std::string names;
+  for (const OutputFormat& f : output_formats()) names += (names.empty() ? "\"" : ", \"") + f.name + "\"";
+  std::set<std::string> seen;
+  for (std::size_t i = 0; i < c.output.formats.size(); ++i) {
+    const std::string& n = c.output.formats[i];
+    const std::string path = "output.formats[" + std::to_string(i) + "]";
+    bool known = false;
+    for (const OutputFormat& f : output_formats()) known = known || f.name == n;
+    if (!known) config::fail(path, "unknown output format \"" + n + "\" (allowed: " + names + ")");
+    if (!seen.insert(n).second) config::fail(path, "\"" + n + "\" is listed twice");
+  }
+}
+
+WrittenOutputs write_outputs(const config::Config& c, const BuildResult& r, const fs::path& dir, ProgressSink* progress) {
+  check_output_options(c);
+  std::vector<std::string> owned{kReportFile};
+  for (const OutputFormat& f : output_formats()) owned.insert(owned.end(), f.files.begin(), f.files.end());
+  WrittenOutputs out;
+  out.directory = dir;
+  StageRunner stages(progress, out.timings);
+  OutputDirectory od(dir, kReportFile, owned);
+  if (r.valid())
+    for (const OutputFormat& f : output_formats()) {
+      bool selected = false;
+      for (const std::string& n : c.output.formats) selected = selected || n == f.name;
+      std::string files;
+      for (const std::string& n : f.files) files += (files.empty() ? "" : ", ") + n;
+      if (selected) stages.run(f.name, "write " + files, [&] { f.write(od, c, r, progress); });
+    }
+  stages.run("report", "write report.json", [&] {
+    std::vector<StageTiming> timings = r.timings;
+    timings.insert(timings.end(), out.timings.begin(), out.timings.end());
+    od.commit([&](const fs::path& target, const std::vector<std::string>& files) {
+      io::write_report(target, report_content(c, r, files, timings));
+    });
+  });
+  out.files = od.files();
+  return out;
+}
+
+}  // namespace cg::pipeline

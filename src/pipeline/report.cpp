@@ -1,0 +1,122 @@
+#include "src/pipeline/report.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "src/blade/section.hpp"
+#include "src/pipeline/sha256.hpp"
+#include "src/pipeline/version.hpp"
+
+namespace cg::pipeline {
+namespace {
+
+using json = nlohmann::ordered_json;
+
+constexpr double kDegPerRad = 57.295779513082320876798;
+
+json xyz(const Eigen::Vector3d& p) { return json::array({p.x(), p.y(), p.z()}); }
+json ab(const Eigen::Vector2d& p) { return json::array({p.x(), p.y()}); }
+
+// Section k of the built model. The built chord is the straight distance between the LE and TE of the
+// 3D section curve (on a meridional path the section is scaled to fit between the LE and TE lines, so
+// it differs from the profile's own chord).
+// The blade model's per-section diagnostics (issue 8 items 2 and 5): the edge circles found (and
+// whether the profile follows them as exact arcs); the surface's tolerance, achieved deviation and pole
+// counts are in blade_surface. The 3D section's LE and TE are at the surface parameters u_le, u_te.
+json section_entry(const config::Config& c, const blade::BladeModel& m, std::size_t i) {
+  const auto& def = c.blade.sections[i];
+  const bool points = std::holds_alternative<blade::PointSectionDefinition>(def.shape);
+  json e{{"span", def.placement.span}, {"kind", points ? "points" : "parametric"}};
+  if (points && !std::get<blade::PointSectionDefinition>(def.shape).file.empty())
+    e["file"] = std::get<blade::PointSectionDefinition>(def.shape).file;
+  if (i >= m.profiles.size() || i >= m.section_curves.size()) return e;
+  const blade::SectionProfile& p = m.profiles[i];
+  const BSplineCurve<3>& curve = m.section_curves[i];
+  const Eigen::Vector3d le = curve.point(curve.check_param(m.u_le)), te = curve.point(curve.check_param(m.u_te));
+  const blade::SectionProperties props = blade::section_properties(p.curve);
+  e["chord_mm"] = (te - le).norm();
+  e["leading_edge_mm"] = xyz(le);
+  e["trailing_edge_mm"] = xyz(te);
+  e["profile"] = {{"chord_mm", p.chord()},
+                  {"stagger_deg", std::atan2(p.chord_direction.y(), p.chord_direction.x()) * kDegPerRad},
+                  {"area_mm2", std::abs(props.area)},
+                  {"perimeter_mm", props.perimeter},
+                  {"leading_edge", ab(p.le)},
+                  {"trailing_edge", ab(p.te)},
+                  {"poles", p.curve.num_period_poles()}};
+  e["poles_3d"] = curve.num_period_poles();
+  if (i < m.diagnostics.size()) {
+    const blade::SectionDiagnostics& d = m.diagnostics[i];
+    const auto circle = [](const blade::EdgeCircle& k, int points, bool arc) {
+      json j{{"centre_mm", ab(k.centre)}, {"radius_mm", k.radius}, {"points_on_circle", points}, {"exact_arc", arc}};
+      return j;
+    };
+    e["le_circle"] = circle(d.le_circle, d.le_circle_points, d.le_arc);
+    e["te_circle"] = circle(d.te_circle, d.te_circle_points, d.te_arc);
+  }
+  return e;
+}
+
+}  // namespace
+
+nlohmann::ordered_json report_model(const config::Config& c, const blade::BladeModel& m) {
+  json sections = json::array();
+  for (std::size_t i = 0; i < c.blade.sections.size(); ++i) sections.push_back(section_entry(c, m, i));
+  const auto& s = m.surface;
+  return json{{"name", c.name},
+              {"description", c.description},
+              {"flow_path", std::holds_alternative<blade::StraightFlowPath>(c.blade.flow_path) ? "straight" : "meridional"},
+              {"span_length_mm", m.span_length},
+              {"sections", sections},
+              {"blade_surface",
+               {{"degree_u", s.degree_u()},
+                {"degree_v", s.degree_v()},
+                {"poles_u", m.poles_u()},
+                {"poles_v", m.poles_v()},
+                {"rational", s.is_rational()},
+                {"tolerance_mm", m.surface_tolerance},
+                {"achieved_deviation_mm", m.surface_deviation},
+                {"check_points", m.surface_check_points},
+                {"skinned_sections", m.skinned_spans.size()},
+                {"seam_chordwise", m.seam}}},
+              {"overbuild", m.options.overbuild},
+              {"step_schema", c.output.step_schema},
+              {"config", c.source}};
+}
+
+std::string input_hash(const config::Config& c) {
+  Sha256 h;
+  // Each part is length-prefixed so that moving bytes between parts changes the hash.
+  const auto part = [&](const std::string& s) {
+    h.update(std::to_string(s.size()) + ":");
+    h.update(s);
+  };
+  part(c.source.dump());
+  for (const auto& s : c.blade.sections) {
+    const auto* p = std::get_if<blade::PointSectionDefinition>(&s.shape);
+    if (!p || p->file.empty()) continue;
+    std::ifstream in(p->file, std::ios::binary);
+    std::stringstream bytes;
+    bytes << in.rdbuf();
+    part(in ? bytes.str() : std::string("<unreadable>"));
+  }
+  return "sha256:" + h.hex_digest();
+}
+
+io::ReportContent report_content(const config::Config& c, const BuildResult& r, const std::vector<std::string>& outputs,
+                                 const std::vector<StageTiming>& timings) {
+  io::ReportContent rc;
+  rc.version = version();
+  rc.input_hash = input_hash(c);
+  if (!r.checks.empty()) rc.check = r.checks.front();
+  if (!r.part.empty()) rc.face_names = brep::count_face_names(r.part.front().geometry);
+  rc.warnings = r.warnings;
+  rc.model = report_model(c, r.model);
+  rc.model["source"] = c.source_file.empty() ? "<built-in example>" : c.source_file;
+  for (const StageTiming& s : timings) rc.timings_s[s.stage] = s.seconds;
+  rc.outputs = outputs;
+  return rc;
+}
+
+}  // namespace cg::pipeline
