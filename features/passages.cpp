@@ -8,6 +8,7 @@
 #include "features/passage_boolean.hpp"
 #include "features/passage_checks.hpp"
 #include "features/radial_passages.hpp"
+#include "features/wall_features.hpp"
 
 namespace cg::features {
 
@@ -15,7 +16,10 @@ void validate_passages(const blade::BladeModel& model, const PassagesDefinition&
   if (def.core && !def.radial_passages.empty())
     throw PassageInputError("radial_passages", "radial passages cannot be combined with a core (they would cut "
                                                "through its chambers); use one or the other");
-  if (def.core) check_core_definition(model, *def.core);
+  if (def.core) {
+    check_core_definition(model, *def.core);
+    check_wall_feature_definitions(*def.core);
+  }
   if (!def.radial_passages.empty()) build_radial_passages(model, def.radial_passages);  // checks, cheap tools
 }
 
@@ -58,6 +62,13 @@ PassagesResult build_passages(const blade::BladeModel& model, const brep::NamedS
   for (const auto& t : br.cut.tools) out.report.tools.push_back({t.feature, t.expected_volume, t.measured_volume, t.passed, "cut"});
   measure_passages(model, out.blade, def, core ? &*core : nullptr, radial ? &*radial : nullptr, out.report);
   lap("checks");
+  // Turbulators, pin fins and TE slots after the passage checks: those measure the smooth chambers.
+  if (core) {
+    WallFeatureBuild wb;
+    out.blade = apply_wall_features(model, *def.core, *core, out.blade, out.report, &wb);
+    if (!wb.steps.empty()) out.check = wb.steps.back().check;  // the last step verified the final solid
+    t0 = std::chrono::steady_clock::now();
+  }
   std::string failed;
   for (const auto& t : out.report.thickness)
     if (!t.passed)
