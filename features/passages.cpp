@@ -64,7 +64,7 @@ PassagesResult build_passages(const blade::BladeModel& model, const brep::NamedS
   lap("checks");
   // Turbulators, pin fins and TE slots after the passage checks: those measure the smooth chambers.
   if (core) {
-    WallFeatureBuild wb;
+    WallFeatureBuild& wb = out.wall_features;
     out.blade = apply_wall_features(model, *def.core, *core, out.blade, out.report, &wb);
     if (!wb.steps.empty()) out.check = wb.steps.back().check;  // the last step verified the final solid
     t0 = std::chrono::steady_clock::now();

@@ -200,7 +200,27 @@ TurbulatorBuild build_turbulators(const blade::BladeModel& model, const CoreDefi
         auto params = [&](double x, double y) -> Eigen::Vector2d {
           return Eigen::Vector2d(fc.u, fc.v) + G.ldlt().solve(J.transpose() * (x * e1 + y * e2));
         };
-        const double xa = (ra_pt - centre).dot(e1) + clear_a, xb = (rb_pt - centre).dot(e1) - clear_b;
+        // Each end lies `clearance` from the rib's mid-surface (distance normal to it, measured on the
+        // wall point of the centre line): an inclined rib's foot and its fillet reach further on the acute
+        // side, (thickness / 2) / sin(b) + r cot(b / 2) + end_gap, b the acute rib/wall angle.
+        const double xm0 = 0.0;
+        auto end_at = [&](const RibDefinition& r, const Vec3& foot) {
+          const Vec3 across = (blade::inner_wall_point(coords, def.wall_thickness, s, r.suction_chord) -
+                               blade::inner_wall_point(coords, def.wall_thickness, s, r.pressure_chord)).normalized();
+          const double beta = 0.5 * kPi - std::acos(std::min(1.0, std::abs(across.dot(nrm))));
+          const double clear = 0.5 * r.thickness / std::sin(beta) + r.fillet_radius / std::tan(0.5 * beta) + td.end_gap;
+          const Vec3 plane_n = across.cross(e2).normalized();
+          auto gap = [&](double x) {
+            const Eigen::Vector2d uv = params(x, (x - xm0) * cot_a);
+            return std::abs((wall.point(uv.x(), uv.y(), t) - foot).dot(plane_n)) - clear;
+          };
+          const double x_foot = (foot - centre).dot(e1);
+          if (gap(0.0) <= 0) return std::nan("");
+          return bisect(gap, x_foot, 0.0, 40);
+        };
+        const double xa = end_at(ra, ra_pt), xb = end_at(rb, rb_pt);
+        if (std::isnan(xa) || std::isnan(xb))
+          throw PassageInputError(field(i, "end_gap"), name + ": no room between the rib fillets at span " + fmt(s));
         if (!(xb - xa > td.width))
           throw PassageInputError(field(i, "end_gap"), name + ": no room between the rib fillets at span " + fmt(s));
         const double xm = 0.5 * (xa + xb);
