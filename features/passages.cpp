@@ -45,6 +45,8 @@ PassagesResult build_passages(const blade::BladeModel& model, const brep::NamedS
     for (const auto& [stage, s] : core->seconds) out.report.seconds.emplace_back("core_" + stage, s);
     interior = core->interior_tools;
     cuts = core->cut_tools;
+    // Turbulator, pin and slot tools now: their input errors come before the expensive booleans.
+    out.wall_features = build_wall_feature_tools(model, *def.core, *core, out.report);
     t0 = std::chrono::steady_clock::now();
   }
   if (!def.radial_passages.empty()) {
@@ -64,9 +66,9 @@ PassagesResult build_passages(const blade::BladeModel& model, const brep::NamedS
   lap("checks");
   // Turbulators, pin fins and TE slots after the passage checks: those measure the smooth chambers.
   if (core) {
-    WallFeatureBuild& wb = out.wall_features;
-    out.blade = apply_wall_features(model, *def.core, *core, out.blade, out.report, &wb);
-    if (!wb.steps.empty()) out.check = wb.steps.back().check;  // the last step verified the final solid
+    out.blade = apply_wall_feature_tools(out.blade, out.wall_features, out.report);
+    // The last step verified the final solid.
+    if (!out.wall_features.steps.empty()) out.check = out.wall_features.steps.back().check;
     t0 = std::chrono::steady_clock::now();
   }
   std::string failed;

@@ -3,28 +3,44 @@
 #include <chrono>
 
 namespace cg::features {
+namespace {
+
+class Lap {
+ public:
+  explicit Lap(PassageReport& report) : report_(report) {}
+  void operator()(const std::string& stage) {
+    const auto t = std::chrono::steady_clock::now();
+    report_.seconds.emplace_back(stage, std::chrono::duration<double>(t - t0_).count());
+    t0_ = t;
+  }
+
+ private:
+  PassageReport& report_;
+  std::chrono::steady_clock::time_point t0_ = std::chrono::steady_clock::now();
+};
+
+}  // namespace
 
 void check_wall_feature_definitions(const CoreDefinition& def) {
   check_turbulator_definitions(def);
   check_trailing_edge_definition(def);
 }
 
-brep::NamedShape apply_wall_features(const blade::BladeModel& model, const CoreDefinition& def, const CoreBuild& core,
-                                     const brep::NamedShape& blade, PassageReport& report, WallFeatureBuild* build) {
-  WallFeatureBuild local;
-  WallFeatureBuild& b = build ? *build : local;
-  if (def.turbulators.empty() && !def.trailing_edge) return blade;
-  auto t0 = std::chrono::steady_clock::now();
-  auto lap = [&](const std::string& stage) {
-    const auto t = std::chrono::steady_clock::now();
-    report.seconds.emplace_back(stage, std::chrono::duration<double>(t - t0).count());
-    t0 = t;
-  };
+WallFeatureBuild build_wall_feature_tools(const blade::BladeModel& model, const CoreDefinition& def,
+                                          const CoreBuild& core, PassageReport& report) {
+  WallFeatureBuild b;
+  if (def.turbulators.empty() && !def.trailing_edge) return b;
+  Lap lap(report);
   WallLines lines(model.surface, core.inner_wall.surface);
   b.turbulators = build_turbulators(model, def, core, lines);
   lap("turbulator_tools");
   b.trailing_edge = build_trailing_edge(model, def, core, lines);
   lap("trailing_edge_tools");
+  return b;
+}
+
+brep::NamedShape apply_wall_feature_tools(const brep::NamedShape& blade, WallFeatureBuild& b, PassageReport& report) {
+  Lap lap(report);
   brep::NamedShape current = blade;
   auto run = [&](const std::string& group, BooleanOperation op, const std::vector<FeatureTool>& tools) {
     if (tools.empty()) return;

@@ -25,10 +25,15 @@ struct WallFeatureBuild {
 /// The checks of the definitions that need no geometry (PassageInputError).
 void check_wall_feature_definitions(const CoreDefinition& def);
 
-/// Builds and applies the turbulators, pin fins and slots of `def` to `blade` (the blade with its
-/// chambers). Appends stage times and per-tool volume checks to `report`. Throws PassageInputError for
-/// input that does not fit, FeatureFailure when a boolean step fails.
-brep::NamedShape apply_wall_features(const blade::BladeModel& model, const CoreDefinition& def, const CoreBuild& core,
-                                     const brep::NamedShape& blade, PassageReport& report, WallFeatureBuild* build = nullptr);
+/// Builds the turbulator, pin-fin and slot tools of `def` (placement and the expected volumes need only
+/// the model and the core's inner wall, not the part). Throws PassageInputError for input that does not
+/// fit, FeatureFailure for OCCT failures in building a tool.
+WallFeatureBuild build_wall_feature_tools(const blade::BladeModel& model, const CoreDefinition& def,
+                                          const CoreBuild& core, PassageReport& report);
+
+/// Applies the tools of `build` to `blade` (the blade with its chambers): one BooleanStep per group
+/// (turbulators: Fuse, pin fins: Fuse, slots: Cut). Appends stage times and per-tool volume checks to
+/// `report`, the step reports to `build`. Throws FeatureFailure when a step fails.
+brep::NamedShape apply_wall_feature_tools(const brep::NamedShape& blade, WallFeatureBuild& build, PassageReport& report);
 
 }  // namespace cg::features
