@@ -66,9 +66,9 @@ std::vector<double> breaks(const std::vector<double>& knots, int degree) {
 }  // namespace
 
 BlockIntegral integrate_block(const RuledBlock& block, WallLines& lines, Region start, Region wanted, Region end,
-                              int cells_per_span, const std::vector<double>& breaks_a) {
+                              const BlockQuadrature& q) {
   std::vector<double> ba = breaks(block.bottom.knots_u(), block.bottom.degree_u());
-  for (double a : breaks_a)
+  for (double a : q.breaks_a)
     if (a > ba.front() && a < ba.back()) ba.push_back(a);
   std::sort(ba.begin(), ba.end());
   const std::vector<double> bb = breaks(block.bottom.knots_v(), block.bottom.degree_v());
@@ -77,8 +77,8 @@ BlockIntegral integrate_block(const RuledBlock& block, WallLines& lines, Region 
   BlockIntegral out;
   for (std::size_t i = 0; i + 1 < ba.size(); ++i)
     for (std::size_t j = 0; j + 1 < bb.size(); ++j)
-      gauss_legendre(ba[i], ba[i + 1], cells_per_span, [&](double a, double wa) {
-        gauss_legendre(bb[j], bb[j + 1], cells_per_span, [&](double b, double wb) {
+      gauss_legendre(ba[i], ba[i + 1], q.cells_a, [&](double a, double wa) {
+        gauss_legendre(bb[j], bb[j + 1], q.cells_b, [&](double b, double wb) {
           const auto db = block.bottom.derivatives<1>(a, b);
           const auto dt = block.top.derivatives<1>(a, b);
           const Eigen::Vector3d yl = dt.S() - db.S();
@@ -92,7 +92,7 @@ BlockIntegral integrate_block(const RuledBlock& block, WallLines& lines, Region 
             return 0.5 * h * (det(m - g * h) + det(m + g * h));
           };
           Region reached;
-          const Intervals iv = lines.intervals(db.S(), dt.S(), start, wanted, &reached);
+          const Intervals iv = lines.intervals(db.S(), dt.S(), start, wanted, &reached, q.chamber);
           if (end != Region::Any && reached != end) out.ok = false;
           double part = 0;
           for (const auto& [l0, l1] : iv) part += integral(l0, l1);

@@ -34,10 +34,16 @@ struct BlockIntegral {
   double in_region = 0;  ///< of its part in the wanted region
   bool ok = true;
 };
-/// `breaks_a`: extra a-parameters where the integrand has a kink (a line through a crease or grazing an
-/// edge of the wall), so no Gauss cell straddles one.
+/// Gauss-Legendre cells per knot span (between breaks) along a and b; `breaks_a`: extra a-parameters where
+/// the integrand has a kink (a line through a crease or grazing an edge of the wall), so no Gauss cell
+/// straddles one; `chamber`: false when the block cannot reach the chamber (the inner wall is skipped).
+struct BlockQuadrature {
+  int cells_a = 1, cells_b = 1;
+  std::vector<double> breaks_a;
+  bool chamber = true;
+};
 BlockIntegral integrate_block(const RuledBlock& block, WallLines& lines, Region start, Region wanted, Region end,
-                              int cells_per_span = 1, const std::vector<double>& breaks_a = {});
+                              const BlockQuadrature& q = {});
 
 /// A planar quadrilateral (corners p00, p10, p01, p11 in the (a, b) order) as a bilinear B-spline patch.
 BSplineSurface<3> bilinear_patch(const Eigen::Vector3d& p00, const Eigen::Vector3d& p10, const Eigen::Vector3d& p01,

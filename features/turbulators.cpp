@@ -261,7 +261,7 @@ TurbulatorBuild build_turbulators(const blade::BladeModel& model, const CoreDefi
                                         fmt(td.height + other_height) + " mm and 0.1 mm clear; height must be < " +
                                         fmt(0.5 * (clear + td.height - 0.1)) + " mm here");
         }
-        const BlockIntegral vi = integrate_block(block, lines, Region::Material, Region::Chamber, Region::Chamber, 1);
+        const BlockIntegral vi = integrate_block(block, lines, Region::Material, Region::Chamber, Region::Chamber);
         if (!vi.ok)
           throw PassageInputError(field(i, "height"), name + " does not stand on the chamber wall as placed (its top "
                                                              "leaves the chamber); reduce the height or move it");

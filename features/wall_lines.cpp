@@ -47,10 +47,11 @@ std::vector<double> WallLines::inner_crossings(const Eigen::Vector3d& a, const E
 }
 
 Intervals WallLines::intervals(const Eigen::Vector3d& a, const Eigen::Vector3d& b, Region start, Region wanted,
-                               Region* end) {
+                               Region* end, bool chamber) {
   std::vector<std::pair<double, bool>> events;  // (t, true: outer wall)
   for (double t : outer_crossings(a, b)) events.emplace_back(t, true);
-  for (double t : inner_crossings(a, b)) events.emplace_back(t, false);
+  if (chamber)
+    for (double t : inner_crossings(a, b)) events.emplace_back(t, false);
   std::sort(events.begin(), events.end());
   // The chamber lies inside the blade: the two toggles are tracked separately.
   bool in_blade = start != Region::Outside, in_chamber = start == Region::Chamber;

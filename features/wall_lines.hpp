@@ -33,7 +33,9 @@ class WallLines {
   /// The parts of the segment a -> b in `wanted`, given the region of a (each crossing of the outer wall
   /// toggles outside / inside the blade, each crossing of the inner wall material / chamber). `end`
   /// receives the region reached at b, so a caller can check its assumption about both ends.
-  Intervals intervals(const Eigen::Vector3d& a, const Eigen::Vector3d& b, Region start, Region wanted, Region* end = nullptr);
+  /// chamber = false: the segment cannot reach the chamber, the inner wall is not searched.
+  Intervals intervals(const Eigen::Vector3d& a, const Eigen::Vector3d& b, Region start, Region wanted, Region* end = nullptr,
+                      bool chamber = true);
 
   /// Unit normal of the inner wall where the segment a -> b first crosses it (zero when it does not).
   Eigen::Vector3d inner_normal(const Eigen::Vector3d& a, const Eigen::Vector3d& b);
