@@ -7,6 +7,7 @@
 #include <gp_Ax2.hxx>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 
 #include "features/face_names.hpp"
@@ -75,7 +76,7 @@ struct Across {
   double lo = 0, hi = 0;
 };
 Across across(WallLines& lines, const TeFrame& f, double x, double z, bool outer) {
-  const double r = 8.0;
+  const double r = 20.0;  // mm: far upstream the frame's y-lines meet the convex suction side at y > 0
   const Vec3 a = f.at(x, -r, z), b = f.at(x, r, z);
   const std::vector<double> t = outer ? lines.outer_crossings(a, b) : lines.inner_crossings(a, b);
   Across out;
@@ -123,6 +124,24 @@ SpanLine crease_line(const blade::BladeModel& model, const blade::BladeCoordinat
     prev = p;
   }
   return out;
+}
+
+// Distance between the segments p0-p1 and q0-q1 (closest points by clamped parameters, Ericson,
+// "Real-Time Collision Detection" 5.1.9).
+double segment_distance(const Vec3& p0, const Vec3& p1, const Vec3& q0, const Vec3& q1) {
+  const Vec3 d1 = p1 - p0, d2 = q1 - q0, r = p0 - q0;
+  const double a = d1.squaredNorm(), e = d2.squaredNorm(), f = d2.dot(r), c = d1.dot(r), b = d1.dot(d2);
+  const double denom = a * e - b * b;
+  double s = denom > 1e-14 * a * e ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
+  double t = (b * s + f) / e;
+  if (t < 0) {
+    t = 0;
+    s = std::clamp(-c / a, 0.0, 1.0);
+  } else if (t > 1) {
+    t = 1;
+    s = std::clamp((b - c) / a, 0.0, 1.0);
+  }
+  return ((p0 + s * d1) - (q0 + t * d2)).norm();
 }
 
 // Centred positions: `count` items at `pitch` on [lo, hi].
@@ -371,11 +390,12 @@ TrailingEdgeBuild build_trailing_edge(const blade::BladeModel& model, const Core
         // Row station: upstream of the slots' inlets (the most upstream one, in this frame).
         const double x = inlet_x_min - pf.slot_gap - r - row * pf.streamwise_pitch;
         if (last_rib) {
-          double x_rib = -HUGE_VAL;
-          for (double c : {last_rib->suction_chord, last_rib->pressure_chord})
-            x_rib = std::max(x_rib, (blade::inner_wall_point(coords, def.wall_thickness, s, c) - f.o).dot(f.x));
-          x_rib += 0.5 * last_rib->thickness + last_rib->fillet_radius + 0.1;
-          if (x - r < x_rib)
+          // Clear of the last rib and its fillets: the pin's line (across the blade at x) against the rib's
+          // mid-line between its wall points at this span.
+          const Vec3 ra = blade::inner_wall_point(coords, def.wall_thickness, s, last_rib->suction_chord);
+          const Vec3 rb = blade::inner_wall_point(coords, def.wall_thickness, s, last_rib->pressure_chord);
+          const double need = r + 0.5 * last_rib->thickness + last_rib->fillet_radius + 0.1;
+          if (segment_distance(f.at(x, -20.0, 0.0), f.at(x, 20.0, 0.0), ra, rb) < need)
             throw PassageInputError(field("pin_fins.rows"),
                                     name + " (row " + std::to_string(row + 1) + ") reaches rib " +
                                         std::to_string(def.ribs.size()) + " and its fillet at span " + fmt(s) +

@@ -132,7 +132,7 @@ BOOST_AUTO_TEST_CASE(trailing_edge_that_does_not_fit) {
   expect_geometry_error([](json& d) { core_of(d)["trailing_edge"]["cutback_length"] = 3.0; },
                         "cooling.core.trailing_edge.cutback_length", {"must be <", "at span"});
   // Slot and lip thicker than the TE region: no suction-side wall left under the cutback.
-  expect_geometry_error([](json& d) { core_of(d)["trailing_edge"]["slot_height"] = 1.2; },
+  expect_geometry_error([](json& d) { core_of(d)["trailing_edge"]["slot_height"] = 3.0; },
                         "cooling.core.trailing_edge.slot_height", {"suction-side wall", "at span"});
   // Too many pin rows reach the last rib's fillet.
   expect_geometry_error([](json& d) { core_of(d)["trailing_edge"]["pin_fins"]["rows"] = 12; },
