@@ -24,6 +24,8 @@
 
 #include <cmath>
 #include <filesystem>
+#include <functional>
+#include <nlohmann/json.hpp>
 #include <map>
 #include <set>
 #include <memory>
@@ -45,17 +47,33 @@ struct CooledBlade {
   features::PassagesResult cooled;
 };
 
-/// Builds a config's blade and its cooling (once per process and file).
+inline std::unique_ptr<CooledBlade> build_cooled(config::Config c) {
+  auto out = std::make_unique<CooledBlade>();
+  out->config = std::move(c);
+  out->model = config::build_model(out->config);
+  const brep::BladeSolid s = brep::build_blade_solid(out->model);
+  out->blade = {s.solid, s.faces};
+  out->cooled = pipeline::apply_cooling(out->config.cooling, out->model, out->blade);
+  return out;
+}
+
+/// Builds a config's blade and its cooling (once per process and file; "" = the built-in example).
 inline const CooledBlade& cooled_example(const std::string& file) {
   static std::map<std::string, std::unique_ptr<CooledBlade>> cache;
   auto& slot = cache[file];
+  if (!slot) slot = build_cooled(file.empty() ? config::builtin_example_config() : config::load_config_file(file));
+  return *slot;
+}
+
+/// The built-in example with its JSON edited (once per process and name), e.g. fewer features so a
+/// test stays cheap.
+inline const CooledBlade& cooled_builtin_variant(const std::string& name, const std::function<void(nlohmann::json&)>& edit) {
+  static std::map<std::string, std::unique_ptr<CooledBlade>> cache;
+  auto& slot = cache[name];
   if (!slot) {
-    slot = std::make_unique<CooledBlade>();
-    slot->config = file.empty() ? config::builtin_example_config() : config::load_config_file(file);
-    slot->model = config::build_model(slot->config);
-    const brep::BladeSolid s = brep::build_blade_solid(slot->model);
-    slot->blade = {s.solid, s.faces};
-    slot->cooled = pipeline::apply_cooling(slot->config.cooling, slot->model, slot->blade);
+    nlohmann::json doc = nlohmann::json::parse(config::builtin_example_json());
+    edit(doc);
+    slot = build_cooled(config::parse_config(doc, COOLINGGEN_SOURCE_DIR "/data/examples", "hpt_rotor"));
   }
   return *slot;
 }

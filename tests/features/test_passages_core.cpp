@@ -29,7 +29,14 @@ using test::cooled_example;
 
 namespace {
 
-const test::CooledBlade& rotor() { return cooled_example(""); }
+// The built-in example's core without its turbulators, slots and pin fins (their own test,
+// test_passages_wall_features.cpp, builds them): this test measures the passages and stays cheap.
+const test::CooledBlade& rotor() {
+  return test::cooled_builtin_variant("core only", [](nlohmann::json& d) {
+    d["cooling"]["core"].erase("turbulators");
+    d["cooling"]["core"].erase("trailing_edge");
+  });
+}
 const features::CoreDefinition& core() { return *rotor().config.cooling.passages.core; }
 
 }  // namespace
