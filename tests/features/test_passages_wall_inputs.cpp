@@ -28,6 +28,13 @@ const blade::BladeModel& model() {
   return m;
 }
 
+// The message starts with the field path and contains every detail.
+void check_message(const std::string& m, const std::string& path, const std::vector<std::string>& details) {
+  BOOST_TEST_MESSAGE(m);
+  BOOST_TEST(m.rfind(path, 0) == 0u, "message does not start with " << path << ": " << m);
+  for (const auto& d : details) BOOST_TEST(m.find(d) != std::string::npos, "message lacks \"" << d << "\": " << m);
+}
+
 // Config reader and validate (no solid): a ConfigError starting with `path`, containing every detail.
 void expect_config_error(const std::function<void(json&)>& edit, const std::string& path,
                          const std::vector<std::string>& details) {
@@ -38,10 +45,7 @@ void expect_config_error(const std::function<void(json&)>& edit, const std::stri
     pipeline::validate_cooling(c.cooling, model());
     BOOST_ERROR("no error for " << path);
   } catch (const config::ConfigError& e) {
-    const std::string m = e.what();
-    BOOST_TEST_MESSAGE(m);
-    BOOST_TEST(m.rfind(path, 0) == 0u, "message does not start with " << path << ": " << m);
-    for (const auto& d : details) BOOST_TEST(m.find(d) != std::string::npos, "message lacks \"" << d << "\": " << m);
+    check_message(e.what(), path, details);
   }
 }
 
@@ -65,10 +69,7 @@ void expect_geometry_error(const std::function<void(json&)>& edit, const std::st
     features::build_trailing_edge(model(), def, core_build(), lines);
     BOOST_ERROR("no error for " << path);
   } catch (const features::PassageInputError& e) {
-    const std::string m = config::cooling_error(e).what();
-    BOOST_TEST_MESSAGE(m);
-    BOOST_TEST(m.rfind(path, 0) == 0u, "message does not start with " << path << ": " << m);
-    for (const auto& d : details) BOOST_TEST(m.find(d) != std::string::npos, "message lacks \"" << d << "\": " << m);
+    check_message(config::cooling_error(e).what(), path, details);
   }
 }
 
