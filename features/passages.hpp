@@ -4,6 +4,7 @@
 // (passage_boolean.hpp), then measured on the built solid (passage_checks.hpp).
 #include "features/passage_definition.hpp"
 #include "features/passage_report.hpp"
+#include "features/wall_features.hpp"
 #include "src/blade/blade_surface.hpp"
 #include "src/brep/named_shape.hpp"
 #include "src/brep/verify.hpp"
@@ -14,6 +15,7 @@ struct PassagesResult {
   brep::NamedShape blade;  ///< the cooled blade, every face named
   PassageReport report;
   brep::SolidCheck check;  ///< verify_solid of the cooled blade (run after the last boolean step)
+  WallFeatureBuild wall_features;  ///< turbulators, slots, pins: placement and boolean step reports
 };
 
 /// The checks of build_passages that need no solid (definition, inner wall crossing, rib placement,

@@ -40,7 +40,14 @@ const char* builtin_example_json() {
         {"suction_chord": 0.68, "pressure_chord": -0.66, "thickness": 1.0, "fillet_radius": 0.5,
           "turnaround": {"end": "hub", "gap": 2.5, "tip_radius": 0.5}}
       ],
-      "inlets": [{"chamber": 1, "end": "hub", "diameter": 2.0}, {"chamber": 2, "end": "hub", "diameter": 2.5}]
+      "inlets": [{"chamber": 1, "end": "hub", "diameter": 2.0}, {"chamber": 2, "end": "hub", "diameter": 2.5}],
+      "turbulators": [
+        {"chamber": 2, "height": 0.4, "width": 0.5, "pitch": 5.0, "angle_deg": 90, "arrangement": "inline"},
+        {"chamber": 3, "height": 0.4, "width": 0.5, "pitch": 5.0, "angle_deg": 60, "arrangement": "staggered"}
+      ],
+      "trailing_edge": {"type": "pressure_side_cutback", "slot_height": 0.4, "slot_width": 1.2, "pitch": 2.5,
+        "lip_thickness": 0.3, "cutback_length": 0.6, "land_taper_deg": 3.0,
+        "pin_fins": {"diameter": 0.8, "spanwise_pitch": 2.5, "streamwise_pitch": 1.6, "rows": 2}}
     }
   },
   "output": {"step_schema": "AP214"}
