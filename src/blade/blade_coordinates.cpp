@@ -32,9 +32,13 @@ BladeCoordinates::BladeCoordinates(const BladeModel& model) : model_(&model) {
 
 BladeCoordinates::~BladeCoordinates() = default;
 
-BladeFrame BladeCoordinates::frame(double span, double chord) const {
+const SpanSection& BladeCoordinates::section(double span) const {
+  if (!cached_ || cached_->span() != span) cached_.emplace(*model_, span);
+  return *cached_;
+}
+
+BladeFrame BladeCoordinates::frame_at(double u, double v) const {
   const BSplineSurface<3>& s = model_->surface;
-  double u = surface_u_at_chordwise(chord, model_->u_te), v = span;
   s.check_params(u, v);
   Eigen::Vector3d d[4];  // S, S_v, S_u, (S_uv unused) for order 1
   s.derivatives(u, v, 1, d);
@@ -43,7 +47,15 @@ BladeFrame BladeCoordinates::frame(double span, double chord) const {
   f.chord_tangent = d[2].normalized();
   f.span_tangent = d[1].normalized();
   f.normal = (normal_sign_ * d[2].cross(d[1])).normalized();
+  f.u = u;
+  f.v = v;
   return f;
+}
+
+BladeFrame BladeCoordinates::frame(double span, double chord) const {
+  double u = 0, v = span;
+  model_->surface.check_params(u, v);  // span inside the surface's domain, or InvalidGeometry
+  return frame_at(section(span).u_at_chordwise(chord), span);
 }
 
 Eigen::Vector3d BladeCoordinates::point(const BladeCoordinate& c) const {
@@ -94,7 +106,7 @@ BladeLocateResult BladeCoordinates::locate(const Eigen::Vector3d& p) const {
   r.u = u;
   r.v = v;
   r.coordinate.span = v;
-  r.coordinate.chord = chordwise_at_surface_u(u - s.first_u(), model_->u_te);
+  r.coordinate.chord = section(v).chordwise_at_u(u);
   r.coordinate.depth = (d[0] - p).dot(n);
   return r;
 }

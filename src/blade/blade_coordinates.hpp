@@ -1,16 +1,21 @@
 #pragma once
-// Blade-relative coordinates, so that cooling features move with the blade:
-//   span   = span fraction = surface v (0 hub, 1 casing; the over-build extends it slightly beyond);
-//   chord  = chordwise coordinate in [-1, 1]: 0 at the LE, (0, 1] over the suction side to the TE,
-//            [-1, 0) over the pressure side (c = +1 and c = -1 are both the TE). It is piecewise linear in
-//            the surface u (see blade_surface.hpp) and equals the arc-length fraction of the side at the
-//            sampled section points;
+// Blade-relative coordinates, so that cooling features move with the blade (issue 8, item 3):
+//   span   = span fraction, the surface v: 0 on the hub streamline, 1 on the casing streamline, and the
+//            section at span s lies on the stream surface at s (straight vane: the plane z = s * span),
+//            within the model's surface_tolerance; the over-build extends it slightly beyond [0, 1];
+//   chord  = chordwise coordinate in [-1, 1] on the section at that span (span_section.hpp): the
+//            arc-length fraction of the side from the LE, (0, 1] over the suction side, [-1, 0) over the
+//            pressure side; +1 and -1 are both exactly the TE;
 //   depth  = distance into the wall along the inward normal, mm (0 on the surface, > 0 inside).
-// point = S(u, v) - depth * n(u, v), n the outward unit normal.
+// point = S(u, v) - depth * n(u, v), n the outward unit normal, u = the section's u at that chord.
+// The wall's periodic seam is the iso-line u = 0 (seam_u()), at chordwise coordinate seam_chordwise(span)
+// (+1, the middle of the TE, by default).
 #include <Eigen/Core>
 #include <memory>
+#include <optional>
 
 #include "src/blade/blade_surface.hpp"
+#include "src/blade/span_section.hpp"
 
 namespace cg {
 class SurfaceProjector;
@@ -31,6 +36,7 @@ struct BladeFrame {
   Eigen::Vector3d span_tangent = Eigen::Vector3d::Zero();   // unit dS/dv (hub -> casing)
   Eigen::Vector3d chord_tangent = Eigen::Vector3d::Zero();  // unit dS/du (LE -> TE on the suction side,
                                                             // TE -> LE on the pressure side)
+  double u = 0, v = 0;                                      // surface parameters
 };
 
 struct BladeLocateResult {
@@ -39,7 +45,8 @@ struct BladeLocateResult {
   double u = 0, v = 0;  // surface parameters of the foot point
 };
 
-/// One per thread (locate() reuses the projector's work buffers); the model must outlive it.
+/// One per thread (it caches the section of the last span used and reuses the projector's work
+/// buffers); the model must outlive it.
 class BladeCoordinates {
  public:
   explicit BladeCoordinates(const BladeModel& model);
@@ -49,18 +56,27 @@ class BladeCoordinates {
 
   BladeFrame frame(double span, double chord) const;
   Eigen::Vector3d point(const BladeCoordinate& c) const;
-  /// Inverse by global orthogonal projection onto the surface (src/algo/project_point_surface).
-  /// found=false when the closest point lies on the over-build end (v at the domain boundary with the point
-  /// beyond it). Exact inverse of point() while depth is below the local half-thickness and radius of
-  /// curvature (the closest surface point is then the one the point was built from).
+  /// Inverse by global orthogonal projection onto the surface (src/algo/project_point_surface), then the
+  /// chordwise coordinate of the foot point on its span's section. found=false when the closest point
+  /// lies on the over-build end (v at the domain boundary with the point beyond it). Exact inverse of
+  /// point() while depth is below the local half-thickness and radius of curvature (the closest surface
+  /// point is then the one the point was built from).
   BladeLocateResult locate(const Eigen::Vector3d& p) const;
+  /// The section at a span (the one definition of chord and LE/TE, span_section.hpp).
+  const SpanSection& section(double span) const;
+
+  /// The seam: surface u = 0, at this chordwise coordinate on the given span.
+  static constexpr double seam_u() { return 0.0; }
+  double seam_chordwise(double span) const { return section(span).seam_chordwise(); }
 
   const BladeModel& model() const { return *model_; }
 
  private:
+  BladeFrame frame_at(double u, double v) const;
   const BladeModel* model_;
   double normal_sign_ = 1;  // +1 when S_u x S_v points outward
   std::unique_ptr<SurfaceProjector> projector_;
+  mutable std::optional<SpanSection> cached_;
 };
 
 }  // namespace cg::blade

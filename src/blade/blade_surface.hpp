@@ -1,29 +1,34 @@
 #pragma once
-// The outer blade surface: sections placed on the flow path and skinned into one B-spline surface,
-// periodic in u (chordwise) and built past hub and casing (over-build) so the solid builder can trim it
-// with the flow-path end surfaces.
+// The outer blade surface: the blade's sections at every span (section_family.hpp) placed on the flow
+// path and turned into one B-spline surface, periodic in u (chordwise) and built past hub and casing
+// (over-build) so that features and the solid builder have wall beyond the end walls.
 //
-// Surface parametrisation (relied on by blade_coordinates.hpp and the cooling features):
-//  - v = span fraction (0 hub, 1 casing), domain [-overbuild, 1 + overbuild];
-//  - u periodic with period 1: u = 0 is the LE, u in [0, u_te] the suction side, u = u_te the TE,
-//    u in [u_te, 1] the pressure side. u is the section curves' own parameter (each section curve has
-//    its seam at the LE and period 1), so the iso-curve v = span of a defined section IS that section:
-//    the section curves are skinned as they are (src/fit/skin.hpp: compatible knots by refinement, pole
-//    columns interpolated across the spans; The NURBS Book 10.3). The TE is at u = 0.5 on sections from
-//    parameters (their curve parameter is the angle phi / 2 pi of the thickness construction) and at the
-//    detected te_param on point sections; u_te is the mean of the sections' values, so with several
-//    point sections whose te_param differ, the TE of section k is at profiles[k].te_param, not u_te.
-//  - the over-build sections at v = -overbuild and 1 + overbuild extrapolate the two end sections
-//    linearly (pole by pole).
-//  - straight vane: 3D point (a, b, z) with z = span fraction * span; the 3D sections are the 2D
-//    curves themselves (exact);
-//  - meridional: (x, r cos theta, r sin theta), x axial (see meridional_net.hpp); this placement is not
-//    rational, so each 3D section interpolates the placed 2D section to 1e-6 mm (section_3d.hpp), at
-//    the same parameter (LE at u = 0, TE at the 2D curve's te_param).
+// Between defined sections the blade follows the sections a designer means (issue 8, item 1): the
+// parameters of parametric sections, or stacking point, chord angle and chord-aligned shape of point
+// sections, interpolated by natural cubic splines over span; see section_family.hpp.
+//
+// Surface parametrisation (relied on by blade_coordinates.hpp, span_section.hpp and the features):
+//  - v = span fraction: 0 hub, 1 casing, the iso-curve v = s is the section at span s on its stream
+//    surface (meridional) or in the plane z = s * span (straight) within surface_tolerance; domain
+//    [-overbuild, 1 + overbuild] (linear continuation past the ends);
+//  - u periodic with period 1; the seam (u = 0) lies at chordwise coordinate options.seam of the
+//    mid-span section (default +1: the middle of the TE, exactly, on every span); the LE is at u = u_le
+//    and the TE at u = u_te on every iso-curve; increasing u runs LE -> suction side -> TE -> pressure
+//    side -> LE. u itself is a smooth parameter, not the chordwise coordinate: that is the arc-length
+//    fraction computed on the iso-curve (chordwise.hpp, span_section.hpp);
+//  - straight vane: 3D point (a, b, z), z = span fraction * span; with one section (or parametric
+//    sections) the iso-curves at the skinned spans are the exact section curves;
+//  - meridional: (x, r cos theta, r sin theta), x axial (see meridional_net.hpp); sections are mapped
+//    conformally onto their stream surface: m' = m'_LE + (k (a - a_LE) + offset_a) / r_ref,
+//    theta = theta_0 + (k (b - b_stack) + offset_b) / r_ref, r_ref the LE radius and k scaling the section
+//    between the LE and TE lines.
+// The surface has the fewest poles that meet surface_tolerance (wall_fit.hpp): the achieved deviation
+// and the pole counts are part of the model.
 //
 // The JSON form of these structs is data/schema/coolinggen.schema.json (parsed by src/config); examples
 // in data/examples/.
 #include <Eigen/Core>
+#include <memory>
 #include <optional>
 #include <variant>
 #include <vector>
@@ -65,11 +70,17 @@ struct BladeSectionDefinition {
 
 struct BladeOptions {
   double overbuild = 0.05;       // fraction of span added beyond hub and casing, (0, 0.5]
-  /// Meridional blades: least number of interpolation points per side of each stream-surface section
-  /// (more are used until the 1e-6 mm tolerance is met), [8, 2000]. Unused by straight vanes, whose
-  /// sections are exact.
+  /// Least number of points per side (suction, pressure) at which every section is fitted and checked
+  /// against the surface; more are used as the fit needs more knots. [8, 2000]. The pole count follows
+  /// the tolerance, not this number.
   int chordwise_samples = 97;
   StackingPoint stacking = StackingPoint::Centroid;
+  /// Largest distance of the wall surface from the blade's sections at the same (span, u), mm,
+  /// [1e-5, 0.1]: the surface gets the fewest poles meeting it.
+  double surface_tolerance = 1e-3;
+  /// Chordwise coordinate of the wall's periodic seam, [-1, 1] (+1 or -1: the middle of the TE;
+  /// 0 would put it at the LE, where showerhead holes go).
+  double seam = 1;
 };
 
 struct BladeDefinition {
@@ -88,23 +99,48 @@ struct FlowPathTrim {
   BSplineCurve<2> hub, casing;
 };
 
+namespace detail {
+class SectionFamily;
+}
+
+/// What was built for one defined section (report.json): measured on the placed 2D profile.
+struct SectionDiagnostics {
+  double span = 0;
+  double chord = 0;         // mm, |TE - LE|
+  double stagger_deg = 0;   // angle of the chord line (LE -> TE) from the +a axis, deg
+  double area = 0;          // mm^2, enclosed by the profile in the section frame
+  EdgeCircle le_circle, te_circle;
+  int le_circle_points = 0, te_circle_points = 0;  // point sections: given points on each circle
+  bool le_arc = false, te_arc = false;              // the profile follows the circle as an exact arc
+};
+
 struct BladeModel {
   BSplineSurface<3> surface;
-  double u_te = 0.5;  // u of the TE (see the parametrisation above)
+  double u_le = 0;    // u of the LE on every span (see the parametrisation above)
+  double u_te = 0;    // u of the TE on every span; 0 with the seam at the TE
+  double seam = 1;    // configured chordwise coordinate of the seam (u = 0)
   FlowPathTrim trim;
   double span_length = 0;                 // straight: span; meridional: (x, r) distance of the LE cuts hub-casing
-  std::vector<double> section_spans;      // spans of the defined sections
+  std::vector<double> section_spans;      // spans of the defined sections (one section: {0, 1})
   std::vector<SectionProfile> profiles;   // 2D profiles after placement transforms (section frame)
   std::vector<BSplineCurve<3>> section_curves;  // 3D section curves = the iso-curves v = section_spans[k]
+  std::vector<SectionDiagnostics> diagnostics;  // per defined section (one section: one entry)
+  std::vector<double> skinned_spans;      // spans of the sections the surface interpolates
+  double surface_tolerance = 0;           // requested, mm
+  double surface_deviation = 0;           // achieved: largest deviation found at the check points, mm
+  long surface_check_points = 0;
   std::optional<MeridionalNet> net;
   BladeOptions options;
+  /// The sections at every span the surface was fitted to (section_family.hpp); shared, immutable.
+  std::shared_ptr<const detail::SectionFamily> family;
+
+  /// Distinct poles of the surface chordwise (one period) and spanwise.
+  int poles_u() const { return surface.is_periodic_u() ? surface.num_poles_u() - surface.degree_u() : surface.num_poles_u(); }
+  int poles_v() const { return surface.num_poles_v(); }
 };
 
 /// Builds the blade. Throws InvalidGeometry for invalid definitions (naming the section / quantity).
 BladeModel build_blade(const BladeDefinition& def);
 
-/// Chordwise coordinate c in [-1, 1] (see SectionProfile::param_at_chordwise) <-> surface u in [0, 1).
-double surface_u_at_chordwise(double c, double u_te);
-double chordwise_at_surface_u(double u, double u_te);
 
 }  // namespace cg::blade

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "src/core/curve_evaluator.hpp"
 #include "src/core/error.hpp"
 
 namespace cg::blade::detail {
@@ -52,9 +53,24 @@ CurveIntegral::CurveIntegral(const BSplineCurve<2>& curve, double a, double b, I
   for (std::size_t i = 0; i + 1 < cuts.size(); ++i)
     for (int c = 0; c < kCellsPerSpan; ++c) breaks_.push_back(cuts[i] + (cuts[i + 1] - cuts[i]) * c / kCellsPerSpan);
   breaks_.push_back(b);
+  // The table with the batched evaluator (sorted parameters: one span conversion each), same rule as
+  // integrate_cell.
+  CurveEvaluator<2> ev(curve);
+  auto value = [&](double u) {
+    Eigen::Vector2d P, D;
+    ev.d1(u, P, D);
+    return f_ == Integrand::ArcLength ? D.norm() : D.norm() / P.y();
+  };
   cumulative_.assign(breaks_.size(), 0.0);
-  for (std::size_t i = 0; i + 1 < breaks_.size(); ++i)
-    cumulative_[i + 1] = cumulative_[i] + integrate_cell(curve, breaks_[i], breaks_[i + 1]);
+  rate_.resize(breaks_.size());
+  for (std::size_t i = 0; i + 1 < breaks_.size(); ++i) {
+    const double mid = 0.5 * (breaks_[i] + breaks_[i + 1]), half = 0.5 * (breaks_[i + 1] - breaks_[i]);
+    double sum = 0;
+    for (int k = 0; k < 8; ++k) sum += kWeights[k] * value(mid + half * kNodes[k]);
+    cumulative_[i + 1] = cumulative_[i] + sum * half;
+    rate_[i] = value(breaks_[i]);
+  }
+  rate_.back() = value(breaks_.back());
 }
 
 double CurveIntegral::at(const BSplineCurve<2>& curve, double u) const {
@@ -73,13 +89,20 @@ double CurveIntegral::inverse(const BSplineCurve<2>& curve, double value) const 
   if (i + 1 >= breaks_.size()) return breaks_.back();
   double lo = breaks_[i], hi = breaks_[i + 1];
   const double base = cumulative_[i];
-  // Start from linear interpolation inside the cell; Newton, falling back to bisection when a step
-  // leaves the bracket (the integrand is positive, so at() is increasing).
+  // Start from the cubic Hermite interpolant of u(value) on the cell; Newton, falling back to bisection
+  // when a step leaves the bracket (the integrand is positive, so at() is increasing).
   const double cell = cumulative_[i + 1] - base;
-  double u = cell > 0 ? lo + (hi - lo) * (value - base) / cell : lo;
+  double u = lo;
+  if (cell > 0) {
+    const double t = (value - base) / cell, h00 = (1 + 2 * t) * (1 - t) * (1 - t), h10 = t * (1 - t) * (1 - t),
+                 h01 = t * t * (3 - 2 * t), h11 = t * t * (t - 1);
+    u = h00 * lo + h01 * hi + cell * (h10 / rate_[i] + h11 / rate_[i + 1]);
+    if (!(u > lo && u < hi)) u = lo + (hi - lo) * t;
+  }
   const double tol = 1e-15 * (std::abs(breaks_.back()) + (breaks_.back() - breaks_.front()));
   for (int iter = 0; iter < 60; ++iter) {
     const double g = base + integrate_cell(curve, breaks_[i], u) - value;
+    if (std::abs(g) <= 1e-13 * cumulative_.back()) return u;  // ~1e-11 mm on engine-size streamlines
     if (g > 0) hi = u; else lo = u;
     const double d = integrand(curve, u);
     double next = d > 0 ? u - g / d : 0.5 * (lo + hi);

@@ -7,7 +7,9 @@
 // The domain [a, b] is cut at the knots (the integrand is smooth inside a span) and every span into
 // kCellsPerSpan cells; each cell gets 8-point Gauss-Legendre (exact for polynomials of degree 15, so the
 // error on a smooth cell is far below 1e-12 relative). Values inside a cell are integrated on demand with
-// the same rule; the inverse uses Newton (derivative = integrand) safeguarded by the cell bracket.
+// the same rule; the inverse starts from the cubic Hermite interpolant of u(value) on the cell (slopes
+// 1 / integrand at the cell ends) and polishes it by Newton (derivative = integrand) safeguarded by the
+// cell bracket; the Hermite guess is usually right to rounding, so one cell integral confirms it.
 #include <vector>
 
 #include "src/core/bspline_curve.hpp"
@@ -41,6 +43,7 @@ class CurveIntegral {
   Integrand f_ = Integrand::ArcLength;
   std::vector<double> breaks_;
   std::vector<double> cumulative_;
+  std::vector<double> rate_;  // integrand at every break: the inverse starts from the cubic Hermite guess
 };
 
 }  // namespace cg::blade::detail

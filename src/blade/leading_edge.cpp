@@ -50,6 +50,8 @@ double end_width(const std::vector<Eigen::Vector2d>& p, const Eigen::Vector2d& e
 
 // Least-squares circle: Kasa's algebraic fit (linear in centre and c = R^2 - |centre|^2), then
 // Gauss-Newton on the geometric residuals |p - centre| - R.
+}  // namespace
+
 EdgeCircle fit_circle(const std::vector<Eigen::Vector2d>& p) {
   const auto m = static_cast<Eigen::Index>(p.size());
   Eigen::MatrixXd A(m, 3);
@@ -77,6 +79,8 @@ EdgeCircle fit_circle(const std::vector<Eigen::Vector2d>& p) {
   }
   return {c.head<2>(), c.z()};
 }
+
+namespace {
 
 // The edge circle around sample `end`: within the contiguous run of samples closer than `reach` to it,
 // the stretch turning by kTurn over the shortest arc length.
@@ -132,6 +136,13 @@ LeadingTrailingEdge detect_leading_trailing_edge(const BSplineCurve<2>& c) {
   LeadingTrailingEdge r;
   r.le_circle = edge_circle(s, bi, 0.3 * extent);
   r.te_circle = edge_circle(s, bj, 0.3 * extent);
+  return edge_points(c, r.le_circle, r.te_circle);
+}
+
+LeadingTrailingEdge edge_points(const BSplineCurve<2>& c, const EdgeCircle& le, const EdgeCircle& te) {
+  LeadingTrailingEdge r;
+  r.le_circle = le;
+  r.te_circle = te;
   const Eigen::Vector2d dir = r.le_circle.centre - r.te_circle.centre;
   if (!(dir.norm() > 0))
     throw AlgorithmFailure("LE/TE detection: the leading- and trailing-edge circles have the same centre");

@@ -9,6 +9,7 @@
 // bulges beyond the nose circle, and the farthest point lies on that bulge (C3X: 19 mm from the nose
 // apex, chord 146.7 mm instead of 144.9 mm), as does the extreme point along the chord line.
 #include <Eigen/Core>
+#include <vector>
 
 #include "src/core/bspline_curve.hpp"
 
@@ -19,6 +20,10 @@ struct EdgeCircle {
   Eigen::Vector2d centre = Eigen::Vector2d::Zero();
   double radius = 0;
 };
+
+/// Least-squares circle through points (>= 3): Kasa's algebraic fit, then Gauss-Newton on the geometric
+/// distances |p - centre| - R.
+EdgeCircle fit_circle(const std::vector<Eigen::Vector2d>& points);
 
 struct LeadingTrailingEdge {
   double le_param = 0;
@@ -38,5 +43,9 @@ struct LeadingTrailingEdge {
 /// Throws InvalidGeometry for a non-periodic curve; AlgorithmFailure if the line does not cross the
 /// profile beyond both centres (not a blade-like section).
 LeadingTrailingEdge detect_leading_trailing_edge(const BSplineCurve<2>& closed_curve);
+
+/// Step 3 alone, for known edge circles: LE and TE where the line through both centres leaves the
+/// profile. Throws AlgorithmFailure as above.
+LeadingTrailingEdge edge_points(const BSplineCurve<2>& closed_curve, const EdgeCircle& le, const EdgeCircle& te);
 
 }  // namespace cg::blade

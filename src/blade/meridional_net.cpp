@@ -10,6 +10,7 @@
 #include "src/algo/intersect_curves.hpp"
 #include "src/blade/planar_polyline.hpp"
 #include "src/blade/format.hpp"
+#include "src/core/curve_evaluator.hpp"
 #include "src/core/error.hpp"
 #include "src/fit/interpolate.hpp"
 
@@ -24,7 +25,8 @@ std::string span_name(double span) { return "streamline at span " + fmt(span); }
 // 32 samples per span resolve any dip that matters for the quadrature of dm / r).
 double min_radius(const BSplineCurve<2>& c) {
   double r = std::numeric_limits<double>::infinity();
-  for (double u : detail::sample_params(c, 32)) r = std::min(r, c.point(u).y());
+  CurveEvaluator<2> ev(c);
+  for (double u : detail::sample_params(c, 32)) r = std::min(r, ev.point(u).y());
   return r;
 }
 
@@ -53,7 +55,8 @@ double Streamline::m_prime(double u) const { return mp_.at(curve_, curve_.check_
 
 double Streamline::param_at_m_prime(double m_prime) const {
   const double tol = 1e-12 * (1.0 + mp_.total());
-  require(m_prime >= -tol && m_prime <= mp_.total() + tol,
+  if (!(m_prime >= -tol && m_prime <= mp_.total() + tol))  // (message built only on failure: hot path)
+    throw InvalidGeometry(
           span_name(span_) + ": m' = " + fmt(m_prime) + " is outside the streamline, allowed [0, " +
               fmt(mp_.total()) + "]");
   return mp_.inverse(curve_, m_prime);
@@ -61,7 +64,8 @@ double Streamline::param_at_m_prime(double m_prime) const {
 
 double Streamline::param_at_length(double m) const {
   const double tol = 1e-12 * (1.0 + m_.total());
-  require(m >= -tol && m <= m_.total() + tol, span_name(span_) + ": m = " + fmt(m) +
+  if (!(m >= -tol && m <= m_.total() + tol))
+    throw InvalidGeometry(span_name(span_) + ": m = " + fmt(m) +
                                                   " mm is outside the streamline, allowed [0, " + fmt(m_.total()) + "]");
   return m_.inverse(curve_, m);
 }
@@ -121,6 +125,16 @@ MeridionalNet::MeridionalNet(const MeridionalNetDefinition& def) : samples_(def.
   const double sign = side(streamlines_.front(), streamlines_.back()) > 0 ? 1.0 : -1.0;
   for (std::size_t k = 0; k + 1 < streamlines_.size(); ++k) check_pair(streamlines_[k], streamlines_[k + 1], sign);
 
+  std::vector<double> spans;
+  for (const Streamline& l : streamlines_) {
+    spans.push_back(l.span());
+    std::vector<Eigen::Vector2d> pts(static_cast<std::size_t>(samples_));
+    for (int i = 0; i < samples_; ++i)
+      pts[static_cast<std::size_t>(i)] = l.point(l.param_at_length(l.total_length() * i / (samples_ - 1)));
+    defining_points_.push_back(std::move(pts));
+  }
+  defining_ = detail::SpanSpline(spans);
+
   for (double s : def.interpolated_spans) {
     require(s > 0 && s < 1, "meridional net: interpolated span " + fmt(s) + " must lie in (0, 1)");
     if (std::any_of(streamlines_.begin(), streamlines_.end(),
@@ -152,19 +166,10 @@ MeridionalNet::MeridionalNet(const MeridionalNetDefinition& def) : samples_(def.
 Streamline MeridionalNet::streamline_at(double span) const {
   for (const Streamline& l : streamlines_)
     if (std::abs(l.span() - span) <= 1e-12) return l;
-  // Neighbouring pair (the end pair outside [0, 1]).
-  std::size_t k = 0;
-  while (k + 2 < streamlines_.size() && streamlines_[k + 1].span() < span) ++k;
-  const Streamline& a = streamlines_[k];
-  const Streamline& b = streamlines_[k + 1];
-  const double w = (span - a.span()) / (b.span() - a.span());
-  std::vector<Eigen::Vector2d> pts(static_cast<std::size_t>(samples_));
-  for (int i = 0; i < samples_; ++i) {
-    const double t = static_cast<double>(i) / (samples_ - 1);
-    const Eigen::Vector2d pa = a.point(a.param_at_length(t * a.total_length()));
-    const Eigen::Vector2d pb = b.point(b.param_at_length(t * b.total_length()));
-    pts[static_cast<std::size_t>(i)] = (1 - w) * pa + w * pb;
-  }
+  const std::vector<double> w = defining_.weights(span);
+  std::vector<Eigen::Vector2d> pts(static_cast<std::size_t>(samples_), Eigen::Vector2d::Zero());
+  for (std::size_t k = 0; k < w.size(); ++k)
+    for (std::size_t i = 0; i < pts.size(); ++i) pts[i] += w[k] * defining_points_[k][i];
   const std::string name = span_name(span);
   return Streamline(meridional_curve(pts, name.c_str()), span);
 }

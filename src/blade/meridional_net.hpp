@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "src/blade/curve_integral.hpp"
+#include "src/blade/span_spline.hpp"
 #include "src/core/bspline_curve.hpp"
 
 namespace cg::blade {
@@ -97,9 +98,11 @@ class MeridionalNet {
   const Streamline& hub() const { return streamlines_.front(); }
   const Streamline& casing() const { return streamlines_.back(); }
 
-  /// Streamline at any span fraction: points at equal normalised meridional length are blended linearly
-  /// between the two neighbouring streamlines (linear extrapolation from the end pair outside [0, 1],
-  /// used for the over-build) and interpolated. Returns the stored streamline when span matches one.
+  /// Streamline at any span fraction: points at equal normalised meridional length on the defining
+  /// streamlines (hub, explicit streamlines, casing) are blended by the natural cubic spline over span
+  /// through them (span_spline.hpp: linear for hub and casing alone; smooth in span, so blade sections
+  /// between streamlines vary smoothly too; linear continuation outside [0, 1], used for the
+  /// over-build) and interpolated. Returns the stored streamline when span matches one.
   Streamline streamline_at(double span) const;
 
   const std::optional<QuasiOrthogonal>& leading_edge() const { return leading_edge_; }
@@ -111,6 +114,9 @@ class MeridionalNet {
   std::optional<QuasiOrthogonal> leading_edge_, trailing_edge_;
   std::vector<QuasiOrthogonal> stations_;
   int samples_ = 129;
+  // Defining streamlines: their spans and their points at equal normalised meridional length.
+  detail::SpanSpline defining_;
+  std::vector<std::vector<Eigen::Vector2d>> defining_points_;
 };
 
 /// Curve through the points in order (cubic, or degree n-1 for n < 4 points; chord-length parameters).

@@ -7,6 +7,10 @@
 #include <string>
 
 #include "src/analyze/arc_length.hpp"
+#include "src/algo/project_point_curve.hpp"
+#include "src/blade/chordwise.hpp"
+#include "src/blade/edge_arcs.hpp"
+#include "src/blade/format.hpp"
 #include "src/blade/curve_integral.hpp"
 #include "src/blade/leading_edge.hpp"
 #include "src/blade/periodic_seam.hpp"
@@ -16,32 +20,6 @@
 
 namespace cg::blade {
 namespace {
-
-double suction_end(const SectionProfile& s) {
-  double te = s.te_param;
-  while (te <= s.le_param) te += s.curve.period();
-  return te;
-}
-
-// Arc length along the closed curve continued across the seam: the analyze table covers one period
-// [first, last]; a parameter k periods further adds k perimeters.
-class WrappedArcLength {
- public:
-  explicit WrappedArcLength(const BSplineCurve<2>& c) : table_(c), first_(c.first_param()), period_(c.period()) {}
-  double perimeter() const { return table_.total(); }
-  double length_to(double u) const {
-    const double k = std::floor((u - first_) / period_);
-    return table_.length_to(std::clamp(u - k * period_, first_, first_ + period_)) + k * table_.total();
-  }
-  double param_at(double s) const {
-    const double k = std::floor(s / table_.total());
-    return table_.param_at(std::clamp(s - k * table_.total(), 0.0, table_.total())) + k * period_;
-  }
-
- private:
-  ArcLength<2> table_;  // refers to the curve, which outlives this local helper
-  double first_, period_;
-};
 
 void require_simple_polygon(const std::vector<Eigen::Vector2d>& pts, const std::string& what) {
   int a = 0, b = 0;
@@ -64,42 +42,110 @@ SectionProfile make_profile(const BSplineCurve<2>& curve, double le, double te) 
   return s;
 }
 
+// Index of the point nearest to q.
+int nearest(const std::vector<Eigen::Vector2d>& pts, const Eigen::Vector2d& q) {
+  std::size_t best = 0;
+  for (std::size_t i = 1; i < pts.size(); ++i)
+    if ((pts[i] - q).squaredNorm() < (pts[best] - q).squaredNorm()) best = i;
+  return static_cast<int>(best);
+}
+
+// The edge circles of the given points (edge_arcs.hpp) and, where the spline sags off one (or a hint
+// asks for it), the profile rebuilt to follow it exactly.
+SectionProfile with_edge_arcs(SectionProfile s, const std::vector<Eigen::Vector2d>& pts, const PointSectionDefinition& def,
+                              int le_index, int te_index, const std::string& what) {
+  const int n = static_cast<int>(pts.size());
+  struct Edge {
+    const char* name;
+    detail::EdgeCircleHint hint;
+    detail::EdgeCircleRun run;
+    bool arc = false;
+  };
+  Edge edges[2] = {{"le", {def.le_radius, def.le_centre}, {}, false}, {"te", {def.te_radius, def.te_centre}, {}, false}};
+  const Eigen::Vector2d ends[2] = {s.le, s.te};
+  std::vector<detail::EdgeCircleRun> arcs;
+  for (int e = 0; e < 2; ++e) {
+    Edge& E = edges[e];
+    // An edge circle is at most a quarter of the chord in radius (hints are taken as given).
+    const double max_radius = E.hint.given() ? HUGE_VAL : 0.25 * s.chord();
+    E.run = detail::find_edge_circle(pts, nearest(pts, ends[e]), E.hint, max_radius);
+    if (!E.run.found) {
+      if (E.hint.given())
+        throw InvalidGeometry(what + ": " + E.name + "_radius/" + E.name + "_centre: no " +
+                              (E.hint.centre ? "2" : "3") + " consecutive points at the " +
+                              (e == 0 ? "leading" : "trailing") + " edge lie on that circle within " +
+                              detail::fmt(detail::kOnCircleTolerance) + " mm");
+      continue;
+    }
+    // The sag due to sparse points alone: the same spline through the run's points moved onto the circle
+    // (so scatter of the points, e.g. C3X's LE within 1.3 um of its circle, does not count), measured
+    // in the middle half of the run (near its ends the spline meets the sides' curvature whatever the
+    // spacing, and the wiggle this makes decays by ~3.7x per interval into the run).
+    std::vector<Eigen::Vector2d> q = pts;
+    for (int k = 0; k < E.run.count; ++k) {
+      Eigen::Vector2d& x = q[static_cast<std::size_t>((E.run.first + k) % n)];
+      x = E.run.circle.centre + E.run.circle.radius * (x - E.run.circle.centre).normalized();
+    }
+    const std::vector<double> t = interpolation_parameters<2>(q, ParamMethod::Centripetal, true);
+    const BSplineCurve<2> plain = interpolate_closed<2>(q, 3, ParamMethod::Centripetal);
+    const int inset = E.run.count / 4;  // the spline's wiggle from a junction decays ~3.7x per interval
+    const double a = t[static_cast<std::size_t>((E.run.first + inset) % n)],
+                 b0 = t[static_cast<std::size_t>((E.run.first + E.run.count - 1 - inset) % n)];
+    const double sag = detail::deviation_from_circle(plain, a, b0 > a ? b0 : b0 + plain.period(), E.run.circle);
+    E.arc = E.hint.given() || sag > detail::kArcSagTolerance;
+    if (E.arc) arcs.push_back(E.run);
+  }
+  if (arcs.size() == 2) {
+    const auto& r0 = arcs[0];
+    const auto& r1 = arcs[1];
+    auto inside = [&](const detail::EdgeCircleRun& r, int i) { return ((i - r.first) % n + n) % n < r.count; };
+    require(!inside(r0, r1.first) && !inside(r1, r0.first),
+            what + ": the leading- and trailing-edge circles share given points; give le_radius/te_radius");
+  }
+  if (!arcs.empty()) {
+    const BSplineCurve<2> curve = detail::profile_with_arcs(pts, arcs);
+    LeadingTrailingEdge d;
+    if (le_index >= 0) {
+      CurveProjector<2> proj(curve);
+      d.le_param = proj.project(pts[static_cast<std::size_t>(le_index)]).param;
+      d.te_param = proj.project(pts[static_cast<std::size_t>(te_index)]).param;
+    } else {
+      const LeadingTrailingEdge fitted = detect_leading_trailing_edge(curve);
+      d = edge_points(curve, edges[0].run.found ? edges[0].run.circle : fitted.le_circle,
+                      edges[1].run.found ? edges[1].run.circle : fitted.te_circle);
+    }
+    const EdgeCircle le_c = s.le_circle, te_c = s.te_circle;
+    s = make_profile(curve, d.le_param, d.te_param);
+    s.le_circle = le_c;
+    s.te_circle = te_c;
+  }
+  if (edges[0].run.found) s.le_circle = edges[0].run.circle, s.le_circle_points = edges[0].run.count;
+  if (edges[1].run.found) s.te_circle = edges[1].run.circle, s.te_circle_points = edges[1].run.count;
+  s.le_arc = edges[0].arc;
+  s.te_arc = edges[1].arc;
+  return s;
+}
+
 }  // namespace
 
-double SectionProfile::suction_length() const {
-  const WrappedArcLength L(curve);
-  return L.length_to(suction_end(*this)) - L.length_to(le_param);
-}
+double SectionProfile::suction_length() const { return ChordwiseMap<2>(curve, le_param, te_param).suction_length(); }
 
-double SectionProfile::pressure_length() const {
-  const WrappedArcLength L(curve);
-  return L.perimeter() - (L.length_to(suction_end(*this)) - L.length_to(le_param));
-}
+double SectionProfile::pressure_length() const { return ChordwiseMap<2>(curve, le_param, te_param).pressure_length(); }
 
 std::vector<double> SectionProfile::params_at_chordwise(const std::vector<double>& c) const {
-  const double te = suction_end(*this);
-  const WrappedArcLength L(curve);
-  const double at_le = L.length_to(le_param), suction = L.length_to(te) - at_le;
-  const double pressure = L.perimeter() - suction;
+  const ChordwiseMap<2> map(curve, le_param, te_param);
   std::vector<double> out(c.size());
-  for (std::size_t k = 0; k < c.size(); ++k) {
-    const double ck = c[k];
-    require(ck >= -1 && ck <= 1, "chordwise coordinate " + std::to_string(ck) + " is outside [-1, 1]");
-    if (ck == 0)
-      out[k] = le_param;
-    else if (ck == 1 || ck == -1)
-      out[k] = te;  // exactly the TE, not its arc-length image
-    else if (ck > 0)
-      out[k] = L.param_at(at_le + ck * suction);
-    else
-      out[k] = L.param_at(at_le + suction + (1 + ck) * pressure);
-  }
+  for (std::size_t k = 0; k < c.size(); ++k) out[k] = map.param_at(c[k]);
   return out;
 }
 
-double SectionProfile::param_at_chordwise(double c) const { return params_at_chordwise({c}).front(); }
+double SectionProfile::param_at_chordwise(double c) const { return ChordwiseMap<2>(curve, le_param, te_param).param_at(c); }
 
-SectionProperties section_properties(const BSplineCurve<2>& curve) {
+double SectionProfile::chordwise_at_param(double u) const {
+  return ChordwiseMap<2>(curve, le_param, te_param).chordwise_at(u);
+}
+
+SectionProperties section_properties(const BSplineCurve<2>& curve, bool with_perimeter) {
   SectionProperties r;
   double a2 = 0, mx = 0, my = 0;  // 2A, integral of x dA, integral of y dA (Green's theorem)
   const auto& U = curve.knots();
@@ -120,7 +166,7 @@ SectionProperties section_properties(const BSplineCurve<2>& curve) {
   }
   r.area = 0.5 * a2;
   if (r.area != 0) r.centroid = Eigen::Vector2d(mx, my) / r.area;
-  r.perimeter = arc_length(curve);
+  if (with_perimeter) r.perimeter = arc_length(curve);
   return r;
 }
 
@@ -146,17 +192,24 @@ SectionProfile section_from_points(const PointSectionDefinition& def) {
   require_simple_polygon(pts, what);
 
   int le_index = def.le_index, te_index = def.te_index;
+  SectionProfile s;
   for (int attempt = 0; attempt < 2; ++attempt) {
     const std::vector<double> params = interpolation_parameters<2>(pts, ParamMethod::Centripetal, true);
     const BSplineCurve<2> curve = interpolate_closed<2>(pts, 3, ParamMethod::Centripetal);
     LeadingTrailingEdge d;
     if (le_index >= 0) {
+      try {
+        d = detect_leading_trailing_edge(curve);  // for its edge circles (reported)
+      } catch (const Error&) {
+      }
       d.le_param = curve.check_param(params[static_cast<std::size_t>(le_index)]);
       d.te_param = curve.check_param(params[static_cast<std::size_t>(te_index)]);
     } else {
       d = detect_leading_trailing_edge(curve);
     }
-    SectionProfile s = make_profile(curve, d.le_param, d.te_param);
+    s = make_profile(curve, d.le_param, d.te_param);
+    s.le_circle = d.le_circle;
+    s.te_circle = d.te_circle;
     // Side A is reached from the LE with increasing u; it is the suction side or the points are reversed.
     const double la = s.suction_length(), lb = s.pressure_length();
     const bool ccw = section_properties(curve).area > 0;
@@ -166,11 +219,11 @@ SectionProfile section_from_points(const PointSectionDefinition& def) {
       case SuctionSide::CounterClockwise: a_is_suction = ccw; break;
       case SuctionSide::Clockwise: a_is_suction = !ccw; break;
     }
-    if (a_is_suction || attempt == 1) return s;
+    if (a_is_suction || attempt == 1) break;
     std::reverse(pts.begin(), pts.end());
     if (le_index >= 0) le_index = n - 1 - le_index, te_index = n - 1 - te_index;
   }
-  throw AlgorithmFailure(what + ": orientation could not be fixed");  // unreachable: attempt 1 returns
+  return with_edge_arcs(s, pts, def, le_index, te_index, what);
 }
 
 }  // namespace cg::blade

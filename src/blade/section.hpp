@@ -11,9 +11,11 @@
 //    See blade_surface.hpp for the scaling to the LE/TE lines.
 #include <Eigen/Core>
 #include <iosfwd>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "src/blade/leading_edge.hpp"
 #include "src/core/bspline_curve.hpp"
 
 namespace cg::blade {
@@ -53,6 +55,11 @@ struct PointSectionDefinition {
   int le_index = -1;
   int te_index = -1;
   SuctionSide suction_side = SuctionSide::Longer;
+  /// Optional edge-circle hints (mm, section frame): the LE/TE circle's radius (0 = not given) and/or
+  /// centre. With a hint the points on that circle are found with it and the profile follows the
+  /// circle exactly (see section_from_points).
+  double le_radius = 0, te_radius = 0;
+  std::optional<Eigen::Vector2d> le_centre, te_centre;
 };
 
 /// A section from camber line and thickness. Angles in degrees, measured in the section frame from the
@@ -90,22 +97,39 @@ struct SectionProfile {
   Eigen::Vector2d chord_direction = Eigen::Vector2d::UnitX();
   /// True chord |te - le| (te - le is along chord_direction).
   double chord() const { return (te - le).dot(chord_direction); }
+  /// Edge circles: fitted to the curve at both ends (leading_edge.hpp), or the circle the given points
+  /// lie on at that end (point sections, see section_from_points), or the hinted circle.
+  EdgeCircle le_circle, te_circle;
+  /// Point sections: number of given points found on each edge circle (0 = none detected), and whether
+  /// the profile follows that circle as an exact rational arc between them.
+  int le_circle_points = 0, te_circle_points = 0;
+  bool le_arc = false, te_arc = false;
   /// Curve parameter at a chordwise coordinate c in [-1, 1]: c in [0, 1] runs from the LE over the
   /// suction side to the TE at fraction c of that side's arc length; c in [-1, 0] likewise over the
-  /// pressure side (c = -1 is the TE again). Arc lengths and their inverse: src/analyze/arc_length.hpp.
+  /// pressure side (c = -1 is the TE again). The one definition of the chordwise coordinate, shared
+  /// with the 3D sections of the wall: src/blade/chordwise.hpp.
   double param_at_chordwise(double c) const;
   /// Batched form (the arc-length tables are built once). Parameters lie in [le_param, le_param + period].
   std::vector<double> params_at_chordwise(const std::vector<double>& c) const;
+  /// Inverse: chordwise coordinate of curve parameter u.
+  double chordwise_at_param(double u) const;
   double suction_length() const;
   double pressure_length() const;
 };
 
 /// Closed periodic cubic interpolation of the points (centripetal parameters), reproducing them exactly.
-/// LE/TE unless indices are given: the maximum-distance definition (leading_edge.hpp): TE = the point of
-/// the thinner end farthest from the LE, LE = the point of the curve farthest from the TE (solved on the
-/// curve by Newton), chord = |LE - TE|. With indices, LE and TE are those data points. The curve's seam
-/// is then moved to the LE (le_param = 0, period 1). Throws InvalidGeometry for < 4 points, coincident
-/// consecutive points or a self-intersecting polygon.
+/// LE/TE unless indices are given: the edge-circle definition (leading_edge.hpp): the chord line joins
+/// the centres of the circles fitted at both ends, LE and TE are where it leaves the profile, chord =
+/// |LE - TE|. With indices, LE and TE are those data points. The curve's seam is then moved to the LE
+/// (le_param = 0, period 1).
+/// Edge circles of sparse tables (edge_arcs.hpp): around each edge the longest run of consecutive points
+/// on one circle (>= 4 points within 0.005 mm; >= 3 with a radius hint; >= 2 with a centre hint) is
+/// found. Where the spline through the points leaves that circle by more than 0.002 mm between them (or
+/// a hint is given), the profile follows the circle exactly there (rational arc, G1 to splines through
+/// the other points); otherwise (dense tables such as C3X) the spline through every point is kept. The
+/// circles found are reported in le_circle/te_circle with their point counts.
+/// Throws InvalidGeometry for < 4 points, coincident consecutive points, a self-intersecting polygon,
+/// or a hint that no run of given points fits.
 SectionProfile section_from_points(const PointSectionDefinition& def);
 
 /// The parametric section. Throws InvalidGeometry for chord/thickness/radii <= 0, angles out of range,
@@ -119,6 +143,7 @@ struct SectionProperties {
   Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
   double perimeter = 0;
 };
-SectionProperties section_properties(const BSplineCurve<2>& closed_curve);
+/// with_perimeter = false skips the arc length (perimeter stays 0).
+SectionProperties section_properties(const BSplineCurve<2>& closed_curve, bool with_perimeter = true);
 
 }  // namespace cg::blade

@@ -99,7 +99,8 @@ SectionProfile section_from_parameters(const ParametricSectionDefinition& d) {
   double prev = -1;
   for (int k = 0; k <= 200; ++k) {
     const double x = (camber.point(k / 200.0) - P0).dot(chord_dir);
-    require(x > prev, what + ": the camber line turns back along the chord; reduce the inlet/outlet angle difference");
+    if (!(x > prev))
+      throw InvalidGeometry(what + ": the camber line turns back along the chord; reduce the inlet/outlet angle difference");
     prev = x;
   }
   double lo = 0, hi = 1;
@@ -129,15 +130,18 @@ SectionProfile section_from_parameters(const ParametricSectionDefinition& d) {
   for (int k = 1; k < 2000; ++k) {
     const double t = k / 2000.0;
     const double h = half_thickness(t);
-    require(h > 0, what + ": the thickness distribution becomes non-positive at " + fmt(t) +
-                       " of the camber line; adjust max_thickness, its position or the LE/TE radii");
-    require(h <= 0.5 * d.max_thickness * (1 + 1e-6),
-            what + ": the thickness exceeds max_thickness away from max_thickness_position (the LE/TE radii are too "
-                   "large for this position)");
+    // (messages built only on failure: this loop runs for every section of the blade)
+    if (!(h > 0))
+      throw InvalidGeometry(what + ": the thickness distribution becomes non-positive at " + fmt(t) +
+                            " of the camber line; adjust max_thickness, its position or the LE/TE radii");
+    if (!(h <= 0.5 * d.max_thickness * (1 + 1e-6)))
+      throw InvalidGeometry(what + ": the thickness exceeds max_thickness away from max_thickness_position (the "
+                                   "LE/TE radii are too large for this position)");
     const auto cd = camber.derivatives(t, 2);
     const double kappa = (cd[1].x() * cd[2].y() - cd[1].y() * cd[2].x()) / std::pow(cd[1].norm(), 3);
-    require(1 - h * std::abs(kappa) > 0, what + ": the thickness exceeds the camber line's radius of curvature at " +
-                                             fmt(t) + " of the camber line (the surface would fold)");
+    if (!(1 - h * std::abs(kappa) > 0))
+      throw InvalidGeometry(what + ": the thickness exceeds the camber line's radius of curvature at " + fmt(t) +
+                            " of the camber line (the surface would fold)");
   }
 
   // Sample phi uniformly (t = (1 - cos phi) / 2 clusters points at both tips), suction side phi in [0, pi].
@@ -164,6 +168,10 @@ SectionProfile section_from_parameters(const ParametricSectionDefinition& d) {
   s.le = curve.point(s.le_param);
   s.te = curve.point(s.te_param);
   s.chord_direction = (s.te - s.le).normalized();
+  // The tip circles of the construction: radius le_radius / te_radius, centred on the camber line's end
+  // tangent (exact for a straight camber line, to leading order otherwise; see section.hpp).
+  s.le_circle = {s.le + d.le_radius * d0, d.le_radius};
+  s.te_circle = {s.te - d.te_radius * d3, d.te_radius};
   return s;
 }
 

@@ -11,7 +11,12 @@
 #include <Message_Report.hxx>
 #include <Precision.hxx>
 #include <ShapeAnalysis_FreeBounds.hxx>
+#include <ShapeFix_Face.hxx>
 #include <ShapeFix_Shell.hxx>
+#include <Geom2d_BSplineCurve.hxx>
+#include <TopoDS_Wire.hxx>
+#include <TopoDS_Vertex.hxx>
+#include <gp_Pnt2d.hxx>
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TColgp_Array1OfPnt.hxx>
@@ -25,10 +30,16 @@
 #include <gp_Pln.hxx>
 
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 #include "adaptors/occt_convert.hpp"
+#include "src/algo/project_point_curve.hpp"
+#include "src/blade/surface_iso.hpp"
 #include "src/brep/occt_progress.hpp"
+#include "src/fit/interpolate.hpp"
+#include "src/modify/periodic_conversion.hpp"
+#include "src/modify/reparametrize.hpp"
 #include "src/core/error.hpp"
 
 namespace cg::brep {
@@ -100,12 +111,11 @@ Sector blade_sector(const BSplineSurface<3>& s, const PoleBox& box) {
 // angular sector only: a smaller face makes the general fuse ~2.5x faster than a full revolution.
 // The basis curve lies at angle sector.start (for a full revolution that is the seam, opposite the
 // blade, so the end face cut out of it carries no seam).
-TopoDS_Face revolved_face(const RevolvedTrim& t, const Sector& sector, const char* which) {
+Handle(Geom_SurfaceOfRevolution) revolved_surface(const RevolvedTrim& t, double theta0, const char* which) {
   const BSplineCurve<2>& c = t.meridional;
   require(c.num_poles() >= 2, std::string(which) + " meridional curve needs at least 2 poles");
   require(!c.is_periodic(), std::string(which) + " meridional curve must not be periodic");
   std::vector<Eigen::Vector3d> poles;
-  const double theta0 = sector.start;
   for (int i = 0; i < c.num_poles(); ++i) {
     const Eigen::Vector2d q = c.pole(i);
     require(q.allFinite() && q.y() > 0.0, std::string(which) + " meridional curve: pole " + std::to_string(i) +
@@ -113,7 +123,12 @@ TopoDS_Face revolved_face(const RevolvedTrim& t, const Sector& sector, const cha
     poles.emplace_back(q.x(), q.y() * std::cos(theta0), q.y() * std::sin(theta0));
   }
   const BSplineCurve<3> c3(c.degree(), c.knots(), poles, c.is_rational() ? c.weights() : std::vector<double>{});
-  Handle(Geom_SurfaceOfRevolution) rev = new Geom_SurfaceOfRevolution(occt::to_occt(c3), gp_Ax1(gp::Origin(), gp::DX()));
+  return new Geom_SurfaceOfRevolution(occt::to_occt(c3), gp_Ax1(gp::Origin(), gp::DX()));
+}
+
+TopoDS_Face revolved_face(const RevolvedTrim& t, const Sector& sector, const char* which) {
+  const BSplineCurve<2>& c = t.meridional;
+  const Handle(Geom_SurfaceOfRevolution) rev = revolved_surface(t, sector.start, which);
   BRepBuilderAPI_MakeFace mk = sector.width >= 2 * kPi
                                    ? BRepBuilderAPI_MakeFace(rev, Precision::Confusion())
                                    : BRepBuilderAPI_MakeFace(rev, 0.0, sector.width, c.first_param(), c.last_param(),
@@ -178,6 +193,177 @@ std::string joined(const std::vector<std::string>& v) {
   return s;
 }
 
+// The wall and the end faces (sharing their edges) as one closed, consistently oriented solid with
+// outward normals; every face named by the surface it lies on.
+BladeSolid close_solid(const TopoDS_Face& wall, const std::vector<TopoDS_Face>& hub_ends,
+                       const std::vector<TopoDS_Face>& casing_ends, const Handle(Geom_Surface)& wall_s,
+                       const Handle(Geom_Surface)& hub_s, const Handle(Geom_Surface)& casing_s) {
+  TopoDS_Shell shell;
+  BRep_Builder bb;
+  bb.MakeShell(shell);
+  bb.Add(shell, wall);
+  for (const auto& f : hub_ends) bb.Add(shell, f);
+  for (const auto& f : casing_ends) bb.Add(shell, f);
+
+  ShapeAnalysis_FreeBounds free_bounds(shell);
+  int free_edges = 0;
+  for (const TopoDS_Shape* w : {&free_bounds.GetClosedWires(), &free_bounds.GetOpenWires()})
+    for (TopExp_Explorer e(*w, TopAbs_EDGE); e.More(); e.Next()) ++free_edges;
+  if (free_edges > 0)
+    throw AlgorithmFailure("the trimmed blade shell is open: " + std::to_string(free_edges) + " free edges");
+
+  // Orient the faces consistently (the wall and the end faces come with their surfaces' normals).
+  ShapeFix_Shell fix;
+  fix.FixFaceOrientation(shell, /*isAccountMultiConex=*/true, /*NonManifold=*/false);
+  if (fix.NbShells() != 1) throw AlgorithmFailure("the trimmed blade faces do not form one shell");
+  TopoDS_Solid solid;
+  bb.MakeSolid(solid);
+  bb.Add(solid, fix.Shell());
+  BRepLib::OrientClosedSolid(solid);  // outward normals: positive volume
+
+  BladeSolid out;
+  out.solid = solid;
+  for (TopExp_Explorer e(solid, TopAbs_FACE); e.More(); e.Next()) {
+    const TopoDS_Face f = TopoDS::Face(e.Current());
+    const Handle(Geom_Surface) s = BRep_Tool::Surface(f);
+    const char* name = s == wall_s ? kWallFaceName : s == hub_s ? kHubFaceName : s == casing_s ? kCasingFaceName : nullptr;
+    if (!name) throw AlgorithmFailure("a face of the blade solid lies on none of the blade, hub and casing surfaces");
+    out.faces.push_back({f, name});
+  }
+  return out;
+}
+
+// ---- Trimming along the wall's own iso-curves -------------------------------------------------------
+// A blade model's wall has its sections at v = 0 and v = 1 on the hub and casing (within the surface
+// tolerance): the wall face is then the surface restricted to v in [0, 1] (its edges are exact iso-
+// curves with straight pcurves), and each end face is the trim surface bounded by that same edge. No
+// intersection curves are computed, so the edges stay as light as the wall (a general fuse makes
+// boundary curves of ~600 poles, which every later check and boolean pays for).
+
+// Distance of the iso-curve v = const from the trim surface, 16 samples per knot span.
+double iso_deviation(const BSplineCurve<3>& iso, const EndTrim& trim) {
+  double worst = 0;
+  const int m = 16 * (iso.num_period_poles() + 1);
+  std::optional<CurveProjector<2>> proj;
+  if (const auto* r = std::get_if<RevolvedTrim>(&trim)) proj.emplace(r->meridional);
+  for (int i = 0; i < m; ++i) {
+    const Eigen::Vector3d p = iso.point(iso.first_param() + iso.period() * i / m);
+    if (const auto* pl = std::get_if<PlaneTrim>(&trim))
+      worst = std::max(worst, std::abs((p - pl->point).dot(pl->normal.normalized())));
+    else
+      worst = std::max(worst, proj->project(Eigen::Vector2d(p.x(), std::hypot(p.y(), p.z()))).distance);
+  }
+  return worst;
+}
+
+// The pcurve (U = angle from theta0, V = meridional parameter) of the closed iso-curve on the surface of
+// revolution of `meridional`: the iso-curve's foot points on that surface in (U, V), interpolated at the
+// same parameter as the iso-curve (so the edge stays same-parameter) at its knots and 1, 2, 4 ... points
+// per knot span until, halfway between the points, the pcurve's image is within `target` of the foot
+// point there (or 32 per span); `deviation` is that distance. (The iso-curve's own distance from the surface
+// is the edge tolerance's other part, measured by iso_deviation.)
+Handle(Geom2d_BSplineCurve) revolved_pcurve(const BSplineCurve<3>& iso, const BSplineCurve<2>& meridional,
+                                            double theta0, double target, double& deviation) {
+  CurveProjector<2> proj(meridional);
+  const double a = iso.first_param(), T = iso.period();
+  auto uv = [&](double u) {
+    const Eigen::Vector3d p = iso.point(u);
+    const CurveProjection<2> f = proj.project(Eigen::Vector2d(p.x(), std::hypot(p.y(), p.z())));
+    return Eigen::Vector2d(std::remainder(std::atan2(p.z(), p.y()) - theta0 - kPi, 2 * kPi) + kPi, f.param);
+  };
+  auto on_surface = [&](const Eigen::Vector2d& q) {
+    const Eigen::Vector2d xr = meridional.point(meridional.check_param(q.y()));
+    const double th = theta0 + q.x();
+    return Eigen::Vector3d(xr.x(), xr.y() * std::cos(th), xr.y() * std::sin(th));
+  };
+  // The iso-curve's distinct knots in one period: (U, V) of its points is smooth between them, so the
+  // pcurve's knots are these, each span cut into equal parts (odd degree: knots at the data).
+  std::vector<double> breaks;
+  for (double k : iso.knots())
+    if (k >= a && k < a + T && (breaks.empty() || k > breaks.back())) breaks.push_back(k);
+  BSplineCurve<2> pc;
+  for (int per_span = 1;; per_span *= 2) {
+    std::vector<double> params;
+    std::vector<Eigen::Vector2d> pts;
+    for (std::size_t i = 0; i < breaks.size(); ++i) {
+      const double lo = breaks[i], hi = i + 1 < breaks.size() ? breaks[i + 1] : a + T;
+      for (int j = 0; j < per_span; ++j) {
+        params.push_back((lo + (hi - lo) * j / per_span - a) / T);
+        pts.push_back(uv(a + T * params.back()));
+      }
+    }
+    pc = reparametrized(interpolate_closed<2>(pts, 3, params, params), a, a + T);
+    deviation = 0;
+    for (std::size_t i = 0; i < params.size(); ++i) {
+      const double u = a + T * 0.5 * (params[i] + (i + 1 < params.size() ? params[i + 1] : 1.0));
+      deviation = std::max(deviation, (on_surface(pc.point(u)) - on_surface(uv(u))).norm());
+    }
+    if (deviation <= target || per_span >= 32) break;
+  }
+  // Non-periodic form, as OCCT's own intersection pcurves.
+  return occt::to_occt(to_non_periodic(pc));
+}
+
+// The end face on `trim` bounded by the closed wall edge `edge` (the iso-curve `iso`); sets the edge's
+// and its vertex's tolerance to `tol` (the iso-curve's distance from the trim, with a margin) plus the
+// pcurve's own error.
+TopoDS_Face end_face(const EndTrim& trim, const TopoDS_Edge& edge, const BSplineCurve<3>& iso, double theta0,
+                     double tol, const char* which) {
+  BRep_Builder bb;
+  TopoDS_Wire wire;
+  bb.MakeWire(wire);
+  bb.Add(wire, edge);
+  if (const auto* pl = std::get_if<PlaneTrim>(&trim)) {
+    const Eigen::Vector3d n = pl->normal.normalized();
+    bb.UpdateEdge(edge, tol);
+    for (TopExp_Explorer v(edge, TopAbs_VERTEX); v.More(); v.Next()) bb.UpdateVertex(TopoDS::Vertex(v.Current()), tol);
+    BRepBuilderAPI_MakeFace mk(gp_Pln(gp_Pnt(pl->point.x(), pl->point.y(), pl->point.z()), gp_Dir(n.x(), n.y(), n.z())),
+                               wire, /*Inside=*/true);
+    if (!mk.IsDone()) throw AlgorithmFailure(std::string("cannot make the ") + which + " end face");
+    return mk.Face();
+  }
+  const RevolvedTrim& r = std::get<RevolvedTrim>(trim);
+  const Handle(Geom_SurfaceOfRevolution) rev = revolved_surface(r, theta0, which);
+  double dev = 0;
+  // The pcurve adds at most a tenth of the edge's own tolerance.
+  const Handle(Geom2d_BSplineCurve) pc = revolved_pcurve(iso, r.meridional, theta0, 0.1 * tol, dev);
+  tol += 1.5 * dev;
+  bb.UpdateEdge(edge, pc, rev, TopLoc_Location(), tol);
+  for (TopExp_Explorer v(edge, TopAbs_VERTEX); v.More(); v.Next()) bb.UpdateVertex(TopoDS::Vertex(v.Current()), tol);
+  BRepBuilderAPI_MakeFace mk(rev, wire, /*Inside=*/true);
+  if (!mk.IsDone()) throw AlgorithmFailure(std::string("cannot make the ") + which + " end face");
+  return mk.Face();
+}
+
+BladeSolid iso_trimmed_solid(const BSplineSurface<3>& surface, const EndTrim& hub, const EndTrim& casing,
+                             double hub_dev, double casing_dev, const BSplineCurve<3>& hub_iso,
+                             const BSplineCurve<3>& casing_iso) {
+  const PoleBox box = pole_box(surface);
+  const Sector sector = blade_sector(surface, box);
+  const Handle(Geom_BSplineSurface) gs = occt::to_occt(surface);
+  BRepBuilderAPI_MakeFace mk(gs, surface.first_u(), surface.last_u(), 0.0, 1.0, Precision::Confusion());
+  if (!mk.IsDone()) throw AlgorithmFailure("cannot make the blade wall face");
+  const TopoDS_Face wall = mk.Face();
+  TopoDS_Edge bottom, top;
+  for (TopExp_Explorer e(wall, TopAbs_EDGE); e.More(); e.Next()) {
+    const TopoDS_Edge edge = TopoDS::Edge(e.Current());
+    if (BRep_Tool::IsClosed(edge, wall)) continue;  // the seam
+    double a = 0, b = 0;
+    const gp_Pnt2d mid = BRep_Tool::CurveOnSurface(edge, wall, a, b)->Value(0.5 * (a + b));
+    (std::abs(mid.Y()) < 0.5 ? bottom : top) = edge;
+  }
+  if (bottom.IsNull() || top.IsNull()) throw AlgorithmFailure("the blade wall face has no end edges at v = 0 and 1");
+  const double floor_tol = Precision::Confusion();
+  const TopoDS_Face hub_face =
+      end_face(hub, bottom, hub_iso, sector.start, std::max(floor_tol, 1.5 * hub_dev), "hub");
+  const TopoDS_Face casing_face =
+      end_face(casing, top, casing_iso, sector.start, std::max(floor_tol, 1.5 * casing_dev), "casing");
+  BladeSolid out = close_solid(wall, {hub_face}, {casing_face}, BRep_Tool::Surface(wall),
+                               BRep_Tool::Surface(hub_face), BRep_Tool::Surface(casing_face));
+  out.trimmed_along_iso_curves = true;
+  return out;
+}
+
 }  // namespace
 
 BladeSolid build_blade_solid(const BSplineSurface<3>& surface, const EndTrim& hub, const EndTrim& casing,
@@ -228,41 +414,9 @@ BladeSolid build_blade_solid(const BSplineSurface<3>& surface, const EndTrim& hu
     throw AlgorithmFailure(std::string("the ") + (hub_ends.empty() ? "hub" : "casing") +
                            " trim does not close the blade section (does its meridional curve cover the blade's axial extent?)");
 
-  TopoDS_Shell shell;
-  BRep_Builder bb;
-  bb.MakeShell(shell);
-  bb.Add(shell, wall);
-  for (const auto& f : hub_ends) bb.Add(shell, f);
-  for (const auto& f : casing_ends) bb.Add(shell, f);
-
-  ShapeAnalysis_FreeBounds free_bounds(shell);
-  int free_edges = 0;
-  for (const TopoDS_Shape* w : {&free_bounds.GetClosedWires(), &free_bounds.GetOpenWires()})
-    for (TopExp_Explorer e(*w, TopAbs_EDGE); e.More(); e.Next()) ++free_edges;
-  if (free_edges > 0)
-    throw AlgorithmFailure("the trimmed blade shell is open: " + std::to_string(free_edges) + " free edges");
-
-  // Orient the faces consistently (the wall and the end faces come with their surfaces' normals).
-  ShapeFix_Shell fix;
-  fix.FixFaceOrientation(shell, /*isAccountMultiConex=*/true, /*NonManifold=*/false);
-  if (fix.NbShells() != 1) throw AlgorithmFailure("the trimmed blade faces do not form one shell");
-  TopoDS_Solid solid;
-  bb.MakeSolid(solid);
-  bb.Add(solid, fix.Shell());
-  BRepLib::OrientClosedSolid(solid);  // outward normals: positive volume
-
-  BladeSolid out;
-  out.solid = solid;
+  BladeSolid out = close_solid(wall, hub_ends, casing_ends, BRep_Tool::Surface(blade), BRep_Tool::Surface(hub_face),
+                               BRep_Tool::Surface(casing_face));
   out.warnings = alert_names(gf, Message_Warning);
-  const Handle(Geom_Surface) wall_s = BRep_Tool::Surface(blade), hub_s = BRep_Tool::Surface(hub_face),
-                             casing_s = BRep_Tool::Surface(casing_face);
-  for (TopExp_Explorer e(solid, TopAbs_FACE); e.More(); e.Next()) {
-    const TopoDS_Face f = TopoDS::Face(e.Current());
-    const Handle(Geom_Surface) s = BRep_Tool::Surface(f);
-    const char* name = s == wall_s ? kWallFaceName : s == hub_s ? kHubFaceName : s == casing_s ? kCasingFaceName : nullptr;
-    if (!name) throw AlgorithmFailure("a face of the blade solid lies on none of the blade, hub and casing surfaces");
-    out.faces.push_back({f, name});
-  }
   return out;
 }
 
@@ -277,7 +431,20 @@ EndTrim casing_trim(const blade::FlowPathTrim& t) {
 }
 
 BladeSolid build_blade_solid(const blade::BladeModel& model, ProgressSink* progress) {
-  return build_blade_solid(model.surface, hub_trim(model.trim), casing_trim(model.trim), progress);
+  const EndTrim hub = hub_trim(model.trim), casing = casing_trim(model.trim);
+  const BSplineCurve<3> hub_iso = blade::detail::iso_curve_v(model.surface, 0.0),
+                        casing_iso = blade::detail::iso_curve_v(model.surface, 1.0);
+  const double hub_dev = iso_deviation(hub_iso, hub), casing_dev = iso_deviation(casing_iso, casing);
+  // The model's end sections lie on the trims within its surface tolerance; anything else (a surface
+  // edited by hand) takes the general fuse.
+  const double allowed = std::max(model.surface_tolerance, 1e-7);
+  if (model.surface.first_v() < 0 && model.surface.last_v() > 1 && hub_dev <= allowed && casing_dev <= allowed) {
+    // Milliseconds of work: one progress report and one check point.
+    report_progress(progress, 0.0, "trimming along the wall's iso-curves");
+    check_cancel(progress, "trimming along the wall's iso-curves");
+    return iso_trimmed_solid(model.surface, hub, casing, hub_dev, casing_dev, hub_iso, casing_iso);
+  }
+  return build_blade_solid(model.surface, hub, casing, progress);
 }
 
 }  // namespace cg::brep

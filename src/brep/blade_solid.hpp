@@ -54,6 +54,9 @@ struct BladeSolid {
   /// Warnings of the general fuse (BOPAlgo alert names). Empty in a clean run; the notes on
   /// booleans list warnings that came with silently wrong results, so callers should report them.
   std::vector<std::string> warnings;
+  /// How the wall was cut to the flow path: along its own iso-curves v = 0 and 1 (a blade model whose
+  /// end sections lie on the trims), or by the general fuse with the trim surfaces.
+  bool trimmed_along_iso_curves = false;
 };
 
 /// Builds the blade solid between the `hub` and `casing` trims.
@@ -70,7 +73,14 @@ BladeSolid build_blade_solid(const BSplineSurface<3>& surface, const EndTrim& hu
 EndTrim hub_trim(const blade::FlowPathTrim& trim);
 EndTrim casing_trim(const blade::FlowPathTrim& trim);
 
-/// build_blade_solid(model.surface, hub_trim(model.trim), casing_trim(model.trim), progress).
+/// The model's solid. Its sections at span 0 and 1 lie on hub and casing within the model's surface
+/// tolerance, so the wall is cut along its own iso-curves v = 0 and 1: the wall face is the surface on
+/// v in [0, 1] (edges: exact iso-curves, straight pcurves), each end face is the trim surface bounded
+/// by that edge (pcurve on a surface of revolution: the edge's foot points interpolated at its own
+/// parameter); edge tolerance = the iso-curve's measured distance from the trim (x 1.5) plus the
+/// pcurve's error. No intersection curves, so the boundary stays as light as the wall. Falls back to
+/// build_blade_solid(model.surface, hub_trim(model.trim), casing_trim(model.trim), progress) when the
+/// end sections are farther from the trims than the surface tolerance.
 BladeSolid build_blade_solid(const blade::BladeModel& model, ProgressSink* progress = nullptr);
 
 }  // namespace cg::brep

@@ -18,6 +18,8 @@
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
 
+#include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <future>
 #include <numeric>
@@ -29,7 +31,18 @@
 namespace cg::brep {
 namespace {
 
-constexpr double kGPropAccuracy = 1e-7;
+class Stopwatch {
+ public:
+  double lap() {
+    const auto now = std::chrono::steady_clock::now();
+    const double s = std::chrono::duration<double>(now - last_).count();
+    last_ = now;
+    return s;
+  }
+
+ private:
+  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
 
 Check make_check(const char* name, bool passed, std::string message) { return Check{name, passed, std::move(message)}; }
 
@@ -56,7 +69,7 @@ struct UnionFind {
 // consistently oriented. Degenerated edges carry no polygon and are skipped.
 Check closed_mesh_check(const TopoDS_Shape& shape, const VerifyOptions& opt, int& triangles) {
   const TopoDS_Shape copy = BRepBuilderAPI_Copy(shape, /*copyGeom=*/false, /*copyMesh=*/false).Shape();
-  const Handle(OcctProgress) progress = new OcctProgress(opt.progress, "closed_mesh (BRepMesh)");
+  const Handle(OcctProgress) occt_progress = new OcctProgress(opt.progress, "closed_mesh (BRepMesh)");
   IMeshTools_Parameters params;
   params.Deflection = opt.mesh_relative_deflection;
   params.Relative = true;
@@ -66,8 +79,8 @@ Check closed_mesh_check(const TopoDS_Shape& shape, const VerifyOptions& opt, int
   // accurate one, and the interior refinement broke the triangulation of walls with a span more than
   // ~500 chords long (holes in the mesh of a valid face; see tests/cli span_range test).
   params.ControlSurfaceDeflection = false;
-  BRepMesh_IncrementalMesh mesher(copy, params, progress->Start());
-  progress->throw_if_stopped();
+  BRepMesh_IncrementalMesh mesher(copy, params, occt_progress->Start());
+  occt_progress->throw_if_stopped();
   TopTools_IndexedMapOfShape edges;
   TopExp::MapShapes(copy, TopAbs_EDGE, edges);
 
@@ -155,13 +168,49 @@ SolidCheck verify_solid(const TopoDS_Shape& shape, const VerifyOptions& options)
     r.one_solid.message = "the shape is null";
     return r;
   }
+  Stopwatch sw;
   r.solid_count = count_of(shape, TopAbs_SOLID);
   r.face_count = count_of(shape, TopAbs_FACE);
   r.one_solid = make_check("one_solid", r.solid_count == 1, std::to_string(r.solid_count) + " solids");
+  r.one_solid.seconds = sw.lap();
   ProgressSink* const progress = options.progress;
   report_progress(progress, 0.0, "brep_valid");
   check_cancel(progress, "brep_valid");
 
+  // The mesh (on a copy) and the two integrals only read the shape: they run alongside each other
+  // and alongside the topology checks below. Geometry is shared read-only (OCCT 7.6 keeps evaluation
+  // caches in the adaptors each algorithm builds, not in Geom objects).
+  auto mesh = std::async(std::launch::async, [&] {
+    Stopwatch t;
+    Check c = make_check("closed_mesh", false, "not run");
+    try {
+      c = closed_mesh_check(shape, options, r.mesh_triangles);
+    } catch (const Standard_Failure& e) {
+      c.message = std::string("meshing raised ") + e.GetMessageString();
+    }
+    c.seconds = t.lap();
+    return c;
+  });
+  // Adaptive integration with a requested relative accuracy: the default Gauss rule was off by
+  // 1.4 % on a face trimmed by a surface of revolution. At 1e-7 the volume matched analytic values to
+  // ~1e-9 and the area to ~1e-6 (slower convergence on rational faces); 1e-9 cost 3x for nothing the
+  // checks need. Its cost follows the boundary curves' pole counts: ~1.3 s for a wall bounded by
+  // 600-pole intersection curves, ~0.05 s for the same blade trimmed along its own iso-curves.
+  // Measured trap: a face bounded by a 2700-pole pcurve was integrated 0.4 % short at every requested
+  // accuracy (blade_solid.cpp keeps its pcurves light).
+  GProp_GProps vp, sp;
+  auto area = std::async(std::launch::async, [&] {
+    Stopwatch t;
+    BRepGProp::SurfaceProperties(shape, sp, options.gprop_relative_accuracy);
+    return t.lap();
+  });
+  auto volume = std::async(std::launch::async, [&] {
+    Stopwatch t;
+    r.volume_error = BRepGProp::VolumeProperties(shape, vp, options.gprop_relative_accuracy, /*OnlyClosed=*/true);
+    return t.lap();
+  });
+
+  sw.lap();
   try {
     const BRepCheck_Analyzer analyzer(shape, /*GeomControls=*/true, /*theIsParallel=*/true);
     const bool ok = analyzer.IsValid();
@@ -169,6 +218,7 @@ SolidCheck verify_solid(const TopoDS_Shape& shape, const VerifyOptions& options)
   } catch (const Standard_Failure& e) {
     r.brep_valid.message = std::string("BRepCheck_Analyzer raised ") + e.GetMessageString();
   }
+  r.brep_valid.seconds = sw.lap();
 
   report_progress(progress, 0.3, "no_free_edges");
   check_cancel(progress, "no_free_edges");
@@ -180,7 +230,9 @@ SolidCheck verify_solid(const TopoDS_Shape& shape, const VerifyOptions& options)
   } catch (const Standard_Failure& e) {
     r.no_free_edges.message = std::string("ShapeAnalysis_FreeBounds raised ") + e.GetMessageString();
   }
+  r.no_free_edges.seconds = sw.lap();
 
+  report_progress(progress, 0.4, "oriented_shells");
   check_cancel(progress, "oriented_shells");
   try {
     ShapeAnalysis_Shell sas;
@@ -193,34 +245,21 @@ SolidCheck verify_solid(const TopoDS_Shape& shape, const VerifyOptions& options)
   } catch (const Standard_Failure& e) {
     r.oriented_shells.message = std::string("ShapeAnalysis_Shell raised ") + e.GetMessageString();
   }
-
-  report_progress(progress, 0.4, "closed_mesh");
-  check_cancel(progress, "closed_mesh");
-  try {
-    r.closed_mesh = closed_mesh_check(shape, options, r.mesh_triangles);
-  } catch (const Standard_Failure& e) {
-    r.closed_mesh.message = std::string("meshing raised ") + e.GetMessageString();
-  }
-
-  report_progress(progress, 0.7, "volume and area");
+  r.oriented_shells.seconds = sw.lap();
+  // The mesh stops at a stop request (OCCT polls the sink); the integrations cannot be interrupted
+  // and finish first (the futures wait), then Cancelled propagates.
+  report_progress(progress, 0.5, "closed_mesh, volume and area");
+  r.closed_mesh = mesh.get();
   check_cancel(progress, "positive_volume");
   try {
-    // Adaptive integration with a requested relative accuracy: the default Gauss rule was off by
-    // 1.4 % on a face trimmed by a surface of revolution. At 1e-7 the volume matched analytic
-    // values to ~1e-9 and the area to ~1e-6 (slower convergence on rational faces); 1e-9 cost 3x
-    // (5 s on a 200-pole blade) for nothing the checks need.
-    // Both integrals take ~1.5 s on a real blade wall (600-pole boundary curves on a 200-span
-    // surface) and only read the shape (each builds its own adaptors), so the area runs alongside.
-    GProp_GProps vp, sp;
-    auto area = std::async(std::launch::async, [&] { BRepGProp::SurfaceProperties(shape, sp, kGPropAccuracy); });
-    r.volume_error = BRepGProp::VolumeProperties(shape, vp, kGPropAccuracy, /*OnlyClosed=*/true);
+    const double ta = area.get(), tv = volume.get();  // rethrow a Standard_Failure of the integrations
     r.volume = vp.Mass();
-    area.get();  // rethrows a Standard_Failure of the area integration
     r.area = sp.Mass();
     std::ostringstream msg;
     msg.precision(12);
     msg << "volume " << r.volume << " mm^3";
     r.positive_volume = make_check("positive_volume", r.volume > 0, msg.str());
+    r.positive_volume.seconds = std::max(ta, tv);
     Bnd_Box box;
     BRepBndLib::AddOptimal(shape, box, /*useTriangulation=*/false, /*useShapeTolerance=*/false);
     if (!box.IsVoid()) box.Get(r.bbox_min[0], r.bbox_min[1], r.bbox_min[2], r.bbox_max[0], r.bbox_max[1], r.bbox_max[2]);

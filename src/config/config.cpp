@@ -90,7 +90,8 @@ blade::LengthUnit length_unit(const Field& f) {
 
 blade::PointSectionDefinition point_section(const Field& f, const std::filesystem::path& base_dir, PointSource& source) {
   source.field = f.path();
-  f.expect_object({"file", "values", "unit", "le_index", "te_index", "suction_side"});
+  f.expect_object({"file", "values", "unit", "le_index", "te_index", "suction_side", "le_radius", "te_radius",
+                   "le_centre", "te_centre"});
   if (f.has("file") == f.has("values")) fail(f.path(), "needs exactly one of \"file\" and \"values\"");
   blade::PointSectionDefinition def;
   def.unit = f.has("unit") ? length_unit(f.at("unit")) : blade::LengthUnit::Millimetre;
@@ -119,6 +120,12 @@ blade::PointSectionDefinition point_section(const Field& f, const std::filesyste
                                                blade::SuctionSide::Clockwise};
     def.suction_side = sides[f.at("suction_side").choice({"longer", "counter_clockwise", "clockwise"})];
   }
+  // Edge-circle hints, in the section's unit.
+  const double k = blade::millimetres_per(def.unit);
+  if (f.has("le_radius")) def.le_radius = k * f.at("le_radius").number(positive(1e5));
+  if (f.has("te_radius")) def.te_radius = k * f.at("te_radius").number(positive(1e5));
+  if (f.has("le_centre")) def.le_centre = k * f.at("le_centre").pair();
+  if (f.has("te_centre")) def.te_centre = k * f.at("te_centre").pair();
   return def;
 }
 
@@ -157,11 +164,13 @@ blade::BladeSectionDefinition section(const Field& f, const std::filesystem::pat
 }
 
 blade::BladeOptions blade_options(const Field& f) {
-  f.expect_object({"overbuild", "chordwise_samples", "stacking"});
+  f.expect_object({"overbuild", "chordwise_samples", "stacking", "surface_tolerance", "seam"});
   blade::BladeOptions o;
   // > 0: the solid is cut out of the over-built surface by the hub and casing trims.
   o.overbuild = f.number_or("overbuild", o.overbuild, positive(0.5));
   o.chordwise_samples = f.integer_or("chordwise_samples", o.chordwise_samples, 8, 2000);
+  o.surface_tolerance = f.number_or("surface_tolerance", o.surface_tolerance, closed(1e-5, 0.1), "mm");
+  o.seam = f.number_or("seam", o.seam, closed(-1, 1));
   if (f.has("stacking")) {
     static const blade::StackingPoint points[] = {blade::StackingPoint::LeadingEdge, blade::StackingPoint::Centroid,
                                                   blade::StackingPoint::TrailingEdge};

@@ -21,8 +21,9 @@ json ab(const Eigen::Vector2d& p) { return json::array({p.x(), p.y()}); }
 // Section k of the built model. The built chord is the straight distance between the LE and TE of the
 // 3D section curve (on a meridional path the section is scaled to fit between the LE and TE lines, so
 // it differs from the profile's own chord).
-// Slot for the per-section diagnostics of the blade model (issue 8 items 2 and 5): detected LE/TE
-// circles, achieved surface tolerance and pole counts are added here when the model exposes them.
+// The blade model's per-section diagnostics (issue 8 items 2 and 5): the edge circles found (and
+// whether the profile follows them as exact arcs); the surface's tolerance, achieved deviation and pole
+// counts are in blade_surface. The 3D section's LE and TE are at the surface parameters u_le, u_te.
 json section_entry(const config::Config& c, const blade::BladeModel& m, std::size_t i) {
   const auto& def = c.blade.sections[i];
   const bool points = std::holds_alternative<blade::PointSectionDefinition>(def.shape);
@@ -32,7 +33,7 @@ json section_entry(const config::Config& c, const blade::BladeModel& m, std::siz
   if (i >= m.profiles.size() || i >= m.section_curves.size()) return e;
   const blade::SectionProfile& p = m.profiles[i];
   const BSplineCurve<3>& curve = m.section_curves[i];
-  const Eigen::Vector3d le = curve.point(curve.check_param(p.le_param)), te = curve.point(curve.check_param(p.te_param));
+  const Eigen::Vector3d le = curve.point(curve.check_param(m.u_le)), te = curve.point(curve.check_param(m.u_te));
   const blade::SectionProperties props = blade::section_properties(p.curve);
   e["chord_mm"] = (te - le).norm();
   e["leading_edge_mm"] = xyz(le);
@@ -45,6 +46,15 @@ json section_entry(const config::Config& c, const blade::BladeModel& m, std::siz
                   {"trailing_edge", ab(p.te)},
                   {"poles", p.curve.num_period_poles()}};
   e["poles_3d"] = curve.num_period_poles();
+  if (i < m.diagnostics.size()) {
+    const blade::SectionDiagnostics& d = m.diagnostics[i];
+    const auto circle = [](const blade::EdgeCircle& k, int points, bool arc) {
+      json j{{"centre_mm", ab(k.centre)}, {"radius_mm", k.radius}, {"points_on_circle", points}, {"exact_arc", arc}};
+      return j;
+    };
+    e["le_circle"] = circle(d.le_circle, d.le_circle_points, d.le_arc);
+    e["te_circle"] = circle(d.te_circle, d.te_circle_points, d.te_arc);
+  }
   return e;
 }
 
@@ -62,9 +72,14 @@ nlohmann::ordered_json report_model(const config::Config& c, const blade::BladeM
               {"blade_surface",
                {{"degree_u", s.degree_u()},
                 {"degree_v", s.degree_v()},
-                {"poles_u", s.is_periodic_u() ? s.num_poles_u() - s.degree_u() : s.num_poles_u()},
-                {"poles_v", s.num_poles_v()},
-                {"rational", s.is_rational()}}},
+                {"poles_u", m.poles_u()},
+                {"poles_v", m.poles_v()},
+                {"rational", s.is_rational()},
+                {"tolerance_mm", m.surface_tolerance},
+                {"achieved_deviation_mm", m.surface_deviation},
+                {"check_points", m.surface_check_points},
+                {"skinned_sections", m.skinned_spans.size()},
+                {"seam_chordwise", m.seam}}},
               {"overbuild", m.options.overbuild},
               {"step_schema", c.output.step_schema},
               {"config", c.source}};

@@ -8,16 +8,21 @@
 #include <boost/test/unit_test.hpp>
 
 #include <BRepBuilderAPI_MakeSolid.hxx>
+#include <BRep_Tool.hxx>
+#include <Geom2d_BSplineCurve.hxx>
+#include <Geom2d_Line.hxx>
 #include <BRep_Builder.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
+#include <TopoDS_Edge.hxx>
 #include <TopoDS_Shell.hxx>
 
 #include <functional>
 #include <iomanip>
 #include <map>
 
+#include "blade/blade_fixtures.hpp"
 #include "brep/synthetic_blade.hpp"
 #include "src/brep/blade_solid.hpp"
 #include "src/brep/verify.hpp"
@@ -248,4 +253,38 @@ BOOST_AUTO_TEST_CASE(model_trims) {
   const SolidCheck r = verify_solid(build_blade_solid(m).solid);
   require_all_checks(r);
   BOOST_TEST(std::abs(r.bbox_max[2] - 121) < 1e-6);
+}
+
+// A blade model's solid is trimmed along the wall's own iso-curves v = 0 and 1 (they lie on hub and
+// casing within the surface tolerance): the same solid as the general fuse (volume 1e-6, end-face
+// areas 1e-5 relative: the edges differ by the iso-curves' distance from the trims, ~4e-5 mm here),
+// edges with straight pcurves on the wall, tolerances within the surface tolerance, light pcurves.
+BOOST_AUTO_TEST_CASE(model_solid_trimmed_along_iso_curves) {
+  const blade::BladeModel m = blade::build_blade(blade::test::hpt_rotor());
+  const BladeSolid iso = build_blade_solid(m);
+  const BladeSolid fused = build_blade_solid(m.surface, hub_trim(m.trim), casing_trim(m.trim));
+  const SolidCheck a = verify_solid(iso.solid), b = verify_solid(fused.solid);
+  require_all_checks(a);
+  require_all_checks(b);
+  BOOST_TEST(rel(a.volume, b.volume) < 1e-6, "volume " << a.volume << " vs " << b.volume);
+  BOOST_TEST(rel(a.area, b.area) < 1e-5, "area " << a.area << " vs " << b.area);
+  const auto names = face_name_counts(iso);
+  BOOST_TEST(names.at(kWallFaceName) == 1);
+  BOOST_TEST(names.at(kHubFaceName) == 1);
+  BOOST_TEST(names.at(kCasingFaceName) == 1);
+  for (const NamedFace& f : iso.faces)
+    for (TopExp_Explorer e(f.face, TopAbs_EDGE); e.More(); e.Next()) {
+      const TopoDS_Edge edge = TopoDS::Edge(e.Current());
+      BOOST_TEST(BRep_Tool::Tolerance(edge) <= 2 * m.surface_tolerance);
+      double lo = 0, hi = 0;
+      const Handle(Geom2d_Curve) pc = BRep_Tool::CurveOnSurface(edge, f.face, lo, hi);
+      BOOST_TEST_REQUIRE(!pc.IsNull());
+      if (f.name == kWallFaceName) {
+        BOOST_TEST(pc->IsKind(STANDARD_TYPE(Geom2d_Line)));
+      } else {
+        const Handle(Geom2d_BSplineCurve) bs = Handle(Geom2d_BSplineCurve)::DownCast(pc);
+        BOOST_TEST_REQUIRE(!bs.IsNull());
+        BOOST_TEST(bs->NbPoles() <= 16 * m.poles_u());
+      }
+    }
 }

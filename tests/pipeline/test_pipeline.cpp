@@ -75,11 +75,12 @@ BOOST_AUTO_TEST_CASE(build_as_library_call) {
     BOOST_TEST(r.timings[i].stage == sink.started[i]);
     BOOST_TEST(r.timings[i].seconds >= 0);
   }
-  // Progress from inside the stages: the general fuse (OCCT indicator) and the checks.
+  // Progress from inside the stages: the solid (trimmed along the wall's iso-curves, src/brep/
+  // blade_solid.hpp) and the checks (the mesh through the OCCT indicator).
   bool fuse = false, mesh = false;
   for (const auto& [f, step] : sink.progress) {
     BOOST_TEST((f >= 0 && f <= 1), step << " " << f);
-    fuse = fuse || step == "solid/general fuse";
+    fuse = fuse || step == "solid/trimming along the wall's iso-curves";
     mesh = mesh || step.rfind("verify/closed_mesh", 0) == 0;
   }
   BOOST_TEST(fuse);
@@ -140,7 +141,8 @@ BOOST_AUTO_TEST_CASE(cancel_names_the_stage) {
       BOOST_TEST(std::string(e.what()).find(std::string("stage '") + stage + "'") != std::string::npos, e.what());
     }
   }
-  // Inside the general fuse: OCCT's UserBreak asks the sink, the fuse returns, and nothing after it runs.
+  // Inside the solid stage (trimmed along the wall's iso-curves): its check point stops it, and nothing
+  // after it runs.
   RecordingSink sink;
   sink.stop_in = "solid";
   sink.stop_on_progress = true;
@@ -148,7 +150,7 @@ BOOST_AUTO_TEST_CASE(cancel_names_the_stage) {
     pipeline::run_build(c, {}, &sink);
     BOOST_FAIL("no Cancelled inside the solid stage");
   } catch (const Cancelled& e) {
-    BOOST_TEST(e.what() == std::string("stopped in stage 'solid', at general fuse"));
+    BOOST_TEST(e.what() == std::string("stopped in stage 'solid', at trimming along the wall's iso-curves"));
   }
   BOOST_TEST((sink.finished == std::vector<std::string>{"blade_model"}));
   // A stop requested after a stage's last check point is noticed before the next stage starts.

@@ -1,0 +1,60 @@
+#include "src/blade/chordwise.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "src/core/error.hpp"
+
+namespace cg::blade {
+
+template <int Dim>
+ChordwiseMap<Dim>::ChordwiseMap(const BSplineCurve<Dim>& c, double le, double te)
+    : curve_(&c), table_(c), first_(c.first_param()), period_(c.period()) {
+  require(c.is_periodic(), "chordwise coordinate: the section curve must be closed (periodic)");
+  le_ = c.check_param(le);
+  te_ = c.check_param(te);
+  while (te_ <= le_) te_ += period_;
+  require(te_ - le_ < period_, "chordwise coordinate: the LE and TE coincide");
+  at_le_ = length_to(le_);
+  suction_ = length_to(te_) - at_le_;
+}
+
+template <int Dim>
+double ChordwiseMap<Dim>::length_to(double u) const {
+  const double k = std::floor((u - first_) / period_);
+  return table_.length_to(std::clamp(u - k * period_, first_, first_ + period_)) + k * table_.total();
+}
+
+template <int Dim>
+double ChordwiseMap<Dim>::param_at_length(double s) const {
+  const double k = std::floor(s / table_.total());
+  return table_.param_at(std::clamp(s - k * table_.total(), 0.0, table_.total())) + k * period_;
+}
+
+template <int Dim>
+double ChordwiseMap<Dim>::param_at(double c) const {
+  if (!(c >= -1 && c <= 1))  // (message built only on failure: hot path)
+    throw InvalidGeometry("chordwise coordinate " + std::to_string(c) + " is outside [-1, 1]");
+  if (c == 0) return le_;
+  if (c == 1 || c == -1) return te_;  // exactly the TE, not its arc-length image
+  if (c > 0) return param_at_length(at_le_ + c * suction_);
+  return param_at_length(at_le_ + suction_ + (1 + c) * pressure_length());
+}
+
+template <int Dim>
+double ChordwiseMap<Dim>::chordwise_at(double u) const {
+  double d = u - le_;
+  d -= std::floor(d / period_) * period_;  // [0, period): forward from the LE
+  const double w = le_ + d;
+  if (w == le_) return 0.0;
+  if (w == te_) return 1.0;
+  const double s = length_to(w) - at_le_;
+  if (w < te_) return std::min(1.0, s / suction_);
+  return std::max(-1.0, -(table_.total() - s) / pressure_length());
+}
+
+template class ChordwiseMap<2>;
+template class ChordwiseMap<3>;
+
+}  // namespace cg::blade
