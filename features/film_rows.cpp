@@ -8,7 +8,6 @@ namespace cg::features {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr int kArcSegments = 256;  // per side; Richardson against every other point
 constexpr int kRowSegments = 64;
 
 std::string num(double x) {
@@ -100,39 +99,23 @@ void check_span_range(double s0, double s1, const std::string& field) {
 
 }  // namespace
 
-SectionArcLength::SectionArcLength(const blade::BladeCoordinates& coords, double span) {
-  std::vector<Eigen::Vector3d> ss, ps;
-  for (int i = 0; i <= kArcSegments; ++i) {
-    const double c = static_cast<double>(i) / kArcSegments;
-    ss.push_back(coords.frame(span, c).point);
-    ps.push_back(coords.frame(span, -c).point);
-    if (i % 2 == 0) c_.push_back(c);
-  }
-  s_ = cumulative_length(ss);
-  p_ = cumulative_length(ps);
-}
-
-double SectionArcLength::arc_at(double chord) const {
-  return chord >= 0 ? interpolate(c_, s_, chord) : -interpolate(c_, p_, -chord);
-}
-
-double SectionArcLength::chord_at(double arc) const {
-  const std::vector<double>& side = arc >= 0 ? s_ : p_;
-  require(std::abs(arc) <= side.back(), "arc length " + num(arc) + " mm lies beyond the TE (the " +
-                                            (arc >= 0 ? "suction" : "pressure") + " side is " + num(side.back()) + " mm long)");
-  const double c = interpolate(side, c_, std::abs(arc));
-  return arc >= 0 ? c : -c;
-}
-
-const SectionArcLength& RowPositioner::arc(double span) {
+std::pair<double, double> RowPositioner::side_lengths(double span) {
   auto it = cache_.find(span);
-  if (it == cache_.end()) it = cache_.emplace(span, SectionArcLength(*coords_, span)).first;
+  if (it == cache_.end()) {
+    const blade::SpanSection& sec = coords_->section(span);
+    it = cache_.emplace(span, std::make_pair(sec.suction_length(), sec.pressure_length())).first;
+  }
   return it->second;
 }
 
 double RowPositioner::chord(const RowPosition& position, double span) {
   if (position.kind == RowPosition::Kind::Chord) return position.value;
-  return arc(span).chord_at(position.value);
+  const auto [suction, pressure] = side_lengths(span);
+  const double arc = position.value, side = arc >= 0 ? suction : pressure;
+  require(std::abs(arc) <= side, "arc length " + num(arc) + " mm lies beyond the TE (the " +
+                                     (arc >= 0 ? "suction" : "pressure") + " side is " + num(side) + " mm long at span " +
+                                     num(span) + ")");
+  return arc / side;
 }
 
 std::vector<HoleSpec> place_row(const blade::BladeCoordinates& coords, RowPositioner& positioner,

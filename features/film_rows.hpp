@@ -29,32 +29,20 @@
 
 namespace cg::features {
 
-/// Surface arc length along the section at one span (polyline of 256 segments per side with
-/// Richardson extrapolation against 128, error O(h^4)): signed arc length from the LE (+ suction) <->
-/// chordwise coordinate.
-class SectionArcLength {
- public:
-  SectionArcLength(const blade::BladeCoordinates& coords, double span);
-  double arc_at(double chord) const;  ///< mm, signed
-  /// Chordwise coordinate at a signed arc length; throws InvalidGeometry beyond the TE.
-  double chord_at(double arc) const;
-  double suction_length() const { return s_.back(); }
-  double pressure_length() const { return p_.back(); }
-
- private:
-  std::vector<double> c_, s_, p_;  // chord samples in [0, 1], arc on suction and pressure side
-};
-
-/// Chordwise coordinate of a row position at `span` (arc-length tables cached by span).
+/// Chordwise coordinate of a row position at a span. Arc lengths are exact: the chordwise coordinate is
+/// the arc-length fraction of the side on the section at that span (src/blade/span_section.hpp), so
+/// arc = chord * side length. Side lengths are cached by span.
 class RowPositioner {
  public:
   explicit RowPositioner(const blade::BladeCoordinates& coords) : coords_(&coords) {}
+  /// Throws InvalidGeometry for an arc length beyond the TE.
   double chord(const RowPosition& position, double span);
-  const SectionArcLength& arc(double span);
+  /// Suction- and pressure-side arc lengths of the section at `span`, mm.
+  std::pair<double, double> side_lengths(double span);
 
  private:
   const blade::BladeCoordinates* coords_;
-  std::map<double, SectionArcLength> cache_;
+  std::map<double, std::pair<double, double>> cache_;
 };
 
 /// The holes of every row and of the showerhead, named film_row_<k>_hole_<nnn> (k = 1-based index in

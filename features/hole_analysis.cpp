@@ -7,6 +7,7 @@
 #include <Eigen/LU>
 #include <Eigen/Cholesky>
 
+#include "src/algo/project_point_surface.hpp"
 #include "src/algo/ray_surface.hpp"
 #include "src/blade/blade_coordinates.hpp"
 
@@ -174,10 +175,12 @@ struct HoleAnalyser::Impl {
   HoleQuadrature quad;
   NearCaster outer, inner;
   blade::BladeCoordinates coords;
+  SurfaceProjector projector;
   std::vector<double> rx, rw, px, pw;
 
   Impl(const HoleTarget& t, const FilmLimits& l, const HoleQuadrature& q)
-      : target(t), limits(l), quad(q), outer(t.model->surface), inner(t.cavity_wall), coords(*t.model) {
+      : target(t), limits(l), quad(q), outer(t.model->surface), inner(t.cavity_wall), coords(*t.model),
+        projector(t.model->surface) {
     gauss_legendre_01(q.radial, rx, rw);
     gauss_legendre_01(q.piece, px, pw);
   }
@@ -186,12 +189,25 @@ struct HoleAnalyser::Impl {
     throw FilmInputError(h.field + sub, h.name + " (span " + mm(h.span) + ", chord " + mm(h.chord) + "): " + what);
   }
 
-  // Chordwise coordinate of the foot of p on the outer wall (Newton from the exit's parameters, else
-  // the global projection).
-  double chord_of(const Eigen::Vector3d& p, const RaySurfaceHit& exit) {
+  // Chordwise coordinate of the foot of p on the outer wall (Newton from the exit's parameters, else the
+  // global projection), on the section at `span` (NaN: the foot's own span). Evaluating the rim's feet on
+  // the section of the axis' inlet keeps to one section per hole (a section is an iso-curve with its
+  // arc-length map); the feet lie within a hole diameter of that span.
+  double chord_of(const Eigen::Vector3d& p, const RaySurfaceHit& exit, double span = std::nan(""), double* foot_span = nullptr) {
     double u = exit.u, v = exit.v;
-    if (foot_near(target.model->surface, p, u, v)) return blade::chordwise_at_surface_u(u, target.model->u_te);
+    if (foot_near(target.model->surface, p, u, v)) {
+      if (foot_span) {
+        // The axis' inlet decides the chamber: make sure Newton's foot is the closest point (in a thin
+        // region another side of the blade can be closer): global search within its distance.
+        const double dist = (target.model->surface.point(u, v) - p).norm();
+        const SurfaceProjection g = projector.project(p, dist * (1 + 1e-9) + 1e-9);
+        if (g.found && g.distance < dist * (1 - 1e-9) - 1e-9) u = g.u, v = g.v;
+        *foot_span = v;
+      }
+      return coords.section(std::isnan(span) ? v : span).chordwise_at_u(u);
+    }
     const blade::BladeLocateResult loc = coords.locate(p);
+    if (foot_span) *foot_span = loc.v;
     return loc.found ? loc.coordinate.chord : std::nan("");
   }
   std::vector<Eigen::Vector3d> inlet_rim, exit_outline, end_rim;  // work buffers
@@ -227,6 +243,10 @@ HoleGeometry HoleAnalyser::Impl::analyse(const HoleSpec& h) {
   if (n_exit.dot(d) > 0) n_exit = -n_exit;
   g.inclination_deg = std::asin(std::min(1.0, -n_exit.dot(d))) * 180 / kPi;
   const RaySurfaceHit ai = inner.first(base, d, search);
+  const RaySurfaceHit ao2 = outer.first(ao.point + 1e-6 * d, d, search);
+  if (ao2.found && (!ai.found || ao.ray_param + 1e-6 + ao2.ray_param < ai.ray_param))
+    fail(h, ".position", "reaches no chamber: its axis leaves the blade again " + mm(ao2.ray_param) +
+                             " mm past its exit point, before it enters the cavity");
   if (!ai.found || ai.ray_param <= s_out)
     fail(h, ".position", "reaches no chamber: its axis does not enter the cavity within " + mm(search - s_out, 1) + " mm");
   const double sense_o = outer.sense(d, ao), sense_i = inner.sense(d, ai);
@@ -234,7 +254,8 @@ HoleGeometry HoleAnalyser::Impl::analyse(const HoleSpec& h) {
   const double sense_f = af.found ? inner.sense(d, af) : 0;
   g.length = ai.ray_param - s_out;
   g.inlet = ai.point;
-  g.inlet_chord = chord_of(ai.point, ao);
+  double inlet_span = 0;
+  g.inlet_chord = chord_of(ai.point, ao, std::nan(""), &inlet_span);
   g.chamber = std::isnan(g.inlet_chord) ? -1 : target.chamber_at(g.inlet_chord);
   if (g.chamber < 0)
     fail(h, ".position", "reaches no chamber: its axis enters the cavity at chord " + mm(g.inlet_chord) +
@@ -426,7 +447,7 @@ HoleGeometry HoleAnalyser::Impl::analyse(const HoleSpec& h) {
 
   // Chamber of the whole inlet, obstacles.
   for (const Eigen::Vector3d& p : inlet_rim) {
-    const double ch = chord_of(p, ao);
+    const double ch = chord_of(p, ao, inlet_span);
     const int k = std::isnan(ch) ? -1 : target.chamber_at(ch);
     if (k != g.chamber)
       fail(h, ".position", "its inlet straddles " + chamber.name + " and " +
