@@ -155,6 +155,7 @@ FilmCutResult cut_film_holes(const brep::NamedShape& blade, const HoleTarget& ta
   for (const FeatureTool& t : tools.tools) step.add(t);
   out.blade = step.apply(blade);
   const BooleanStepReport& br = step.report();
+  out.check = br.check;
   FilmReport& rep = out.report;
   rep.tool_clusters = br.cluster_count;
   rep.boolean_runs = br.boolean_runs;

@@ -41,6 +41,7 @@ double hole_ligament(const HoleGeometry& a, const HoleGeometry& b);
 struct FilmCutResult {
   brep::NamedShape blade;
   FilmReport report;
+  brep::SolidCheck check;  ///< verify_solid of the result (run by the boolean step)
 };
 
 /// Options of the film holes' boolean step: the volume tolerance of the step's per-tool check is

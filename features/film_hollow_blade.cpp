@@ -42,6 +42,8 @@ FilmHollowBlade make_film_hollow_blade(const blade::BladeModel& model, double wa
   h.inner = blade::build_inner_wall(model, blade::ThicknessField::constant(wall));
   h.hub_floor = shifted_end_trim(model, true, end_wall);
   h.tip_cap = shifted_end_trim(model, false, end_wall);
+  h.wall = wall;
+  h.end_wall = end_wall;
   if (!build_solid) return h;
   const brep::BladeSolid outer = brep::build_blade_solid(model);
   const brep::BladeSolid core = brep::build_blade_solid(h.inner.surface, h.hub_floor, h.tip_cap);
@@ -64,6 +66,18 @@ FilmHollowBlade make_film_hollow_blade(const blade::BladeModel& model, double wa
 
 HoleTarget film_hollow_target(const blade::BladeModel& model, const FilmHollowBlade& hollow) {
   return one_chamber_target(model, hollow.inner.surface, hollow.hub_floor, hollow.tip_cap);
+}
+
+InsertChamber film_hollow_insert_chamber(const blade::BladeModel& model, const FilmHollowBlade& hollow) {
+  InsertChamber c;
+  c.wall_thickness = hollow.wall;
+  const double end_wall = hollow.end_wall;
+  const blade::BladeModel* m = &model;
+  c.hub_end = [m, end_wall](double extra) { return shifted_end_trim(*m, true, end_wall + extra); };
+  c.tip_end = [m, end_wall](double extra) { return shifted_end_trim(*m, false, end_wall + extra); };
+  const blade::BladeCoordinates bc(model);
+  c.reference = 0.5 * (bc.frame(0.5, 0.3).point + bc.frame(0.5, -0.3).point);
+  return c;
 }
 
 HoleTarget sample_hole_target(const blade::BladeModel& model, const HollowBlade& part, const HollowBladeOptions& options) {

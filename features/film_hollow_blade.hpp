@@ -8,6 +8,7 @@
 //  - sample_hole_target: the HoleTarget of the boolean path's sample part (boolean_sample_part.hpp).
 #include "features/boolean_sample_part.hpp"
 #include "features/hole_target.hpp"
+#include "features/insert.hpp"
 #include "src/blade/inner_wall.hpp"
 #include "src/brep/named_shape.hpp"
 
@@ -18,6 +19,7 @@ struct FilmHollowBlade {
   blade::InnerWall inner;
   brep::EndTrim hub_floor, tip_cap;  ///< the end walls of the core
   double volume = 0;                 ///< mm^3 of the part
+  double wall = 0, end_wall = 0;     ///< as built, mm
 };
 
 /// Throws InnerWallError when the wall is too thick for the blade, AlgorithmFailure when a boolean fails.
@@ -30,6 +32,8 @@ brep::EndTrim shifted_end_trim(const blade::BladeModel& model, bool hub, double 
 /// The target of a hollow blade: its core surface, one chamber over the whole chord, the end walls as
 /// obstacles (hole fields ".span_start" / ".span_end"). `model` and `hollow` must outlive it.
 HoleTarget film_hollow_target(const blade::BladeModel& model, const FilmHollowBlade& hollow);
+/// The insert chamber of a hollow blade: its whole core (chamber_1), end walls closed.
+InsertChamber film_hollow_insert_chamber(const blade::BladeModel& model, const FilmHollowBlade& hollow);
 HoleTarget sample_hole_target(const blade::BladeModel& model, const HollowBlade& part, const HollowBladeOptions& options);
 
 }  // namespace cg::features

@@ -17,11 +17,11 @@
 
 namespace cg::test {
 
-inline blade::BladeModel short_vane(double span = 12) {
+inline blade::BladeModel short_vane(double span = 12, double max_thickness = 7.5) {
   blade::BladeDefinition d;
   d.flow_path = blade::StraightFlowPath{span};
   blade::BladeSectionDefinition s;
-  s.shape = blade::test::rotor_section(7.5, 38, -64, -26);
+  s.shape = blade::test::rotor_section(max_thickness, 38, -64, -26);
   d.sections = {s};
   return blade::build_blade(d);
 }
@@ -30,8 +30,8 @@ struct FilmVane {
   blade::BladeModel model;
   features::FilmHollowBlade hollow;
   features::HoleTarget target;
-  explicit FilmVane(bool solid, double span = 12)
-      : model(short_vane(span)), hollow(features::make_film_hollow_blade(model, 1.0, 1.0, solid)),
+  explicit FilmVane(bool solid, double span = 12, double max_thickness = 7.5)
+      : model(short_vane(span, max_thickness)), hollow(features::make_film_hollow_blade(model, 1.0, 1.0, solid)),
         target(features::film_hollow_target(model, hollow)) {}
 };
 
