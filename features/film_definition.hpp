@@ -4,6 +4,7 @@
 // parameters described in the README, "Cooling features: film holes and inserts").
 // Lengths mm, angles degrees. Chordwise positions are blade-relative (src/blade/blade_coordinates.hpp):
 // 0 at the LE, (0, 1] on the suction side, [-1, 0) on the pressure side; span fractions 0 hub, 1 casing.
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -56,7 +57,8 @@ struct InsertDefinition {
   int chamber = 1;               ///< the chamber it sits in (1-based)
   double gap = 1.0;              ///< Z, jet-to-target distance: offset from the chamber wall, mm
   double sheet_thickness = 0.4;  ///< mm
-  double span_start = 0, span_end = 1;  ///< extent along the span (clipped to the chamber's end walls)
+  /// Distance of the insert's ends from the chamber's end walls (hub floor, tip cap), mm; NaN: the gap.
+  double hub_gap = std::numeric_limits<double>::quiet_NaN(), tip_gap = std::numeric_limits<double>::quiet_NaN();
   bool hub_open = true, tip_open = true;  ///< open or closed (capped with a sheet) ends
   /// Jet holes through the sheet, normal to it.
   double jet_diameter = 0.5;     ///< D, mm

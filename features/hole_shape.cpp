@@ -11,14 +11,6 @@ constexpr double kPi = 3.14159265358979323846;
 double tan_deg(double a) { return std::tan(a * kPi / 180); }
 }  // namespace
 
-HoleShape preset_777(double diameter) {
-  HoleShape s;
-  s.kind = HoleKind::FanShaped;
-  s.diameter = diameter;
-  s.fan = FanDiffuser{7, 7, 3.5, 0, 0.5};
-  return s;
-}
-
 double FanSection::area() const {
   const double h = y1 - y0;
   return 2 * w * h + 2 * rho * h + 4 * w * rho + kPi * rho * rho;

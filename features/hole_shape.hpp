@@ -49,8 +49,15 @@ struct HoleShape {
   FanDiffuser fan;        ///< FanShaped only
 };
 
-/// The public 7-7-7 laidback fan-shaped hole of diameter D (diffuser 3.5 D, edge radius D / 2).
-HoleShape preset_777(double diameter);
+/// The public 7-7-7 laidback fan-shaped hole of diameter D (diffuser 3.5 D, edge radius D / 2). Inline:
+/// the config parser (no OCCT) uses it.
+inline HoleShape preset_777(double diameter) {
+  HoleShape s;
+  s.kind = HoleKind::FanShaped;
+  s.diameter = diameter;
+  s.fan = FanDiffuser{7, 7, 3.5, 0, 0.5};
+  return s;
+}
 
 /// The diffuser cross-section at distance t from the diffuser start (see the header comment): corner
 /// centres at (+-w, y0) and (+-w, y1), corner radius rho. Everything is linear in t.

@@ -127,7 +127,8 @@ InsertBuild build_insert(const blade::BladeModel& model, const InsertChamber& ch
   }
   // Ends: the end walls moved into the chamber by the gap (outer); closed ends keep a cap of the sheet
   // thickness, open ends let the inner solid run out through the outer one's end.
-  const double hub_gap = Z, tip_gap = Z;
+  const double hub_gap = std::isnan(def.hub_gap) ? Z : def.hub_gap, tip_gap = std::isnan(def.tip_gap) ? Z : def.tip_gap;
+  if (hub_gap < 0 || tip_gap < 0) throw FilmInputError(field + (hub_gap < 0 ? ".hub_gap" : ".tip_gap"), name + ": end gaps must be >= 0");
   const brep::EndTrim hub_o = chamber.hub_end(hub_gap), tip_o = chamber.tip_end(tip_gap);
   const brep::EndTrim hub_i = chamber.hub_end(def.hub_open ? hub_gap - ts : hub_gap + ts);
   const brep::EndTrim tip_i = chamber.tip_end(def.tip_open ? tip_gap - ts : tip_gap + ts);
