@@ -13,7 +13,7 @@ nlohmann::ordered_json report_json(const ReportContent& c) {
   for (const brep::Check* x : k.checks()) checks[x->name] = {{"passed", x->passed}, {"message", x->message}};
   json size = json::array();
   for (int i = 0; i < 3; ++i) size.push_back(k.bbox_max[static_cast<std::size_t>(i)] - k.bbox_min[static_cast<std::size_t>(i)]);
-  return json{
+  json out{
       {"generator", "coolinggen"},
       {"version", c.version},
       {"input_hash", c.input_hash},
@@ -34,6 +34,8 @@ nlohmann::ordered_json report_json(const ReportContent& c) {
       {"timings_s", c.timings_s},
       {"outputs", c.outputs},
   };
+  for (const auto& [key, value] : c.extra.items()) out[key] = value;
+  return out;
 }
 
 void write_report(const std::filesystem::path& file, const ReportContent& content) {

@@ -28,6 +28,9 @@ struct ReportContent {
   nlohmann::ordered_json model = nlohmann::ordered_json::object();  ///< caller's model description
   nlohmann::ordered_json timings_s = nlohmann::ordered_json::object();  ///< stage -> seconds, in run order
   std::vector<std::string> outputs;            ///< files written with the report
+  /// Further top-level sections, appended after "outputs" in order (e.g. "sections": the passage table
+  /// along span, "notes": outputs skipped and why, "mesh": mesh statistics).
+  nlohmann::ordered_json extra = nlohmann::ordered_json::object();
 };
 
 nlohmann::ordered_json report_json(const ReportContent& content);

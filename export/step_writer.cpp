@@ -1,20 +1,18 @@
 #include "export/step_writer.hpp"
 
+#include <APIHeaderSection_MakeHeader.hxx>
 #include <IFSelect_ReturnStatus.hxx>
 #include <Interface_Static.hxx>
 #include <STEPCAFControl_Controller.hxx>
 #include <STEPCAFControl_Writer.hxx>
-#include <TDataStd_Name.hxx>
-#include <TDocStd_Document.hxx>
-#include <TopoDS.hxx>
-#include <XCAFApp_Application.hxx>
-#include <XCAFDoc_DocumentTool.hxx>
-#include <XCAFDoc_ShapeTool.hxx>
+#include <Standard_Version.hxx>
 
 #include <algorithm>
 #include <cctype>
 
 #include "export/atomic_file.hpp"
+#include "export/part_document.hpp"
+#include "export/version.hpp"
 
 namespace cg::io {
 namespace {
@@ -27,14 +25,7 @@ void set_param(const char* name, int value) {
   if (!Interface_Static::SetIVal(name, value)) throw ExportError(std::string("cannot set the STEP parameter ") + name);
 }
 
-// Closes the document when leaving scope (the application keeps a list of open documents).
-struct DocumentGuard {
-  Handle(TDocStd_Application) app;
-  Handle(TDocStd_Document) doc;
-  ~DocumentGuard() {
-    if (!doc.IsNull() && doc->IsOpened()) app->Close(doc);
-  }
-};
+Handle(TCollection_HAsciiString) ascii(const std::string& s) { return new TCollection_HAsciiString(s.c_str()); }
 
 }  // namespace
 
@@ -48,9 +39,7 @@ StepSchema parse_step_schema(const std::string& name) {
 
 const char* step_schema_name(StepSchema s) { return s == StepSchema::AP242 ? "AP242" : "AP214"; }
 
-void write_step(const std::filesystem::path& file, const TopoDS_Shape& shape, const std::vector<brep::NamedFace>& faces,
-                const StepOptions& options) {
-  if (shape.IsNull()) throw ExportError("cannot write a null shape to " + file.string());
+void write_step(const std::filesystem::path& file, const brep::Part& part, const StepOptions& options) {
   // The XCAF controller must be initialised before its parameters exist: set earlier,
   // write.stepcaf.subshapes.name fails silently and the faces lose their names.
   STEPCAFControl_Controller::Init();
@@ -58,23 +47,33 @@ void write_step(const std::filesystem::path& file, const TopoDS_Shape& shape, co
   set_param("write.step.unit", "MM");
   set_param("write.stepcaf.subshapes.name", 1);
 
-  DocumentGuard g{XCAFApp_Application::GetApplication(), {}};
-  g.app->NewDocument("MDTV-XCAF", g.doc);
-  const Handle(XCAFDoc_ShapeTool) tool = XCAFDoc_DocumentTool::ShapeTool(g.doc->Main());
-  const TDF_Label label = tool->AddShape(shape, /*makeAssembly=*/false);
-  TDataStd_Name::Set(label, TCollection_ExtendedString(options.product_name.c_str(), /*isMultiByte=*/true));
-  for (const auto& f : faces) {
-    const TDF_Label sub = tool->AddSubShape(label, f.face);
-    if (sub.IsNull()) throw ExportError("face \"" + f.name + "\" is not a face of the shape written to " + file.string());
-    TDataStd_Name::Set(sub, TCollection_ExtendedString(f.name.c_str(), true));
-  }
-
+  const PartDocument doc(part, options.product_name);
   STEPCAFControl_Writer writer;
   writer.SetNameMode(true);
-  if (!writer.Transfer(g.doc, STEPControl_AsIs)) throw ExportError("STEP transfer of the shape failed");
+  writer.SetColorMode(true);
+  writer.SetLayerMode(true);
+  if (!writer.Transfer(doc.document(), STEPControl_AsIs)) throw ExportError("STEP transfer of the part failed");
+
+  // Header: the defaults name OCCT as the originating system and leave the file name empty.
+  APIHeaderSection_MakeHeader header(writer.ChangeWriter().Model());
+  const std::string tool = std::string(kToolName) + " " + tool_version();
+  header.SetName(ascii(options.product_name));
+  header.SetOriginatingSystem(ascii(tool));
+  header.SetPreprocessorVersion(ascii(tool + " (Open CASCADE " OCC_VERSION_STRING_EXT ")"));
+  header.SetAuthorValue(1, ascii(kToolName));
+  header.SetOrganizationValue(1, ascii(""));
+  header.SetAuthorisation(ascii(""));
+  header.SetDescriptionValue(1, ascii(options.product_name + ": cooled turbine blade, unit mm, faces named by feature"));
+
   write_atomically(file, [&](const std::filesystem::path& tmp) {
     if (writer.Write(tmp.string().c_str()) != IFSelect_RetDone) throw ExportError("cannot write STEP file " + tmp.string());
   });
+}
+
+void write_step(const std::filesystem::path& file, const TopoDS_Shape& shape, const std::vector<brep::NamedFace>& faces,
+                const StepOptions& options) {
+  if (shape.IsNull()) throw ExportError("cannot write a null shape to " + file.string());
+  write_step(file, brep::Part{{"blade", brep::NamedShape{shape, faces}}}, options);
 }
 
 }  // namespace cg::io

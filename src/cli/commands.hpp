@@ -22,6 +22,8 @@ struct Command {
 Command add_build_command(CLI::App& app);
 Command add_validate_command(CLI::App& app);
 Command add_example_command(CLI::App& app);
+Command add_mesh_command(CLI::App& app);
+Command add_grid_command(CLI::App& app);
 
 /// Options shared by the commands that run a job: CONFIG, -o DIR, -q, --timeout.
 struct JobOptions {

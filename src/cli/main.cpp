@@ -1,8 +1,10 @@
 // coolinggen: command-line front end, a thin layer over the pipeline (src/pipeline): argument parsing,
 // printing and exit codes.
 //   coolinggen build [CONFIG] -o DIR [-q] [--timeout S]   DIR/blade.step + DIR/report.json
+//   coolinggen mesh [CONFIG] -o DIR [-q] [--timeout S]    DIR/mesh.msh, mesh_*.vtu, report.json, report.md
 //   coolinggen validate CONFIG                             parse and check the config, write nothing
 //   coolinggen example                                     print the built-in example config
+//   coolinggen grid [CONFIG] -o DIR [-q] [--timeout S]     structured grids around the sections (grid_job.hpp)
 // Exit codes (exit_codes.hpp): 0 success, 1 command line, 2 invalid config, 3 model/solid failure or a
 // failed check, 4 output error, 5 unexpected error, 6 stopped (--timeout, Ctrl-C). Errors are one line
 // on stderr.
@@ -54,7 +56,8 @@ int main(int argc, char** argv) {
   CLI::App app{"coolinggen: verified CAD models of cooled turbine blades (units mm, degrees)", "coolinggen"};
   app.set_version_flag("--version", std::string("coolinggen ") + pipeline::version());
   app.require_subcommand(1);
-  const std::vector<Command> commands{add_build_command(app), add_validate_command(app), add_example_command(app)};
+  const std::vector<Command> commands{add_build_command(app), add_mesh_command(app), add_validate_command(app),
+                                      add_example_command(app), add_grid_command(app)};
 
   if (const std::string unknown = unknown_command(argc, argv, commands); !unknown.empty())
     return error_exit(kUsage, unknown);

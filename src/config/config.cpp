@@ -5,6 +5,7 @@
 
 #include "src/blade/meridional_net.hpp"
 #include "src/blade/section.hpp"
+#include "src/config/handoff_fields.hpp"
 #include "src/config/json_document.hpp"
 #include "src/config/json_fields.hpp"
 #include "src/config/point_checks.hpp"
@@ -183,7 +184,8 @@ blade::BladeOptions blade_options(const Field& f) {
 
 Config parse_config(const nlohmann::json& document, const std::filesystem::path& base_dir, const std::string& default_name) {
   const Field root(document, "");
-  root.expect_object({"$schema", "name", "description", "units", "flow_path", "sections", "blade", "output"});
+  root.expect_object({"$schema", "name", "description", "units", "flow_path", "sections", "blade", "output", "mesh",
+                      "grid"});
   Config c;
   c.source = document;
   c.name = root.has("name") ? root.at("name").string() : default_name;
@@ -206,7 +208,8 @@ Config parse_config(const nlohmann::json& document, const std::filesystem::path&
   c.output.product_name = c.name;
   if (root.has("output")) {
     const Field out = root.at("output");
-    out.expect_object({"formats", "step_schema", "product_name"});
+    out.expect_object({"formats", "step_schema", "product_name", "stl_deflection", "stl_angular_deflection_deg",
+                       "section_spans"});
     if (out.has("formats")) {
       const Field formats = out.at("formats");
       const std::size_t n = formats.expect_array(0);
@@ -216,7 +219,10 @@ Config parse_config(const nlohmann::json& document, const std::filesystem::path&
     if (out.has("step_schema"))
       c.output.step_schema = out.at("step_schema").choice({"AP214", "AP242"}) == 1 ? "AP242" : "AP214";
     if (out.has("product_name")) c.output.product_name = out.at("product_name").string();
+    read_handoff_output_fields(out, c.output);
   }
+  if (root.has("mesh")) c.mesh = mesh_config(root.at("mesh"));
+  if (root.has("grid")) c.grid = parse_grid_config(root.at("grid"), n);
   return c;
 }
 

@@ -13,15 +13,33 @@
 
 #include "src/blade/blade_surface.hpp"
 #include "src/config/config_error.hpp"
+#include "src/config/grid_config.hpp"
 #include "src/core/progress.hpp"
 
 namespace cg::config {
 
 /// "output": plain options; the pipeline (src/pipeline/outputs.hpp) checks the format names and writes.
 struct OutputOptions {
-  std::vector<std::string> formats{"step"};  ///< model files to write (report.json is always written)
-  std::string step_schema = "AP214";         ///< "AP214" | "AP242"
+  /// Model files to write (report.json is always written); default all (README, Outputs).
+  std::vector<std::string> formats{"step", "iges", "brep", "stl", "vtk", "preview", "sections", "report_md"};
+  std::string step_schema = "AP242";         ///< "AP214" | "AP242"
   std::string product_name;                  ///< name of the product in the STEP file (default: the config's name)
+  double stl_deflection = 0.01;              ///< mm, chordal deflection of STL / VTK / preview triangles
+  double stl_angular_deflection_deg = 20;    ///< deg
+  std::vector<double> section_spans{0.1, 0.3, 0.5, 0.7, 0.9};  ///< spans of sections.svg and the passage table
+};
+
+/// "mesh": options of `coolinggen mesh` (plain; the pipeline hands them to src/mesh).
+struct MeshConfig {
+  double max_size = 1.5;                ///< mm
+  double min_size = 0.05;               ///< mm
+  int curvature_elements = 16;          ///< per 2 pi on every surface
+  int feature_curvature_elements = 40;  ///< per 2 pi on the cooling-feature faces
+  bool metal = true, coolant = true;    ///< "domains"
+  bool msh = true, vtu = true;          ///< "formats"
+  bool group_by_face_name = false;      ///< "physical_groups": "face_name" (default "kind")
+  int threads = 2;
+  bool optimize = true;
 };
 
 /// Where a point section's points came from, so messages can speak of file lines (the model counts
@@ -37,6 +55,8 @@ struct Config {
   std::string description;  ///< "description" (optional)
   blade::BladeDefinition blade;
   OutputOptions output;
+  MeshConfig mesh;
+  GridConfig grid;          ///< "grid" (structured grids around the sections; optional)
   /// One per section, in order; `field` is empty for parametric sections.
   std::vector<PointSource> point_sources;
   nlohmann::json source;    ///< the parsed document (for the report)

@@ -33,6 +33,7 @@ BuildResult run_build(const config::Config& config, const BuildOptions& options,
   stages.run("solid", "solid (blade surface trimmed to the flow path)", [&] {
     brep::BladeSolid solid = brep::build_blade_solid(r.model, progress);
     for (const std::string& w : solid.warnings) r.warnings.push_back("solid: " + w);
+    r.uncooled = {solid.solid, solid.faces};
     r.part.push_back({"blade", {solid.solid, std::move(solid.faces)}});
   });
   stages.run("verify", "checks (BRepCheck, free edges, closed mesh, volume)", [&] {

@@ -38,6 +38,9 @@ struct BuildResult {
   blade::BladeModel model;
   /// The product: bodies[0] is the blade ("blade"), each body's faces named (src/brep/named_shape.hpp).
   brep::Part part;
+  /// The blade solid before any cooling feature (its faces named): what the coolant domain of
+  /// `coolinggen mesh` is cut from (coolant = uncooled - part bodies).
+  brep::NamedShape uncooled;
   /// checks[i]: the checks of part[i].
   std::vector<brep::SolidCheck> checks;
   /// Warnings of the stages (e.g. general-fuse alerts), each prefixed with its stage.

@@ -1,7 +1,5 @@
 #include "src/pipeline/outputs.hpp"
 
-#include <BRep_Builder.hxx>
-#include <TopoDS_Compound.hxx>
 
 #include <set>
 
@@ -9,6 +7,7 @@
 #include "export/report.hpp"
 #include "export/step_writer.hpp"
 #include "src/config/json_fields.hpp"
+#include "src/pipeline/handoff_formats.hpp"
 #include "src/pipeline/report.hpp"
 #include "src/pipeline/stage_runner.hpp"
 
@@ -16,32 +15,23 @@ namespace cg::pipeline {
 namespace fs = std::filesystem;
 namespace {
 
-// All bodies in one STEP file: the blade alone as its solid, several bodies as a compound.
+// All bodies in one STEP file, each a named solid, faces named and coloured per feature (XCAF).
 void write_step_file(OutputDirectory& dir, const config::Config& c, const BuildResult& r, ProgressSink*) {
   if (r.part.empty()) throw io::ExportError("STEP: the build produced no body");
-  TopoDS_Shape shape = r.part.front().geometry.shape;
-  std::vector<brep::NamedFace> faces = r.part.front().geometry.faces;
-  if (r.part.size() > 1) {
-    TopoDS_Compound compound;
-    BRep_Builder bb;
-    bb.MakeCompound(compound);
-    faces.clear();
-    for (const brep::NamedBody& b : r.part) {
-      bb.Add(compound, b.geometry.shape);
-      faces.insert(faces.end(), b.geometry.faces.begin(), b.geometry.faces.end());
-    }
-    shape = compound;
-  }
-  const io::StepOptions options{io::parse_step_schema(c.output.step_schema), c.output.product_name};
-  dir.write("blade.step", [&](const fs::path& target) { io::write_step(target, shape, faces, options); });
+  const io::StepOptions options{io::parse_step_schema(c.output.step_schema),
+                                c.output.product_name.empty() ? c.name : c.output.product_name};
+  dir.write("blade.step", [&](const fs::path& target) { io::write_step(target, r.part, options); });
 }
 
 }  // namespace
 
 const std::vector<OutputFormat>& output_formats() {
-  static const std::vector<OutputFormat> formats{
-      {"step", "STEP (AP214 or AP242, unit mm) with named faces", {"blade.step"}, write_step_file},
-  };
+  static const std::vector<OutputFormat> formats = [] {
+    std::vector<OutputFormat> f{
+        {"step", "STEP (AP242 or AP214, unit mm) with named bodies and faces", {"blade.step"}, write_step_file}};
+    for (OutputFormat& h : handoff_formats()) f.push_back(std::move(h));
+    return f;
+  }();
   return formats;
 }
 
@@ -79,7 +69,9 @@ WrittenOutputs write_outputs(const config::Config& c, const BuildResult& r, cons
     std::vector<StageTiming> timings = r.timings;
     timings.insert(timings.end(), out.timings.begin(), out.timings.end());
     od.commit([&](const fs::path& target, const std::vector<std::string>& files) {
-      io::write_report(target, report_content(c, r, files, timings));
+      io::ReportContent rc = report_content(c, r, files, timings);
+      add_handoff_report(c, r, rc);
+      io::write_report(target, rc);
     });
   });
   out.files = od.files();

@@ -155,9 +155,10 @@ BOOST_AUTO_TEST_CASE(c3x_against_occt_offset) {
   BRepOffsetAPI_MakeOffsetShape off;
   // The face normal S_u x S_v: find whether it points outward (then the inward offset is -t).
   const BladeCoordinates bc(m);
+  const BladeFrame f = bc.frame(0.5, 0.5);
   Eigen::Vector3d d[4];
-  m.surface.derivatives(0.25, 0.5, 1, d);
-  const double sign = d[2].cross(d[1]).dot(bc.frame(0.5, 0.5).normal) > 0 ? -1.0 : 1.0;
+  m.surface.derivatives(f.u, f.v, 1, d);  // at the frame's own foot point, wherever the seam is
+  const double sign = d[2].cross(d[1]).dot(f.normal) > 0 ? -1.0 : 1.0;
   off.PerformBySimple(outer, sign * thick);
   BOOST_TEST_REQUIRE(off.IsDone());
   const TopoDS_Shape occt_offset = off.Shape();

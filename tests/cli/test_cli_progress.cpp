@@ -105,7 +105,9 @@ BOOST_AUTO_TEST_CASE(timeout_is_bounded) {
   if (r.exit_code == 6) {
     BOOST_TEST(contains(r.err, "time limit of 1.5 s reached: stopped "), r.err);
     BOOST_TEST(contains(r.err, "stage '"), r.err);
-    BOOST_TEST(!fs::exists(dir.path / "out"));
+    // Stopped before writing: no directory; while writing the outputs (several formats take seconds):
+    // the directory was made and this run's files removed again.
+    BOOST_TEST((!fs::exists(dir.path / "out") || fs::is_empty(dir.path / "out")), r.err);
   } else {
     BOOST_TEST(r.seconds < limit + 2.0);
   }

@@ -1,0 +1,59 @@
+#include "src/config/handoff_fields.hpp"
+
+namespace cg::config {
+namespace {
+
+bool boolean_or(const Field& f, const char* key, bool fallback) {
+  if (!f.has(key)) return fallback;
+  const Field b = f.at(key);
+  if (!b.json().is_boolean()) fail(b.path(), "must be true or false, got " + json_type_name(b.json()));
+  return b.json().get<bool>();
+}
+
+}  // namespace
+
+void read_handoff_output_fields(const Field& out, OutputOptions& o) {
+  o.stl_deflection = out.number_or("stl_deflection", o.stl_deflection, closed(1e-4, 10), "mm");
+  o.stl_angular_deflection_deg = out.number_or("stl_angular_deflection_deg", o.stl_angular_deflection_deg, closed(1, 90), "deg");
+  if (out.has("section_spans")) {
+    const Field s = out.at("section_spans");
+    const std::size_t n = s.expect_array(1, 12);
+    o.section_spans.clear();
+    for (std::size_t i = 0; i < n; ++i) {
+      const double span = s.item(i).number(closed(0, 1));
+      if (i > 0 && span <= o.section_spans.back())
+        fail(s.item(i).path(), "section spans must be strictly increasing, got " + std::to_string(span) + " after " +
+                                   std::to_string(o.section_spans.back()));
+      o.section_spans.push_back(span);
+    }
+  }
+}
+
+MeshConfig mesh_config(const Field& f) {
+  if (!f.is_object()) fail(f.path(), "must be an object, got " + json_type_name(f.json()));
+  f.expect_object({"max_size", "min_size", "curvature_elements", "feature_curvature_elements", "domains", "formats",
+                   "physical_groups", "threads", "optimize"});
+  MeshConfig m;
+  m.max_size = f.number_or("max_size", m.max_size, closed(0.01, 1000), "mm");
+  m.min_size = f.number_or("min_size", m.min_size, closed(0.001, m.max_size), "mm (<= max_size)");
+  m.curvature_elements = f.integer_or("curvature_elements", m.curvature_elements, 0, 200);
+  m.feature_curvature_elements = f.integer_or("feature_curvature_elements", m.feature_curvature_elements, 0, 200);
+  if (f.has("domains")) {
+    const Field d = f.at("domains");
+    const std::size_t n = d.expect_array(1, 2);
+    m.metal = m.coolant = false;
+    for (std::size_t i = 0; i < n; ++i) (d.item(i).choice({"metal", "coolant"}) == 0 ? m.metal : m.coolant) = true;
+  }
+  if (f.has("formats")) {
+    const Field d = f.at("formats");
+    const std::size_t n = d.expect_array(1, 2);
+    m.msh = m.vtu = false;
+    for (std::size_t i = 0; i < n; ++i) (d.item(i).choice({"msh", "vtu"}) == 0 ? m.msh : m.vtu) = true;
+  }
+  if (f.has("physical_groups")) m.group_by_face_name = f.at("physical_groups").choice({"kind", "face_name"}) == 1;
+  m.threads = f.integer_or("threads", m.threads, 1, 256);
+  m.optimize = boolean_or(f, "optimize", m.optimize);
+  return m;
+}
+
+}  // namespace cg::config

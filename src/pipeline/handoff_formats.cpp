@@ -1,0 +1,153 @@
+#include "src/pipeline/handoff_formats.hpp"
+
+#include <algorithm>
+#include <mutex>
+
+#include "export/atomic_file.hpp"
+#include "export/brep_writer.hpp"
+#include "export/iges_writer.hpp"
+#include "export/preview.hpp"
+#include "export/report_markdown.hpp"
+#include "export/sections.hpp"
+#include "export/sections_svg.hpp"
+#include "export/stl_writer.hpp"
+#include "export/triangulation.hpp"
+#include "export/vtk_writer.hpp"
+#include "export/x_display.hpp"
+#include "src/pipeline/report.hpp"
+
+namespace cg::pipeline {
+namespace fs = std::filesystem;
+namespace {
+
+constexpr double kDeg = 3.14159265358979323846 / 180;
+
+// What the formats of one build result share. The cache holds the blade's TShape, so a later result
+// can never reuse its address and be mistaken for this one.
+struct Shared {
+  std::mutex mutex;
+  Handle(TopoDS_TShape) owner;
+  bool have_triangles = false, have_sections = false;
+  io::PartTriangles triangles;
+  std::vector<io::SectionCut> sections;
+  std::vector<std::string> notes;
+};
+
+Shared& shared_for(const BuildResult& r) {
+  static Shared s;
+  const Handle(TopoDS_TShape)& t = r.part.front().geometry.shape.TShape();
+  if (s.owner != t) {
+    s.owner = t;
+    s.have_triangles = s.have_sections = false;
+    s.triangles = {};
+    s.sections.clear();
+    s.notes.clear();
+  }
+  return s;
+}
+
+const io::PartTriangles& triangles(const config::Config& c, const BuildResult& r) {
+  Shared& s = shared_for(r);
+  if (!s.have_triangles) {
+    s.triangles = io::triangulate_part(r.part, {c.output.stl_deflection, c.output.stl_angular_deflection_deg * kDeg});
+    s.have_triangles = true;
+  }
+  return s.triangles;
+}
+
+const std::vector<io::SectionCut>& sections(const config::Config& c, const BuildResult& r) {
+  Shared& s = shared_for(r);
+  if (!s.have_sections) {
+    s.sections = io::cut_sections(r.part, io::blade_section_surfaces(r.model, c.output.section_spans));
+    s.have_sections = true;
+  }
+  return s.sections;
+}
+
+std::string product(const config::Config& c) { return c.output.product_name.empty() ? c.name : c.output.product_name; }
+
+void need_part(const BuildResult& r, const char* what) {
+  if (r.part.empty()) throw io::ExportError(std::string(what) + ": the build produced no body");
+}
+
+}  // namespace
+
+std::vector<OutputFormat> handoff_formats() {
+  return {
+      {"iges", "IGES (144 trimmed NURBS surfaces, names and levels per feature)", {"blade.igs"},
+       [](OutputDirectory& d, const config::Config& c, const BuildResult& r, ProgressSink*) {
+         need_part(r, "IGES");
+         d.write("blade.igs", [&](const fs::path& t) { io::write_iges(t, r.part, {product(c)}); });
+       }},
+      {"brep", "OCCT BREP of all bodies", {"blade.brep"},
+       [](OutputDirectory& d, const config::Config&, const BuildResult& r, ProgressSink*) {
+         need_part(r, "BREP");
+         d.write("blade.brep", [&](const fs::path& t) { io::write_brep(t, r.part); });
+       }},
+      {"stl", "binary STL", {"blade.stl"},
+       [](OutputDirectory& d, const config::Config& c, const BuildResult& r, ProgressSink*) {
+         need_part(r, "STL");
+         const io::PartTriangles& t = triangles(c, r);
+         d.write("blade.stl", [&](const fs::path& target) { io::write_stl(target, t, product(c)); });
+       }},
+      {"vtk", "ParaView multiblock with feature ids", {"blade.vtm", "blade_blade.vtp"},
+       [](OutputDirectory& d, const config::Config& c, const BuildResult& r, ProgressSink*) {
+         need_part(r, "VTK");
+         const io::PartTriangles& t = triangles(c, r);
+         // The pieces first, then the multiblock that names them.
+         for (std::size_t k = 0; k < r.part.size(); ++k)
+           d.write("blade_" + r.part[k].name + ".vtp",
+                   [&](const fs::path& target) { io::write_vtk_piece(target, r.part[k].name, t, static_cast<int>(k)); });
+         d.write("blade.vtm", [&](const fs::path& target) { io::write_vtk_multiblock(target, r.part, "blade"); });
+       }},
+      {"preview", "preview.png (VTK; skipped without an X display)", {"preview.png"},
+       [](OutputDirectory& d, const config::Config& c, const BuildResult& r, ProgressSink*) {
+         need_part(r, "preview");
+         const io::PartTriangles& t = triangles(c, r);
+         io::PreviewOptions po;
+         po.title = product(c);
+         // Hub -> casing along the iso-curve u = 0: the blade stands upright.
+         po.up = r.model.surface.point(0, 1) - r.model.surface.point(0, 0);
+         bool written = false;
+         std::string note;
+         // No display: no file, a note in the report (OutputDirectory::write needs a file from its writer).
+         const io::DisplayStatus display = io::ensure_x_display();
+         if (!display.available) {
+           shared_for(r).notes.push_back("preview.png skipped: " + display.message);
+           return;
+         }
+         d.write("preview.png", [&](const fs::path& target) {
+           const io::PreviewResult p = io::write_preview(target, t, po);
+           written = p.written;
+           note = p.message;
+         });
+         if (!written) shared_for(r).notes.push_back(note);
+       }},
+      {"sections", "sections.svg (sections at several spans with passages and dimensions)", {"sections.svg"},
+       [](OutputDirectory& d, const config::Config& c, const BuildResult& r, ProgressSink*) {
+         need_part(r, "sections");
+         const auto& cuts = sections(c, r);
+         d.write("sections.svg", [&](const fs::path& t) { io::write_sections_svg(t, cuts, product(c)); });
+       }},
+      {"report_md", "report.md (rendered from report.json)", {"report.md"},
+       [](OutputDirectory& d, const config::Config& c, const BuildResult& r, ProgressSink*) {
+         std::vector<std::string> files = d.files();
+         files.push_back("report.md");
+         files.push_back(kReportFile);
+         io::ReportContent rc = report_content(c, r, files, r.timings);
+         add_handoff_report(c, r, rc);
+         d.write("report.md", [&](const fs::path& t) { io::write_report_markdown(t, io::report_json(rc)); });
+       }},
+  };
+}
+
+void add_handoff_report(const config::Config& c, const BuildResult& r, io::ReportContent& report) {
+  if (r.part.empty()) return;
+  Shared& s = shared_for(r);
+  const bool want = std::find(c.output.formats.begin(), c.output.formats.end(), "sections") != c.output.formats.end() ||
+                    std::find(c.output.formats.begin(), c.output.formats.end(), "report_md") != c.output.formats.end();
+  if (want && r.valid()) report.extra["sections"] = io::sections_json(sections(c, r));
+  if (!s.notes.empty()) report.extra["notes"] = s.notes;
+}
+
+}  // namespace cg::pipeline

@@ -1,0 +1,19 @@
+#pragma once
+// The hand-off output formats after STEP (README, Outputs): iges, brep, stl, vtk, preview, sections,
+// report_md, as entries of output_formats(). They share one triangulation (stl, vtk, preview) and one
+// set of section cuts (sections, report_md, report.json) per build result, made on first use.
+#include <vector>
+
+#include "export/report.hpp"
+#include "src/pipeline/outputs.hpp"
+
+namespace cg::pipeline {
+
+/// The entries, in the order they are written (report_md last, so it lists every model file).
+std::vector<OutputFormat> handoff_formats();
+
+/// Adds the hand-off sections to a report: "sections" (passage area, wetted perimeter and hydraulic
+/// diameter along span, when the sections were cut in this run) and "notes" (outputs skipped and why).
+void add_handoff_report(const config::Config& config, const BuildResult& result, io::ReportContent& report);
+
+}  // namespace cg::pipeline

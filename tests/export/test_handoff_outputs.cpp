@@ -1,0 +1,109 @@
+// The hand-off formats through the pipeline (src/pipeline write_outputs) on a cooled build result (the
+// example blade with chambers, film holes and an insert, made in the test): every selected file and
+// only those, each non-empty; report.json lists them and carries the passage table; report.md is
+// rendered from the same report; a selection writes only its files; write_mesh writes the mesh files
+// and the "mesh" statistics. CG_KEEP_OUTPUTS=DIR keeps the full run's files in DIR for inspection.
+#define BOOST_TEST_MODULE handoff_outputs
+#include <boost/test/unit_test.hpp>
+
+#include <cstdlib>
+#include <nlohmann/json.hpp>
+#include <set>
+
+#include "brep/temp_files.hpp"
+#include "export/cooled_part.hpp"
+#include "src/config/builtin_example.hpp"
+#include "src/pipeline/mesh_job.hpp"
+#include "src/pipeline/outputs.hpp"
+
+namespace fs = std::filesystem;
+using namespace cg;
+
+namespace {
+
+// A build result of the cooled example, as the pipeline will produce once features are applied.
+pipeline::BuildResult cooled_result(const test::CooledPart& p) {
+  pipeline::BuildResult r;
+  r.model = p.model;
+  r.part = p.part;
+  r.uncooled = {p.uncooled, p.uncooled_faces};
+  for (const auto& b : r.part) r.checks.push_back(brep::verify_solid(b.geometry.shape));
+  return r;
+}
+
+std::set<std::string> names_in(const fs::path& dir) {
+  std::set<std::string> n;
+  for (const auto& e : fs::directory_iterator(dir)) n.insert(e.path().filename().string());
+  return n;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(unknown_format_names_the_field) {
+  config::Config c = config::builtin_example_config();
+  c.output.formats = {"step", "gltf"};
+  try {
+    pipeline::check_output_options(c);
+    BOOST_ERROR("no error");
+  } catch (const config::ConfigError& e) {
+    const std::string m = e.what();
+    BOOST_TEST(m.find("output.formats[1]") != std::string::npos, m);
+    BOOST_TEST(m.find("\"report_md\"") != std::string::npos, m);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(all_and_selected_outputs) {
+  test::CooledPartOptions o;
+  o.holes = 3;
+  const test::CooledPart p = test::cooled_example(o);
+  const pipeline::BuildResult r = cooled_result(p);
+  BOOST_TEST_REQUIRE(r.valid(), r.failed_checks());
+  config::Config c = config::builtin_example_config();
+  c.output.product_name = "hpt_rotor_cooled";
+  test::TempDir dir("handoff");
+  const char* keep = std::getenv("CG_KEEP_OUTPUTS");
+  const fs::path out = keep ? fs::path(keep) : dir.path / "out";
+  const pipeline::WrittenOutputs w = pipeline::write_outputs(c, r, out);
+  std::set<std::string> expected{"blade.step", "blade.igs",  "blade.brep", "blade.stl",  "blade.vtm", "blade_blade.vtp",
+                                 "blade_insert_1.vtp", "sections.svg", "report.md", "report.json"};
+  const std::set<std::string> written(w.files.begin(), w.files.end());
+  if (written.count("preview.png")) expected.insert("preview.png");
+  BOOST_TEST(written == expected);
+  BOOST_TEST(names_in(out) == expected);  // nothing else, no temporaries
+  for (const auto& f : w.files) BOOST_TEST(fs::file_size(out / f) > 100u, f);
+  const auto report = nlohmann::json::parse(test::read_text(out / "report.json"));
+  BOOST_TEST(report.at("valid").get<bool>());
+  BOOST_TEST(report.at("sections").size() == c.output.section_spans.size());
+  BOOST_TEST(report.at("sections").at(1).at("passages").size() == 2u);  // both chambers at span 0.3
+  if (!written.count("preview.png")) BOOST_TEST(report.at("notes").at(0).get<std::string>().find("preview.png skipped") == 0u);
+  const std::string md = test::read_text(out / "report.md");
+  for (const char* s : {"## Checks", "## Coolant passages along span", "chamber_1_wall", "`blade.igs`", "## Solid"})
+    BOOST_TEST(md.find(s) != std::string::npos, s);
+
+  // Only STL and BREP (plus report.json).
+  c.output.formats = {"stl", "brep"};
+  const pipeline::WrittenOutputs w2 = pipeline::write_outputs(c, r, dir.path / "sel");
+  BOOST_TEST(names_in(dir.path / "sel") == (std::set<std::string>{"blade.stl", "blade.brep", "report.json"}));
+  BOOST_TEST(w2.files.size() == 3u);
+}
+
+BOOST_AUTO_TEST_CASE(mesh_job_writes_mesh_and_report) {
+  test::CooledPartOptions o;
+  o.chambers = 1;
+  o.holes = 1;
+  o.insert = false;
+  o.chamber_top = 0.4;
+  const test::CooledPart p = test::cooled_example(o);
+  const pipeline::BuildResult r = cooled_result(p);
+  config::Config c = config::builtin_example_config();
+  c.mesh.max_size = 4;
+  c.mesh.feature_curvature_elements = 16;
+  test::TempDir dir("meshjob");
+  const pipeline::MeshOutputs w = pipeline::write_mesh(c, r, dir.path / "m");
+  BOOST_TEST(names_in(dir.path / "m") == (std::set<std::string>{"mesh.msh", "mesh_blade.vtu", "mesh_coolant.vtu",
+                                                                 "mesh_surfaces.vtu", "report.md", "report.json"}));
+  const auto report = nlohmann::json::parse(test::read_text(dir.path / "m" / "report.json"));
+  BOOST_TEST(report.at("mesh").at("inverted").get<int>() == 0);
+  BOOST_TEST(report.at("mesh").at("tetrahedra").get<int>() > 0);
+  BOOST_TEST(test::read_text(dir.path / "m" / "report.md").find("## Mesh") != std::string::npos);
+}
