@@ -105,6 +105,9 @@ InsertBuild build_insert(const blade::BladeModel& model, const InsertChamber& ch
                          int index, const std::string& field, ProgressSink* progress) {
   const std::string name = "insert_" + std::to_string(index);
   const double tw = chamber.wall_thickness, Z = def.gap, ts = def.sheet_thickness, D = def.jet_diameter;
+  if (!(tw > 0))
+    throw FilmInputError(field + ".chamber", name + ": inserts need a constant wall thickness of the core (" + chamber.name +
+                                                 "'s wall is tabulated)");
   if (!(Z > 0)) throw FilmInputError(field + ".gap", name + ": the gap must be > 0");
   if (!(ts > 0)) throw FilmInputError(field + ".sheet_thickness", name + ": the sheet thickness must be > 0");
   if (def.jet_spacing_x_d < 2) throw FilmInputError(field + ".jet_spacing_x_d", name + ": x/D must be >= 2");

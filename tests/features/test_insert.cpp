@@ -47,6 +47,8 @@ BOOST_AUTO_TEST_CASE(closed_insert_gap_sheet_and_jets) {
   for (const auto& [stage, sec] : ins.seconds) BOOST_TEST_MESSAGE(stage << " " << sec << " s");
   BOOST_TEST_MESSAGE("measure " << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() << " s");
   const InsertMeasure& m = ins.measure;
+  BOOST_TEST_MESSAGE("gap " << m.measured_gap << " sheet " << m.measured_sheet_min << ".." << m.measured_sheet_max << " jets "
+                            << m.jet_holes << " volume " << m.volume << " expected " << m.expected_volume);
   BOOST_TEST(ins.body.name == "insert_1");
   BOOST_TEST(BRepCheck_Analyzer(ins.body.geometry.shape).IsValid());
   // The offsets are fitted within 1e-3 mm (inner_wall.hpp): gap and sheet within 2e-3 mm.
