@@ -57,8 +57,10 @@ const Built& built() {
     Built out;
     out.def.rows.push_back(row(0.35, 0.4, 4, 30, 0));     // suction side
     out.def.rows.push_back(row(-0.45, 0.4, 5, 35, 40));   // pressure side, compound angle
-    FilmRowDefinition fan = row(-0.25, 0.3, 6, 30, 0);    // 7-7-7
+    FilmRowDefinition fan = row(-0.25, 0.3, 6, 30, 0);    // 7-7-7 (two holes: shaped holes cost the most)
     fan.shape = preset_777(0.3);
+    fan.span_start = 0.4;
+    fan.span_end = 0.6;
     out.def.rows.push_back(fan);
     ShowerheadDefinition sh;
     sh.rows = 3;
