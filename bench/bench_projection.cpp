@@ -5,8 +5,11 @@
 //         (Init(curve, first, last) + Perform(P)); the faster is the reference.
 //  Surface: rational bicubic, 12 x 12 poles, points scattered around it; OCCT =
 //         GeomAPI_ProjectPointOnSurf initialised once on the bounds (Init + Perform).
-// Before timing, the distances are compared (ours must never be larger than OCCT's + 1e-9; the count
-// of points where ours is strictly smaller, i.e. OCCT returned a local minimum, is printed).
+// Checking, on the results of the timed runs: ours must never be farther than OCCT's + 1e-9 (both
+// converge Newton to rounding; the distance is stationary at a foot); where ours is strictly smaller
+// (OCCT returned a local minimum, or no extremum with the foot on the boundary) our point is verified
+// independently: it is the curve's / surface's point at our parameters and at our distance from P.
+// Any disagreement makes the program exit with status 1.
 // Timing: best of several repetitions (least disturbed on this shared machine).
 //
 // Usage: bench_projection [--quick]
@@ -23,6 +26,7 @@
 #include <vector>
 
 #include "adaptors/occt_convert.hpp"
+#include "bench_check.hpp"
 #include "src/algo/project_point_curve.hpp"
 #include "src/algo/project_point_surface.hpp"
 #include "src/core/knots.hpp"
@@ -32,17 +36,7 @@ namespace {
 using Vec3 = Eigen::Vector3d;
 volatile double g_sink = 0.0;
 
-template <class Run>
-double best_seconds(int reps, Run run) {
-  double best = 1e300;
-  for (int r = 0; r < reps; ++r) {
-    const auto t0 = std::chrono::steady_clock::now();
-    g_sink = g_sink + run();
-    const auto t1 = std::chrono::steady_clock::now();
-    best = std::min(best, std::chrono::duration<double>(t1 - t0).count());
-  }
-  return best;
-}
+bench::Checker g_check;
 
 gp_Pnt to_gp(const Vec3& p) { return gp_Pnt(p.x(), p.y(), p.z()); }
 
@@ -64,47 +58,46 @@ void bench_curve(int npoints, int reps) {
     pts.push_back(curve.point(u) + 15.0 * Vec3(U(gen), U(gen), U(gen)));
   }
   cg::CurveProjector<3> proj(curve);
-
-  // Agreement first.
-  int ours_smaller = 0, ours_larger = 0;
   GeomAPI_ProjectPointOnCurve api;
   api.Init(oc, curve.first_param(), curve.last_param());
-  for (const auto& P : pts) {
-    const double d = proj.project(P).distance;
-    api.Perform(to_gp(P));
-    double o = std::min((curve.point(0) - P).norm(), (curve.point(1) - P).norm());
-    if (api.NbPoints() > 0) o = std::min(o, api.LowerDistance());
-    if (d > o + 1e-9) ++ours_larger;
-    if (d < o - 1e-9) ++ours_smaller;
-  }
-  std::printf("curve: %d points, ours larger than OCCT: %d, ours strictly smaller (OCCT local min): %d\n",
-              npoints, ours_larger, ours_smaller);
-
-  const double t_ours = best_seconds(reps, [&] {
-    double s = 0;
-    for (const auto& P : pts) s += proj.project(P).distance;
-    return s;
+  std::vector<cg::CurveProjection<3>> ours(pts.size());
+  std::vector<double> occt(pts.size());
+  const double t_ours = bench::best_seconds(reps, [&](int) {
+    for (std::size_t i = 0; i < pts.size(); ++i) ours[i] = proj.project(pts[i]);
   });
-  const double t_occt_init = best_seconds(reps, [&] {
-    double s = 0;
-    for (const auto& P : pts) {
-      api.Perform(to_gp(P));
-      if (api.NbPoints() > 0) s += api.LowerDistance();
+  const double t_occt_init = bench::best_seconds(reps, [&](int) {
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      api.Perform(to_gp(pts[i]));
+      occt[i] = api.NbPoints() > 0 ? api.LowerDistance() : 1e300;
     }
-    return s;
   });
-  const double t_occt_ctor = best_seconds(std::max(1, reps / 2), [&] {
+  const double t_occt_ctor = bench::best_seconds(std::max(1, reps / 2), [&](int) {
     double s = 0;
     for (const auto& P : pts) {
       GeomAPI_ProjectPointOnCurve a(to_gp(P), oc);
       if (a.NbPoints() > 0) s += a.LowerDistance();
     }
-    return s;
+    g_sink = g_sink + s;
   });
-  const double occt = std::min(t_occt_init, t_occt_ctor);
+  int ours_smaller = 0;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    // OCCT reports interior extrema: the curve ends complete its answer.
+    const double o = std::min({occt[i], (curve.point(curve.first_param()) - pts[i]).norm(),
+                               (curve.point(curve.last_param()) - pts[i]).norm()});
+    const auto& r = ours[i];
+    if (r.distance > o + 1e-9) g_check.fail("curve point %zu: ours %.17g, OCCT %.17g", i, r.distance, o);
+    if (r.distance < o - 1e-9) {
+      ++ours_smaller;
+      if ((curve.point(r.param) - r.point).norm() > 1e-12 * (1 + r.point.norm()) ||
+          std::abs((r.point - pts[i]).norm() - r.distance) > 1e-12 * (1 + r.distance))
+        g_check.fail("curve point %zu: our closer point %.17g is not on the curve at that distance", i, r.distance);
+    }
+  }
+  std::printf("curve: %d points, ours strictly closer than OCCT (verified on the curve): %d\n", npoints, ours_smaller);
+  const double t_occt = std::min(t_occt_init, t_occt_ctor);
   std::printf("curve projection (rational cubic, 32 poles): ours %.0f /s, OCCT Init+Perform %.0f /s, "
               "OCCT per-point ctor %.0f /s, ratio %.1fx\n",
-              npoints / t_ours, npoints / t_occt_init, npoints / t_occt_ctor, occt / t_ours);
+              npoints / t_ours, npoints / t_occt_init, npoints / t_occt_ctor, t_occt / t_ours);
 }
 
 void bench_surface(int npoints, int reps) {
@@ -126,31 +119,30 @@ void bench_surface(int npoints, int reps) {
   cg::SurfaceProjector proj(surf);
   GeomAPI_ProjectPointOnSurf api;
   api.Init(os, surf.first_u(), surf.last_u(), surf.first_v(), surf.last_v());
-  int ours_smaller = 0, ours_larger = 0;
-  for (const auto& P : pts) {
-    const double d = proj.project(P).distance;
-    api.Perform(to_gp(P));
-    if (api.NbPoints() == 0) continue;
-    const double o = api.LowerDistance();
-    if (d > o + 1e-9) ++ours_larger;
-    if (d < o - 1e-9) ++ours_smaller;
-  }
-  std::printf("surface: %d points, ours larger than OCCT: %d, ours strictly smaller (OCCT local min or "
-              "boundary): %d\n",
-              npoints, ours_larger, ours_smaller);
-  const double t_ours = best_seconds(reps, [&] {
-    double s = 0;
-    for (const auto& P : pts) s += proj.project(P).distance;
-    return s;
+  std::vector<cg::SurfaceProjection> ours(pts.size());
+  std::vector<double> occt(pts.size());
+  const double t_ours = bench::best_seconds(reps, [&](int) {
+    for (std::size_t i = 0; i < pts.size(); ++i) ours[i] = proj.project(pts[i]);
   });
-  const double t_occt = best_seconds(reps, [&] {
-    double s = 0;
-    for (const auto& P : pts) {
-      api.Perform(to_gp(P));
-      if (api.NbPoints() > 0) s += api.LowerDistance();
+  const double t_occt = bench::best_seconds(reps, [&](int) {
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      api.Perform(to_gp(pts[i]));
+      occt[i] = api.NbPoints() > 0 ? api.LowerDistance() : 1e300;  // none: the foot is on the boundary
     }
-    return s;
   });
+  int ours_smaller = 0;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    const auto& r = ours[i];
+    if (r.distance > occt[i] + 1e-9) g_check.fail("surface point %zu: ours %.17g, OCCT %.17g", i, r.distance, occt[i]);
+    if (r.distance < occt[i] - 1e-9) {
+      ++ours_smaller;
+      if ((surf.point(r.u, r.v) - r.point).norm() > 1e-12 * (1 + r.point.norm()) ||
+          std::abs((r.point - pts[i]).norm() - r.distance) > 1e-12 * (1 + r.distance))
+        g_check.fail("surface point %zu: our closer point %.17g is not on the surface at that distance", i, r.distance);
+    }
+  }
+  std::printf("surface: %d points, ours strictly closer than OCCT (OCCT local minimum or boundary foot, verified "
+              "on the surface): %d\n", npoints, ours_smaller);
   std::printf("surface projection (rational bicubic, 12 x 12 poles): ours %.0f /s, OCCT Init+Perform %.0f /s, "
               "ratio %.1fx\n",
               npoints / t_ours, npoints / t_occt, t_occt / t_ours);
@@ -162,5 +154,5 @@ int main(int argc, char** argv) {
   const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
   bench_curve(quick ? 500 : 20000, quick ? 1 : 3);
   bench_surface(quick ? 100 : 2000, quick ? 1 : 3);
-  return 0;
+  return g_check.finish("bench_projection");
 }

@@ -4,6 +4,7 @@
 #include <BOPAlgo_PaveFiller.hxx>
 #include <Message_ProgressScope.hxx>
 #include <Standard_Failure.hxx>
+#include <TopoDS_AlertWithShape.hxx>
 
 #include <chrono>
 
@@ -20,6 +21,11 @@ double seconds_since(std::chrono::steady_clock::time_point t) {
 void collect(const Handle(Message_Report) & report, BooleanRun& run) {
   for (const std::string& e : alert_names(report, Message_Fail)) run.errors.push_back(e);
   for (const std::string& w : alert_names(report, Message_Warning)) run.warnings.push_back(w);
+  if (report.IsNull()) return;
+  for (const Handle(Message_Alert)& a : report->GetAlerts(Message_Warning)) {
+    const Handle(TopoDS_AlertWithShape) s = Handle(TopoDS_AlertWithShape)::DownCast(a);
+    run.warning_shapes.push_back(s.IsNull() ? TopoDS_Shape() : s->GetShape());
+  }
 }
 
 }  // namespace

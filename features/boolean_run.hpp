@@ -21,6 +21,9 @@ struct BooleanRun {
   TopoDS_Shape result;                     ///< null when OCCT reported an error
   TopTools_DataMapOfShapeListOfShape images;  ///< input sub-shape -> its split pieces (absent: unchanged)
   std::vector<std::string> errors, warnings;  ///< BOPAlgo alert names
+  /// The shapes the warnings name (e.g. the too small edge), where OCCT gives one: they locate the
+  /// tool that caused a warning without bisecting.
+  std::vector<TopoDS_Shape> warning_shapes;
   bool cancelled = false;
   double seconds_intersect = 0, seconds_build = 0;
 };

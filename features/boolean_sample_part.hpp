@@ -37,6 +37,9 @@ struct HollowBladeOptions {
   double min_cavity = 1.0;      ///< mm, blade thickness 2 wall + min_cavity decides x1 (TE side)
   int sections = 9;             ///< core sections over the over-built span
   int points_per_side = 24;     ///< core section points per side
+  /// Verify the core cut with brep::verify_solid (the per-tool volume and history checks always
+  /// run); off saves the whole-part volume and area integrals in smoke runs.
+  bool verify = true;
 };
 
 struct HollowBlade {

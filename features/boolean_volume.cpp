@@ -11,6 +11,7 @@
 #include <BRepAdaptor_Surface.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
+#include <Bnd_OBB.hxx>
 #include <GProp_GProps.hxx>
 #include <GeomAPI_ProjectPointOnSurf.hxx>
 #include <IntTools_Context.hxx>
@@ -22,6 +23,7 @@
 #include <TopoDS.hxx>
 #include <gp_Pnt2d.hxx>
 
+#include <algorithm>
 #include <cmath>
 
 #include "features/verified_boolean.hpp"
@@ -29,9 +31,10 @@
 namespace cg::features {
 namespace {
 
-// Relative accuracy of the face integrals: the volume itself (far below the 1e-6 tolerance), and the
+// Relative accuracy of the face integrals: the volume itself (each face flux is of the order of the
+// tool volume, so this is far below the 1e-6 tolerance), and the
 // closure check, which only has to see gaps the size of a face.
-constexpr double kFluxAccuracy = 1e-9, kClosureAccuracy = 1e-6;
+constexpr double kFluxAccuracy = 1e-7, kClosureAccuracy = 1e-5;
 
 struct OrientedPiece {
   TopoDS_Face face;  ///< oriented so its normal points out of the solid it bounds
@@ -122,8 +125,11 @@ VolumeMeasure measure_tool_volumes(const BooleanRun& run, const TopoDS_Shape& pa
 
   // Tool pieces kept in the result, as oriented there.
   std::vector<Bnd_Box> boxes(n);
+  std::vector<Bnd_OBB> obbs(n);
   for (std::size_t t = 0; t < n; ++t) {
     boxes[t] = box_of(tools[t]);
+    BRepBndLib::AddOBB(tools[t], obbs[t], /*useTriangulation=*/false, /*optimal=*/false, /*useShapeTolerance=*/true);
+    obbs[t].Enlarge(1e-6);
     TopTools_IndexedMapOfShape seen;
     for (TopExp_Explorer e(tools[t], TopAbs_FACE); e.More(); e.Next())
       for (const TopoDS_Shape& piece : pieces_of(run, e.Current())) {
@@ -142,27 +148,67 @@ VolumeMeasure measure_tool_volumes(const BooleanRun& run, const TopoDS_Shape& pa
       if (!result_faces.Contains(piece) && dropped_seen.Add(piece))
         dropped.push_back({orient_like(TopoDS::Face(piece), original), part_sign});
   }
-  std::vector<int> owner(dropped.size(), -1), owners(dropped.size(), 0);
-  OSD_Parallel::For(0, static_cast<int>(dropped.size()), [&](int k) {
-    const TopoDS_Face& f = dropped[static_cast<std::size_t>(k)].face;
-    const Bnd_Box fb = box_of(f);
-    gp_Pnt p;
-    gp_Pnt2d uv;
-    Handle(IntTools_Context) ctx = new IntTools_Context;
-    bool have_point = false;
+  // Candidate tools of each dropped piece by box: tools sorted by their lowest x, so a query only
+  // scans the tools whose x range can reach the piece (no scan of every tool per piece).
+  std::vector<std::vector<int>> candidates(dropped.size());
+  {
+    std::vector<std::pair<double, int>> by_x;
+    double widest = 0;
     for (std::size_t t = 0; t < n; ++t) {
-      if (boxes[t].IsOut(fb)) continue;
-      if (!have_point) {
-        if (BOPTools_AlgoTools3D::PointInFace(f, p, uv, ctx) != 0) return;
-        have_point = true;
-      }
-      BRepClass3d_SolidClassifier cls(tools[t], p, 1e-7);
-      if (cls.State() == TopAbs_IN || cls.State() == TopAbs_ON) {
-        if (owner[static_cast<std::size_t>(k)] < 0) owner[static_cast<std::size_t>(k)] = static_cast<int>(t);
-        ++owners[static_cast<std::size_t>(k)];
+      double c[6];
+      boxes[t].Get(c[0], c[1], c[2], c[3], c[4], c[5]);
+      by_x.emplace_back(c[0], static_cast<int>(t));
+      widest = std::max(widest, c[3] - c[0]);
+    }
+    std::sort(by_x.begin(), by_x.end());
+    for (std::size_t k = 0; k < dropped.size(); ++k) {
+      const Bnd_Box fb = box_of(dropped[k].face);
+      double c[6];
+      fb.Get(c[0], c[1], c[2], c[3], c[4], c[5]);
+      auto it = std::lower_bound(by_x.begin(), by_x.end(), std::make_pair(c[0] - widest, -1));
+      for (; it != by_x.end() && it->first <= c[3]; ++it)
+        if (!boxes[static_cast<std::size_t>(it->second)].IsOut(fb)) candidates[k].push_back(it->second);
+      if (candidates[k].size() > 1) {  // neighbours' axis-aligned boxes overlap: oriented boxes decide
+        Bnd_OBB fo;
+        BRepBndLib::AddOBB(dropped[k].face, fo, false, false, true);
+        std::vector<int> kept;
+        for (const int t : candidates[k])
+          if (!obbs[static_cast<std::size_t>(t)].IsOut(fo)) kept.push_back(t);
+        candidates[k] = kept;
       }
     }
+  }
+  // A point inside each dropped piece, then per tool one classifier for all the pieces it may hold
+  // (building a classifier explores the solid: once per tool, not once per piece).
+  std::vector<gp_Pnt> point(dropped.size());
+  std::vector<char> has_point(dropped.size(), 0);
+  OSD_Parallel::For(0, static_cast<int>(dropped.size()), [&](int k) {
+    if (candidates[static_cast<std::size_t>(k)].empty()) return;
+    gp_Pnt2d uv;
+    Handle(IntTools_Context) ctx = new IntTools_Context;
+    has_point[static_cast<std::size_t>(k)] =
+        BOPTools_AlgoTools3D::PointInFace(dropped[static_cast<std::size_t>(k)].face, point[static_cast<std::size_t>(k)], uv, ctx) == 0;
   }, !parallel);
+  std::vector<std::vector<int>> to_classify(n);
+  for (std::size_t k = 0; k < dropped.size(); ++k)
+    if (has_point[k])
+      for (const int t : candidates[k]) to_classify[static_cast<std::size_t>(t)].push_back(static_cast<int>(k));
+  std::vector<std::vector<int>> inside(n);
+  OSD_Parallel::For(0, static_cast<int>(n), [&](int t) {
+    const std::vector<int>& ks = to_classify[static_cast<std::size_t>(t)];
+    if (ks.empty()) return;
+    BRepClass3d_SolidClassifier cls(tools[static_cast<std::size_t>(t)]);
+    for (const int k : ks) {
+      cls.Perform(point[static_cast<std::size_t>(k)], 1e-7);
+      if (cls.State() == TopAbs_IN || cls.State() == TopAbs_ON) inside[static_cast<std::size_t>(t)].push_back(k);
+    }
+  }, !parallel);
+  std::vector<int> owner(dropped.size(), -1), owners(dropped.size(), 0);
+  for (std::size_t t = 0; t < n; ++t)
+    for (const int k : inside[t]) {
+      if (owner[static_cast<std::size_t>(k)] < 0) owner[static_cast<std::size_t>(k)] = static_cast<int>(t);
+      ++owners[static_cast<std::size_t>(k)];
+    }
   for (std::size_t k = 0; k < dropped.size(); ++k) {
     if (owner[k] < 0) {
       ++m.lost_pieces;

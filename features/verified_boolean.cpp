@@ -47,6 +47,7 @@ struct Unit {
   brep::NamedShape shape;
   std::optional<gp_Ax1> axis;
   double expected = std::numeric_limits<double>::quiet_NaN();
+  double expected_before_retries = std::numeric_limits<double>::quiet_NaN();
   std::string expected_source;
   // Outcome.
   double measured = 0, closure = 0, uncertainty = 0;
@@ -59,6 +60,7 @@ struct Unit {
 struct Attempt {
   brep::NamedShape result;
   std::string failure;        // a failure not attributable to one tool ("" = none)
+  std::string warning;        // BOPAlgo warnings located at the suspects
   std::vector<int> suspects;  // units whose measured volume is wrong
   std::vector<ToolVolume> volumes;
   brep::SolidCheck check;
@@ -72,29 +74,51 @@ class Engine {
       : op_(op), opt_(o), report_(report) {}
 
   std::vector<Unit> units;
+  std::vector<std::string> failures;  // features that could not be applied, with the reason
 
-  // Applies units `ids` to `part`: one boolean; on failure, guilty units are isolated (by their volume
-  // or by bisection) and retried perturbed. Throws FeatureFailure when a unit cannot be applied.
-  brep::NamedShape apply_group(const brep::NamedShape& part, std::vector<int> ids) {
+  // Applies units `ids` to `part`: one boolean; on failure, guilty units are isolated (by their volume,
+  // by the shapes OCCT's warnings name, or by bisection) and retried perturbed. A unit that cannot be
+  // applied is recorded in `failures` and left out. `verify`: run verify_solid on every accepted
+  // boolean (otherwise the caller verifies the final result once).
+  brep::NamedShape apply_group(const brep::NamedShape& part, std::vector<int> ids, bool verify) {
     if (ids.empty()) return part;
-    Attempt a = attempt(part, ids, units_shapes(ids), ids);
+    Attempt a = attempt(part, ids, units_shapes(ids), ids, verify);
     if (a.ok()) return accept(a, ids);
     note(a, ids);
-    if (ids.size() == 1) return retry(part, ids.front(), a);
+    if (ids.size() == 1) return retry(part, ids.front(), a, verify);
     if (a.failure.empty()) {
-      // Only some volumes are wrong: the others first (in one boolean), then each suspect alone.
+      // Only some tools are to blame: the others first (in one boolean), then each suspect alone.
       std::vector<int> rest;
       for (int id : ids)
         if (std::find(a.suspects.begin(), a.suspects.end(), id) == a.suspects.end()) rest.push_back(id);
-      brep::NamedShape r = apply_group(part, rest);
-      for (int id : a.suspects) r = apply_group(r, {id});
+      brep::NamedShape r = apply_group(part, rest, verify);
+      for (int id : a.suspects) r = apply_group(r, {id}, verify);
       return r;
     }
     // Not attributable: bisect (spatially coherent halves).
     sort_spatially(ids);
     const std::vector<int> low(ids.begin(), ids.begin() + static_cast<std::ptrdiff_t>(ids.size() / 2));
     const std::vector<int> high(ids.begin() + static_cast<std::ptrdiff_t>(ids.size() / 2), ids.end());
-    return apply_group(apply_group(part, low), high);
+    return apply_group(apply_group(part, low, verify), high, verify);
+  }
+
+  void reset_outcomes() {
+    for (Unit& u : units) {
+      u.passed = false, u.measured = 0, u.closure = 0, u.uncertainty = 0, u.retries = 0;
+      u.perturbation.clear();
+      u.expected = u.expected_before_retries;
+    }
+  }
+
+  // verify_solid on a result; true when every check passed (the report keeps the check).
+  bool verify_final(const brep::NamedShape& result) {
+    const auto t = Clock::now();
+    brep::VerifyOptions vo = opt_.verify;
+    vo.progress = opt_.progress;
+    report_.check = brep::verify_solid(result.shape, vo);
+    report_.check.one_solid.passed = count_solids(result.shape) == opt_.expected_solids;
+    report_.seconds_verify += since(t);
+    return report_.check.all_passed();
   }
 
  private:
@@ -112,7 +136,7 @@ class Engine {
 
   // `shapes[k]` is the (possibly perturbed) shape of unit ids[k]; `expected` from units unless given.
   Attempt attempt(const brep::NamedShape& part, const std::vector<int>& ids, const std::vector<TopoDS_Shape>& shapes,
-                  const std::vector<int>& for_names, const std::vector<double>* expected = nullptr,
+                  const std::vector<int>& for_names, bool verify, const std::vector<double>* expected = nullptr,
                   const std::vector<const brep::NamedShape*>* named = nullptr) {
     Attempt a;
     ++report_.boolean_runs;
@@ -127,7 +151,10 @@ class Engine {
       return a;
     }
     if (!run.warnings.empty()) {
-      a.failure = "OCCT boolean warned (" + join(run.warnings) + ")";
+      // Attributable when every warning names a shape inside the box of one of the tools.
+      a.suspects = tools_near(run.warning_shapes, ids, shapes);
+      if (a.suspects.empty()) a.failure = "OCCT boolean warned (" + join(run.warnings) + ")";
+      else a.warning = "OCCT boolean warned (" + join(run.warnings) + ")";
       return a;
     }
     t = Clock::now();
@@ -153,7 +180,7 @@ class Engine {
       const double e = expected ? (*expected)[k] : units[static_cast<std::size_t>(ids[k])].expected;
       if (!volume_ok(vm.tools[k].volume, e, vm.tools[k])) a.suspects.push_back(ids[k]);
     }
-    if (!a.ok() || !opt_.verify_result) return a;
+    if (!a.ok() || !verify) return a;
     t = Clock::now();
     brep::VerifyOptions vo = opt_.verify;
     vo.progress = opt_.progress;
@@ -179,7 +206,12 @@ class Engine {
   }
 
   void note(const Attempt& a, const std::vector<int>& ids) {
-    std::string what = a.failure;
+    std::string what = a.failure.empty() ? a.warning : a.failure;
+    if (a.volumes.empty()) {
+      for (int id : a.suspects) what += (what.empty() ? "" : "; ") + std::string("at ") + units[static_cast<std::size_t>(id)].label;
+      report_.warnings.push_back("boolean of " + std::to_string(ids.size()) + " tool(s) rejected: " + what);
+      return;
+    }
     for (int id : a.suspects) {
       const Unit& u = units[static_cast<std::size_t>(id)];
       const auto k = static_cast<std::size_t>(std::find(ids.begin(), ids.end(), id) - ids.begin());
@@ -189,8 +221,9 @@ class Engine {
     report_.warnings.push_back("boolean of " + std::to_string(ids.size()) + " tool(s) rejected: " + what);
   }
 
-  // Unit `id` failed alone on `part`: perturbed retries, else FeatureFailure.
-  brep::NamedShape retry(const brep::NamedShape& part, int id, const Attempt& first) {
+  // Unit `id` failed alone on `part`: perturbed retries; if none passes, the failure is recorded and
+  // the part comes back unchanged (apply() throws FeatureFailure naming every failed feature).
+  brep::NamedShape retry(const brep::NamedShape& part, int id, const Attempt& first, bool verify) {
     Unit& u = units[static_cast<std::size_t>(id)];
     std::string last = describe(first, u);
     for (int k = 1; k <= opt_.max_retries; ++k) {
@@ -198,12 +231,19 @@ class Engine {
       // A shift changes the volume a little: the independent expectation moves by the change OCCT
       // measures (Common before and after the shift), so a wrong expectation stays wrong.
       double expected = u.expected;
-      if (!p.same_geometry)
-        expected += occt_expected_volume(p.shape.shape, part.shape, op_, u.label) -
-                    occt_expected_volume(u.shape.shape, part.shape, op_, u.label);
+      if (!p.same_geometry) {
+        try {
+          expected += occt_expected_volume(p.shape.shape, part.shape, op_, u.label) -
+                      occt_expected_volume(u.shape.shape, part.shape, op_, u.label);
+        } catch (const FeatureFailure& e) {
+          last = e.what();
+          report_.warnings.push_back(u.label + ": retry " + std::to_string(k) + " (" + p.what + ") skipped: " + last);
+          continue;
+        }
+      }
       const std::vector<double> e{expected};
       const std::vector<const brep::NamedShape*> named{&p.shape};
-      Attempt a = attempt(part, {id}, {p.shape.shape}, {id}, &e, &named);
+      Attempt a = attempt(part, {id}, {p.shape.shape}, {id}, verify, &e, &named);
       ++u.retries;
       if (a.ok()) {
         u.perturbation = p.what;
@@ -214,16 +254,45 @@ class Engine {
       last = describe(a, u, expected) + " after " + p.what;
       report_.warnings.push_back(u.label + ": retry " + std::to_string(k) + " (" + p.what + ") rejected: " + last);
     }
-    throw FeatureFailure("feature " + u.label + " could not be applied correctly (" + last + ", " +
-                         std::to_string(opt_.max_retries) + " perturbed retries failed)");
+    failures.push_back("feature " + u.label + " could not be applied correctly (" + last + ", " +
+                       std::to_string(opt_.max_retries) + " perturbed retries failed)");
+    return part;
   }
 
   std::string describe(const Attempt& a, const Unit& u, double expected = std::numeric_limits<double>::quiet_NaN()) const {
     if (!a.failure.empty()) return a.failure;
+    if (!a.warning.empty()) return a.warning;
     if (std::isnan(expected)) expected = u.expected;
     const std::string verb = op_ == BooleanOperation::Cut ? "removed " : "added ";
     return verb + fmt(a.volumes.empty() ? 0 : a.volumes.front().volume) + " mm^3 instead of " + fmt(expected) +
            " mm^3 (closure " + fmt(a.volumes.empty() ? 0 : a.volumes.front().closure) + " mm^3)";
+  }
+
+  // Units among `ids` whose (slightly enlarged) box contains each shape; empty when some shape is null
+  // or lies in no unit's box (then the warning cannot be pinned on a tool).
+  static std::vector<int> tools_near(const std::vector<TopoDS_Shape>& found, const std::vector<int>& ids,
+                                     const std::vector<TopoDS_Shape>& shapes) {
+    std::vector<int> near;
+    std::vector<Bnd_Box> boxes(shapes.size());
+    for (std::size_t k = 0; k < shapes.size(); ++k) {
+      BRepBndLib::Add(shapes[k], boxes[k], false);
+      boxes[k].Enlarge(1e-3);
+    }
+    for (const TopoDS_Shape& f : found) {
+      if (f.IsNull()) return {};
+      Bnd_Box fb;
+      BRepBndLib::Add(f, fb, false);
+      bool located = false;
+      for (std::size_t k = 0; k < shapes.size(); ++k) {
+        double c[6];
+        fb.Get(c[0], c[1], c[2], c[3], c[4], c[5]);
+        if (boxes[k].IsOut(gp_Pnt(c[0], c[1], c[2])) || boxes[k].IsOut(gp_Pnt(c[3], c[4], c[5]))) continue;
+        located = true;
+        if (std::find(near.begin(), near.end(), ids[k]) == near.end()) near.push_back(ids[k]);
+      }
+      if (!located) return {};
+    }
+    return near;
   }
 
   void sort_spatially(std::vector<int>& ids) const {
@@ -317,6 +386,7 @@ brep::NamedShape BooleanStep::apply(const brep::NamedShape& part) {
   // 2. Independent expectations where the features gave none (and of every fused cluster).
   t = Clock::now();
   report_progress(progress, 0.1, "expected volumes");
+  check_cancel(progress, "expected volumes");
   std::vector<int> missing;
   for (std::size_t k = 0; k < engine.units.size(); ++k)
     if (std::isnan(engine.units[k].expected) || engine.units[k].members.size() > 1) missing.push_back(static_cast<int>(k));
@@ -334,11 +404,14 @@ brep::NamedShape BooleanStep::apply(const brep::NamedShape& part) {
     if (!e.empty()) throw FeatureFailure(e);
   report_.seconds_expected = since(t);
 
+  for (Unit& u : engine.units) u.expected_before_retries = u.expected;
+
   // 3. Patches, when many tools reach one face.
   t = Clock::now();
   brep::NamedShape base = part;
   if (options_.patch_min_tools > 0 && static_cast<int>(engine.units.size()) >= options_.patch_min_tools) {
     report_progress(progress, 0.15, "patches");
+    check_cancel(progress, "patches");
     std::vector<TopoDS_Shape> us;
     for (const Unit& u : engine.units) us.push_back(u.shape.shape);
     PatchOptions po;
@@ -364,12 +437,26 @@ brep::NamedShape BooleanStep::apply(const brep::NamedShape& part) {
   report_progress(progress, 0.2, "boolean");
   std::vector<int> all(engine.units.size());
   std::iota(all.begin(), all.end(), 0);
-  brep::NamedShape result = engine.apply_group(base, all);
+  // Cheap checks on every boolean, verify_solid once on the final result; only if that fails are the
+  // booleans redone with verify_solid on each of them, to find the tool to blame.
+  brep::NamedShape result = engine.apply_group(base, all, /*verify=*/false);
+  std::string failure;
+  if (options_.verify_result && engine.failures.empty()) {
+    report_progress(progress, 0.9, "verify");
+    if (!engine.verify_final(result)) {
+      report_.warnings.push_back("the result failed " + report_.check.failed_names() +
+                                 ": booleans redone with verify_solid on each");
+      engine.reset_outcomes();
+      result = engine.apply_group(base, all, /*verify=*/true);
+      if (engine.failures.empty() && !engine.verify_final(result))
+        failure = "the result of the step failed " + report_.check.failed_names() + " although every tool passed alone";
+    }
+  }
+  for (const std::string& f : engine.failures) failure += (failure.empty() ? "" : "; ") + f;
 
-  // 5. Report, one entry per tool in the order they were added.
+  // 5. Report (also when the step fails), one entry per tool in the order they were added.
   report_.tools.assign(tools_.size(), ToolReport{});
-  for (std::size_t k = 0; k < engine.units.size(); ++k) {
-    const Unit& u = engine.units[k];
+  for (const Unit& u : engine.units)
     for (int m : u.members) {
       ToolReport tr;
       tr.feature = tools_[static_cast<std::size_t>(m)].feature;
@@ -384,8 +471,8 @@ brep::NamedShape BooleanStep::apply(const brep::NamedShape& part) {
       tr.passed = u.passed;
       report_.tools[static_cast<std::size_t>(m)] = tr;
     }
-  }
   report_.seconds = since(t0);
+  if (!failure.empty()) throw FeatureFailure(failure);
   report_progress(progress, 1.0, "done");
   done_ = true;
   return result;

@@ -66,7 +66,7 @@ struct BooleanOptions {
   /// Faces reached by at least `patch_min_tools` tools are split into patches of about
   /// `patch_tools_per_patch` tools first (features/boolean_patches.hpp); 0 disables.
   int patch_min_tools = 64;
-  int patch_tools_per_patch = 24;
+  int patch_tools_per_patch = 32;
   /// Run brep::verify_solid on the result (BRepCheck, free edges, shells, closed mesh, volume).
   bool verify_result = true;
   brep::VerifyOptions verify;
@@ -111,7 +111,8 @@ class BooleanStep {
   void add(FeatureTool tool);
   /// Applies every tool to `part` (made disjoint, one boolean with history, checked, guilty tools
   /// found by bisection and retried). Returns the named result; throws FeatureFailure naming the
-  /// feature(s) that failed, InvalidGeometry for a null part or tool, Cancelled when stopped.
+  /// feature(s) that failed (every one of them; report() then still lists each tool's outcome),
+  /// InvalidGeometry for a null part or tool, Cancelled when stopped.
   brep::NamedShape apply(const brep::NamedShape& part);
   bool done() const { return done_; }
   const BooleanStepReport& report() const { return report_; }

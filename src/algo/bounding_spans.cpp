@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstring>
 
+#include "src/core/bezier_ops.hpp"
+
 #include "src/core/error.hpp"
 
 namespace cg {
@@ -38,61 +40,6 @@ BoundingBox<Dim> homogeneous_pole_box(const double* hpoles, int count) {
     box.add(q);
   }
   return box;
-}
-
-void span_bezier_poles(int p, const double* U, int span, const double* poles, int width, double* out) {
-  const double a = U[span], b = U[span + 1];
-  double work[(kMaxDegree + 1) * (kMaxDegree + 1)];
-  for (int j = 0; j <= p; ++j) {
-    // Blossom with arguments a (p - j times) and b (j times); de Boor level r uses argument t_r.
-    std::memcpy(work, poles, sizeof(double) * static_cast<std::size_t>((p + 1) * width));
-    for (int r = 1; r <= p; ++r) {
-      const double t = r <= p - j ? a : b;
-      for (int k = p; k >= r; --k) {
-        const int i = span - p + k;
-        const double alpha = (t - U[i]) / (U[i + p + 1 - r] - U[i]);
-        double* dk = work + k * width;
-        const double* dk1 = work + (k - 1) * width;
-        for (int c = 0; c < width; ++c) dk[c] = (1.0 - alpha) * dk1[c] + alpha * dk[c];
-      }
-    }
-    std::memcpy(out + j * width, work + p * width, sizeof(double) * static_cast<std::size_t>(width));
-  }
-}
-
-void split_bezier(int p, int width, const double* in, double t, double* left, double* right) {
-  // The triangle is built in place in `right`; left[k] takes the first entry of level k.
-  std::memcpy(right, in, sizeof(double) * static_cast<std::size_t>((p + 1) * width));
-  const double s = 1.0 - t;
-  for (int k = 0; k <= p; ++k) {
-    std::memcpy(left + k * width, right, sizeof(double) * static_cast<std::size_t>(width));
-    for (int i = 0; i < p - k; ++i) {
-      double* ri = right + i * width;
-      const double* ri1 = ri + width;
-      for (int c = 0; c < width; ++c) ri[c] = s * ri[c] + t * ri1[c];
-    }
-  }
-  // Entry i of `right` was last updated on level p - i: it is the right half's pole i.
-}
-
-void split_bezier_patch(int pu, int pv, int width, const double* in, bool along_u, double t, double* left,
-                        double* right) {
-  const int n_along = along_u ? pu : pv;
-  const int n_across = along_u ? pv : pu;
-  double line[(kMaxDegree + 1) * 8], l[(kMaxDegree + 1) * 8], r[(kMaxDegree + 1) * 8];
-  require(width <= 8, "split_bezier_patch supports at most 8 doubles per pole");
-  for (int c = 0; c <= n_across; ++c) {
-    for (int k = 0; k <= n_along; ++k) {
-      const int idx = along_u ? k * (pv + 1) + c : c * (pv + 1) + k;
-      std::memcpy(line + k * width, in + idx * width, sizeof(double) * static_cast<std::size_t>(width));
-    }
-    split_bezier(n_along, width, line, t, l, r);
-    for (int k = 0; k <= n_along; ++k) {
-      const int idx = along_u ? k * (pv + 1) + c : c * (pv + 1) + k;
-      std::memcpy(left + idx * width, l + k * width, sizeof(double) * static_cast<std::size_t>(width));
-      std::memcpy(right + idx * width, r + k * width, sizeof(double) * static_cast<std::size_t>(width));
-    }
-  }
 }
 
 template <int Dim>

@@ -5,11 +5,13 @@
 // Bézier poles (strong convex hull property, The NURBS Book 4.2 P4.3 after decomposition 5.6), so the
 // box of those poles bounds the span; the same holds for the (p+1)(q+1) poles of a surface patch.
 // Subdividing a piece (de Casteljau, The NURBS Book A1.5) tightens the bound quadratically.
-// These helpers are the common ground of projection, ray casting and curve-curve intersection.
+// These helpers are the common ground of projection, ray casting and curve-curve intersection; the
+// Bézier kernels themselves (span conversion, de Casteljau) are the shared ones of src/core/bezier_ops.
 #include <Eigen/Core>
 #include <limits>
 #include <vector>
 
+#include "src/core/bezier_ops.hpp"
 #include "src/core/bspline_curve.hpp"
 #include "src/core/bspline_surface.hpp"
 
@@ -48,22 +50,6 @@ struct BoundingBox {
 /// Box of the Cartesian points of `count` homogeneous poles stored consecutively (Dim+1 doubles each).
 template <int Dim>
 BoundingBox<Dim> homogeneous_pole_box(const double* hpoles, int count);
-
-/// Bézier poles of knot span `span` (U[span] < U[span+1]) of a degree-p B-spline whose p+1 relevant
-/// poles (span-p .. span) are stored consecutively, `width` doubles each, in `poles`. Writes p+1
-/// poles to `out`. Each Bézier pole is the blossom f(a^(p-j), b^j) of the span [a, b], evaluated by
-/// de Boor's recursion with a different argument on each level (The NURBS Book 5.6, Ramshaw's polar
-/// form). Exact up to rounding, no allocation.
-void span_bezier_poles(int p, const double* U, int span, const double* poles, int width, double* out);
-
-/// de Casteljau subdivision at t of a degree-p Bézier with `width` doubles per pole (The NURBS Book
-/// A1.5). `left` and `right` receive p+1 poles each and may not alias `in`.
-void split_bezier(int p, int width, const double* in, double t, double* left, double* right);
-
-/// Splits a tensor Bézier patch of degrees (pu, pv), pole (k, l) at offset (k * (pv+1) + l) * width,
-/// at parameter t along u (along_u) or v, into two patches of the same layout.
-void split_bezier_patch(int pu, int pv, int width, const double* in, bool along_u, double t, double* left,
-                        double* right);
 
 /// One non-empty knot span of a curve as a rational Bézier piece.
 template <int Dim>

@@ -10,6 +10,8 @@
 #include "src/algo/offset_exact.hpp"
 #include "src/algo/project_point_curve.hpp"
 #include "src/core/error.hpp"
+#include "src/core/format.hpp"
+#include "src/core/newton.hpp"
 #include "src/modify/split.hpp"
 
 namespace cg {
@@ -22,32 +24,31 @@ double curve_size(const Curve2& c) {
   return s;
 }
 
-double clamp_param(const Curve2& c, double u) {
-  return c.is_periodic() ? u : std::clamp(u, c.first_param(), c.last_param());
-}
-
-// Newton's method on E1(u1) - E2(u2) = 0 with the exact offset derivatives; returns false when it
-// does not converge to the rounding level of the coordinates.
+// Newton's method on E1(u1) - E2(u2) = 0 with the exact offset derivatives (newton::solve_system;
+// periodic bases wrap, others are clamped); returns false when it does not converge to the rounding
+// level of the coordinates.
 bool refine_centre(ExactOffset& e1, ExactOffset& e2, double& u1, double& u2, double scale) {
-  Eigen::Vector2d P1, D1, P2, D2;
-  for (int it = 0; it < 60; ++it) {
-    e1.d1(u1, P1, D1);
-    e2.d1(u2, P2, D2);
-    const Eigen::Vector2d F = P1 - P2;
-    // Cramer's rule on [D1, -D2] step = -F.
-    const double det = -D1.x() * D2.y() + D1.y() * D2.x();
-    if (!(std::abs(det) > 1e-300)) return F.norm() <= 1e-13 * scale;
-    const Eigen::Vector2d step((F.x() * D2.y() - F.y() * D2.x()) / det, (-D1.x() * F.y() + D1.y() * F.x()) / det);
-    const double n1 = clamp_param(e1.base(), u1 + step[0]), n2 = clamp_param(e2.base(), u2 + step[1]);
-    const bool stalled = n1 == u1 && n2 == u2;
-    u1 = n1;
-    u2 = n2;
-    if (stalled || (std::abs(step[0]) <= 1e-15 * (1 + std::abs(u1)) && std::abs(step[1]) <= 1e-15 * (1 + std::abs(u2))))
-      break;
+  newton::Domain<2> dom;
+  const Curve2* base[2] = {&e1.base(), &e2.base()};
+  for (int i = 0; i < 2; ++i) {
+    dom.lo[i] = base[i]->first_param();
+    dom.hi[i] = base[i]->last_param();
+    dom.periodic[static_cast<std::size_t>(i)] = base[i]->is_periodic();
   }
-  e1.d1(u1, P1, D1);
-  e2.d1(u2, P2, D2);
-  return (P1 - P2).norm() <= 1e-11 * scale;
+  newton::SystemOptions opt;
+  opt.max_iterations = 60;
+  Eigen::Vector2d P1, D1, P2, D2;
+  const auto r = newton::solve_system<2>(
+      [&](const Eigen::Vector2d& x, Eigen::Vector2d& F, Eigen::Matrix2d& J) {
+        e1.d1(x[0], P1, D1);
+        e2.d1(x[1], P2, D2);
+        F = P1 - P2;
+        J << D1.x(), -D2.x(), D1.y(), -D2.y();
+      },
+      Eigen::Vector2d(u1, u2), dom, dom.hi - dom.lo, opt);
+  u1 = r.x[0];
+  u2 = r.x[1];
+  return (e1.point(u1) - e2.point(u2)).norm() <= 1e-11 * scale;
 }
 
 bool at_end(const Curve2& c, double u) {
@@ -97,7 +98,7 @@ Fillet2d fillet_2d(const Curve2& c1, const Curve2& c2, double radius, int side1,
     }
   }
   if (cands.empty()) {
-    out.reason = "no fillet of radius " + std::to_string(radius) +
+    out.reason = "no fillet of radius " + format_number(radius) +
                  ": the offset curves do not meet (radius too large for the curves, or parallel curves)";
     return out;
   }
@@ -107,7 +108,7 @@ Fillet2d fillet_2d(const Curve2& c1, const Curve2& c2, double radius, int side1,
   const double x1 = pr1.project(corner).param, x2 = pr2.project(corner).param;
   // The circle may touch but not cut a curve: its global distance to each must be r (to rounding).
   const double touch_tol = 1e-10 * scale;
-  std::string why = "no fillet of radius " + std::to_string(radius) + ": ";
+  std::string why = "no fillet of radius " + format_number(radius) + ": ";
   for (const auto& c : cands) {
     if (at_end(c1, c.u1) || at_end(c2, c.u2)) {
       why += "the circle would touch a curve beyond its end (radius too large for the curves)";

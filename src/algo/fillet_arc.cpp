@@ -5,13 +5,14 @@
 #include <vector>
 
 #include "src/core/error.hpp"
+#include "src/core/format.hpp"
 
 namespace cg {
 
 Curve2 circular_arc(const Eigen::Vector2d& centre, double radius, double start, double sweep, double a, double b) {
-  require(std::isfinite(radius) && radius > 0, "arc radius must be > 0 (got " + std::to_string(radius) + ")");
+  require(std::isfinite(radius) && radius > 0, "arc radius must be > 0 (got " + format_number(radius) + ")");
   require(std::isfinite(sweep) && std::abs(sweep) > 0 && std::abs(sweep) <= 2 * M_PI + 1e-12,
-          "arc sweep must be in (0, 2 pi] in magnitude (got " + std::to_string(sweep) + ")");
+          "arc sweep must be in (0, 2 pi] in magnitude (got " + format_number(sweep) + ")");
   require(std::isfinite(start), "arc start angle must be finite");
   require(a < b, "arc parameter range must satisfy a < b");
   // A7.1: at most 90 deg per segment keeps every middle weight >= cos 45 deg.

@@ -3,29 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "src/core/bezier_ops.hpp"
+
 namespace cg::detail {
 
 namespace {
 constexpr double kPi = 3.14159265358979323846;
-
-// Blossom of the B-spline on span i at arguments x[0..p-1] (de Boor's triangle with a different
-// argument per level, Ramshaw's blossoming principle), written into out[0..2].
-void blossom(const BSplineCurve<2>& c, int i, const double* x, double* out) {
-  const int p = c.degree();
-  const auto& U = c.knots();
-  const auto& H = c.homogeneous_poles();
-  double d[kMaxDegree + 1][3];
-  for (int j = 0; j <= p; ++j)
-    for (int k = 0; k < 3; ++k) d[j][k] = H(k, i - p + j);
-  for (int r = 1; r <= p; ++r)
-    for (int j = p; j >= r; --j) {
-      const int kk = i - p + j;
-      const double den = U[static_cast<std::size_t>(kk + p - r + 1)] - U[static_cast<std::size_t>(kk)];
-      const double al = (x[r - 1] - U[static_cast<std::size_t>(kk)]) / den;
-      for (int k = 0; k < 3; ++k) d[j][k] = (1.0 - al) * d[j - 1][k] + al * d[j][k];
-    }
-  for (int k = 0; k < 3; ++k) out[k] = d[p][k];
-}
 
 // Interval of abscissae j/p where the convex hull of (j/p, v_j) has points with ordinate >= 0.
 bool nonnegative_hull_range(const double* v, int p, double& lo, double& hi) {
@@ -88,10 +71,10 @@ struct ConeBuilder {
 std::vector<BezierPiece2> bezier_pieces(const BSplineCurve<2>& curve) {
   const int p = curve.degree();
   const auto& U = curve.knots();
+  const auto& H = curve.homogeneous_poles();
   std::vector<BezierPiece2> out;
   const int n = curve.num_poles() - 1;
   out.reserve(static_cast<std::size_t>(n - p + 1));
-  double args[kMaxDegree];
   for (int i = p; i <= n; ++i) {
     const double a = U[static_cast<std::size_t>(i)], b = U[static_cast<std::size_t>(i + 1)];
     if (!(b > a)) continue;
@@ -99,47 +82,22 @@ std::vector<BezierPiece2> bezier_pieces(const BSplineCurve<2>& curve) {
     pc.degree = p;
     pc.lo = a;
     pc.hi = b;
-    for (int j = 0; j <= p; ++j) {
-      for (int r = 0; r < p; ++r) args[r] = r < p - j ? a : b;
-      blossom(curve, i, args, pc.h[j]);
-    }
+    span_bezier_poles(p, U.data(), i, H.col(i - p).data(), 3, &pc.h[0][0]);
     out.push_back(pc);
   }
   return out;
 }
 
 void restrict_piece(BezierPiece2& pc, double a, double b) {
-  const int p = pc.degree;
-  if (a > 0.0) {  // keep [a, 1]: the last entry of each de Casteljau level
-    for (int k = 1; k <= p; ++k)
-      for (int i = 0; i <= p - k; ++i)
-        for (int d = 0; d < 3; ++d) pc.h[i][d] = (1.0 - a) * pc.h[i][d] + a * pc.h[i + 1][d];
-  }
-  if (b < 1.0) {  // keep [0, t] of the remainder: the first entry of each level
-    const double t = a > 0.0 ? (b - a) / (1.0 - a) : b;
-    for (int k = 1; k <= p; ++k)
-      for (int i = p; i >= k; --i)
-        for (int d = 0; d < 3; ++d) pc.h[i][d] = (1.0 - t) * pc.h[i - 1][d] + t * pc.h[i][d];
-  }
+  restrict_bezier(pc.degree, 3, &pc.h[0][0], a, b);
   const double lo = pc.lo, w = pc.hi - pc.lo;
   if (a > 0.0) pc.lo = lo + a * w;
   if (b < 1.0) pc.hi = lo + b * w;
 }
 
 void halve_piece(const BezierPiece2& pc, BezierPiece2& left, BezierPiece2& right) {
-  const int p = pc.degree;
-  double q[kMaxDegree + 1][3];
-  for (int i = 0; i <= p; ++i)
-    for (int d = 0; d < 3; ++d) q[i][d] = pc.h[i][d];
-  left.degree = right.degree = p;
-  for (int k = 0; k <= p; ++k) {
-    for (int d = 0; d < 3; ++d) {
-      left.h[k][d] = q[0][d];
-      right.h[p - k][d] = q[p - k][d];
-    }
-    for (int i = 0; i < p - k; ++i)
-      for (int d = 0; d < 3; ++d) q[i][d] = 0.5 * (q[i][d] + q[i + 1][d]);
-  }
+  split_bezier(pc.degree, 3, &pc.h[0][0], 0.5, &left.h[0][0], &right.h[0][0]);
+  left.degree = right.degree = pc.degree;
   const double mid = 0.5 * (pc.lo + pc.hi);
   left.lo = pc.lo;
   left.hi = mid;

@@ -38,14 +38,14 @@ struct BezierPiece2 {
 };
 
 /// The rational Bézier segments of every non-empty knot span of `curve` (periodic curves: one period),
-/// with their global parameter ranges. Each pole is the blossom of the span ends (de Boor's scheme
-/// with per-level arguments), written straight into the fixed-size pieces: decompose_to_bezier
-/// (The NURBS Book A5.6, one heap matrix per segment) took ~40 % of a whole intersection call.
+/// with their global parameter ranges, written straight into the fixed-size pieces by the shared span
+/// conversion (span_bezier_poles, src/core/bezier_ops.hpp) without allocating.
 std::vector<BezierPiece2> bezier_pieces(const BSplineCurve<2>& curve);
 
-/// Keeps the local sub-range [a, b] of the piece (0 <= a < b <= 1) by two de Casteljau splits.
+/// Keeps the local sub-range [a, b] of the piece (0 <= a < b <= 1) (restrict_bezier).
 void restrict_piece(BezierPiece2& piece, double a, double b);
-/// Splits at local 1/2: `left` receives [lo, mid], `right` [mid, hi], sharing the exact mid value.
+/// Splits at local 1/2 (split_bezier): `left` receives [lo, mid], `right` [mid, hi], sharing the exact
+/// mid value.
 void halve_piece(const BezierPiece2& piece, BezierPiece2& left, BezierPiece2& right);
 
 struct Box2 {

@@ -5,12 +5,13 @@
 
 #include "src/algo/intersect_engine.hpp"
 #include "src/core/error.hpp"
+#include "src/core/format.hpp"
 
 namespace cg {
 
 CurveCurveIntersections intersect_curves(const BSplineCurve<2>& a, const BSplineCurve<2>& b, double tol) {
   require(a.num_poles() > 0 && b.num_poles() > 0, "intersect_curves needs two non-empty curves");
-  require(std::isfinite(tol) && tol > 0.0, "intersection tolerance " + std::to_string(tol) + " must be > 0");
+  require(std::isfinite(tol) && tol > 0.0, "intersection tolerance " + format_number(tol) + " must be > 0");
   detail::CurvePairIntersector engine(a, b, tol, false);
   const auto& pa = engine.pieces_a();
   const auto& pb = engine.pieces_b();

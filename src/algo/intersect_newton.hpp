@@ -1,6 +1,6 @@
 #pragma once
-// Newton refinements used by curve-curve intersection, on the B-spline curves themselves (span-cached
-// evaluation with analytic first and second derivatives). Parameters are clamped to the curve domains
+// Newton refinements used by curve-curve intersection (the shared iterations of src/core/newton.hpp)
+// on the B-spline curves themselves (span-cached evaluation with analytic first and second derivatives). Parameters are clamped to the curve domains
 // after each step, so the iterates never leave them.
 #include <Eigen/Core>
 

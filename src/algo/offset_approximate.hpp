@@ -5,10 +5,13 @@
 // a corner contributes an exact circular arc). On each remaining stretch the offset O(u) is smooth
 // except at the base knots, where it is C^(k-1) for a C^k base, so the fit keeps those knots as
 // breakpoints with the matching multiplicity. The fit is a least-squares B-spline in the base
-// parameter (fit_least_squares, The NURBS Book 9.4.1) of degree max(p, 3); it is then VERIFIED:
-// |F(u) - O(u)| at 8(q+1) parameters per knot span (an upper bound of the distance between the two
-// curves) must be <= tol / 2 (a margin for the error between the check points), and every span
-// that fails is halved by a new knot and the fit repeated (Tiller & Hanson 1984 / Piegl & Tiller 1999 "Computing offsets of NURBS curves and surfaces").
+// parameter (fit_least_squares, The NURBS Book 9.4.1) of degree max(p, 3); it is then VERIFIED by a
+// bound: on every knot span, |F(u) - O(u)| (which bounds the distance between the two curves) is at
+// most its value at the ends of short intervals plus sqrt(2) h^2 / 8 times a bound of |F'' - O''|
+// from the convex hulls of the Bézier forms of F and of the base on each interval (see
+// offset_approximate.cpp, verified_span_error); intervals are bisected until the bound is <= tol, and
+// a span whose sampled error exceeds tol / 2 is halved by a new knot and the fit repeated (Tiller &
+// Hanson 1984 / Piegl & Tiller 1999 "Computing offsets of NURBS curves and surfaces").
 #include <vector>
 
 #include "src/algo/offset_exact.hpp"
@@ -19,7 +22,7 @@ namespace cg {
 /// A fitted stretch of an offset: curve parametrised by the base parameter on [u0, u1].
 struct OffsetFit {
   Curve2 curve;
-  double error = 0;  ///< verified max |F(u) - O(u)| over the dense parameters
+  double error = 0;  ///< a proven upper bound of |F(u) - O(u)| over [u0, u1] (<= the tolerance)
 };
 
 /// Fits the exact offset on [u0, u1] (a stretch without cusp or corner inside) within tol.

@@ -6,22 +6,23 @@
 #include <string>
 
 #include "src/core/error.hpp"
+#include "src/core/format.hpp"
 
 namespace cg {
 
-ExactOffset::ExactOffset(const Curve2& base, double distance) : base_(base), d_(distance), ev_(base) {
+ExactOffset::ExactOffset(const Curve2& base, double distance) : d_(distance), ev_(base) {
   require(std::isfinite(distance), "offset distance must be finite");
 }
 
 ExactOffset::Local ExactOffset::eval(double u, int side) {
   // One ulp to the left selects the left knot span; the position moves by |C'| ulp(u) only.
-  if (side < 0 && (base_.is_periodic() || u > base_.first_param()))
+  if (side < 0 && (base().is_periodic() || u > base().first_param()))
     u = std::nextafter(u, -std::numeric_limits<double>::infinity());
   Local L;
   ev_.d2(u, L.C, L.C1, L.C2);
   const double speed = L.C1.norm();
   if (!(speed > 1e-300) || !(speed > 1e-14 * L.C2.norm()))
-    throw InvalidGeometry("offset: the base curve tangent vanishes at u = " + std::to_string(u) +
+    throw InvalidGeometry("offset: the base curve tangent vanishes at u = " + format_number(u) +
                           " (the normal is undefined; the base must be regular)");
   return L;
 }

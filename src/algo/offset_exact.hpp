@@ -23,10 +23,10 @@ namespace cg {
 /// Throws InvalidGeometry where the base tangent vanishes (the normal is undefined there).
 class ExactOffset {
  public:
-  /// `base` must outlive the evaluator.
+  /// Keeps its own copy of `base` (through the evaluator); one ExactOffset per thread.
   ExactOffset(const Curve2& base, double distance);
 
-  const Curve2& base() const { return base_; }
+  const Curve2& base() const { return ev_.curve(); }
   double distance() const { return d_; }
 
   /// Offset point. side = -1 takes the one-sided limit from the left (needed at a knot where the
@@ -44,7 +44,6 @@ class ExactOffset {
     Eigen::Vector2d C, C1, C2;
   };
   Local eval(double u, int side);
-  const Curve2& base_;
   double d_;
   CurveEvaluator<2> ev_;
 };

@@ -11,6 +11,7 @@
 #include "src/algo/project_point_curve.hpp"
 #include "src/algo/self_intersect.hpp"
 #include "src/core/error.hpp"
+#include "src/core/format.hpp"
 #include "src/modify/degree_elevation.hpp"
 #include "src/modify/reparametrize.hpp"
 #include "src/modify/split.hpp"
@@ -186,7 +187,7 @@ TrimmedOffset offset_curve(const Curve2& base, double distance, double tol) {
     if (keep[static_cast<std::size_t>(k)] && !used[static_cast<std::size_t>(k)]) build(k);
 
   if (out.chains.empty())
-    out.reason = "no point of the offset lies at distance |d| = " + std::to_string(ad) +
+    out.reason = "no point of the offset lies at distance |d| = " + format_number(ad) +
                  " from the base curve (e.g. an inward offset beyond the smallest inscribed radius)";
   return out;
 }

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "src/core/error.hpp"
+#include "src/core/newton.hpp"
 #include "src/core/rational.hpp"
 #include "src/algo/distinct_minima.hpp"
 
@@ -23,7 +24,7 @@ constexpr int kMaxH = 3 * kMaxDegree;
 
 template <int Dim>
 CurveProjector<Dim>::CurveProjector(const BSplineCurve<Dim>& curve, double tolerance)
-    : curve_(&curve), ev_(curve), p_(curve.degree()), rational_(curve.is_rational()) {
+    : ev_(curve), p_(curve.degree()), rational_(curve.is_rational()) {
   constexpr int W = Dim + 1;
   const auto spans = curve_bezier_spans(curve);
   nspan_ = static_cast<int>(spans.size());
@@ -42,6 +43,7 @@ CurveProjector<Dim>::CurveProjector(const BSplineCurve<Dim>& curve, double toler
     if (k + 1 == nspan_) knot_points_.push_back(s.hpoles.col(p_).template head<Dim>() / s.hpoles(Dim, p_));
   }
   const double scale = all.diagonal();
+  scale_ = all.hi.cwiseAbs().cwiseMax(all.lo.cwiseAbs()).maxCoeff();
   tol_ = tolerance > 0 ? tolerance : 1e-12 * (1.0 + scale);
   // Two closest points nearer than this are one minimum (the distance is flat to ~tol_ over a
   // parameter range of ~sqrt(tol_) around a minimum, so candidates of one minimum lie this close).
@@ -67,28 +69,61 @@ void CurveProjector<Dim>::consider(double u, double dist, const Point& point) {
   cands_.push_back(Candidate{u, dist, point});
 }
 
-// Newton's method on f(u) = C'(u).(C(u) - P) inside [lo, hi] where f(lo) < 0 < f(hi); a step that
-// leaves the (shrinking) bracket is replaced by bisection, so convergence is guaranteed.
+// Newton's method on f(u) = C'(u).(C(u) - P) inside [lo, hi] where f(lo) < 0 < f(hi), with
+// f' = C''.(C - P) + |C'|^2 (newton::solve_bracketed: bisection safeguard, so it always converges).
 template <int Dim>
 void CurveProjector<Dim>::newton(double lo, double hi, double u) {
   Point C, C1, C2;
   const double eps = 4e-16 * (std::abs(lo) + std::abs(hi) + (hi - lo));
-  for (int it = 0; it < 100; ++it) {
-    ev_.d2(u, C, C1, C2);
-    const Point r = C - P_;
-    const double f = C1.dot(r);
-    const double fp = C2.dot(r) + C1.squaredNorm();
-    if (f < 0) lo = u;
-    else if (f > 0) hi = u;
-    else break;
-    double next = u - f / fp;
-    if (!(fp > 0) || !(next > lo && next < hi)) next = 0.5 * (lo + hi);
-    const bool done = std::abs(next - u) <= eps || hi - lo <= eps;
-    u = next;
-    if (done) break;
-  }
+  u = newton::solve_bracketed(
+      [&](double x, double& df) {
+        ev_.d2(x, C, C1, C2);
+        const Point r = C - P_;
+        df = C2.dot(r) + C1.squaredNorm();
+        return C1.dot(r);
+      },
+      lo, hi, -1, u, eps);
   const Point C0 = ev_.point(u);
   consider(u, (C0 - P_).norm(), C0);
+}
+
+template <int Dim>
+double refine_foot(CurveEvaluator<Dim>& ev, const Eigen::Matrix<double, Dim, 1>& P, double u,
+                   const newton::Domain<1>& dom, int max_iterations, double value_noise) {
+  using Point = Eigen::Matrix<double, Dim, 1>;
+  using V1 = Eigen::Matrix<double, 1, 1>;
+  newton::MinimizeOptions<1> opt;
+  opt.max_iterations = max_iterations;
+  opt.value_noise = value_noise;
+  const double width = std::isfinite(dom.hi[0] - dom.lo[0]) ? dom.hi[0] - dom.lo[0] : 1.0;
+  opt.xtol[0] = 4e-16 * (std::abs(dom.lo[0]) + std::abs(dom.hi[0]) + width);
+  Point C, C1, C2;
+  const auto r = newton::minimize<1>(
+      [&](const V1& x, V1* g, Eigen::Matrix<double, 1, 1>* H) {
+        if (!g) return 0.5 * (ev.point(x[0]) - P).squaredNorm();
+        ev.d2(x[0], C, C1, C2);
+        const Point res = C - P;
+        (*g)[0] = C1.dot(res);
+        (*H)(0, 0) = C1.squaredNorm() + C2.dot(res);
+        return 0.5 * res.squaredNorm();
+      },
+      V1(u), dom, opt);
+  return r.x[0];
+}
+
+// Step 4: refine_foot from c.u over the whole curve (wrapping a periodic curve's parameter).
+template <int Dim>
+typename CurveProjector<Dim>::Candidate CurveProjector<Dim>::polish(const Candidate& c) {
+  const BSplineCurve<Dim>& curve = ev_.curve();
+  newton::Domain<1> dom;
+  dom.lo[0] = curve.first_param();
+  dom.hi[0] = curve.last_param();
+  dom.periodic[0] = curve.is_periodic();
+  // Rounding of |C - P|^2 / 2: |C - P| times the rounding of the coordinates (see newton.hpp).
+  const double ulp = 4e-16 * (scale_ + P_.cwiseAbs().maxCoeff());
+  const double u = refine_foot<Dim>(ev_, P_, c.u, dom, 40, ulp * (c.dist + ulp));
+  const Point q = ev_.point(u);
+  return Candidate{u, (q - P_).norm(), q};
 }
 
 // Examines one Bézier piece [a, b] with homogeneous poles hp; see the header for the method.
@@ -240,7 +275,17 @@ CurveProjection<Dim> CurveProjector<Dim>::run(const Point& P, double max_distanc
   }
   // Distinct minima: greedy by distance, a candidate joins a kept one when their points are within
   // merge_tol_ (the candidates of one minimum lie that close, see the constructor).
-  const std::size_t kept = detail::keep_distinct_minima(cands_, best_ + tol_, merge_tol_);
+  std::size_t kept = detail::keep_distinct_minima(cands_, best_ + tol_, merge_tol_);
+  // Step 4: polish each distinct minimum (never worse), then merge again (two candidates of one foot
+  // may now coincide, and the best may have dropped by up to the tolerance).
+  cands_.resize(kept);
+  for (auto& c : cands_) {
+    const Candidate q = polish(c);
+    if (q.dist <= c.dist) c = q;
+  }
+  double best = cands_[0].dist;
+  for (const auto& c : cands_) best = std::min(best, c.dist);
+  kept = detail::keep_distinct_minima(cands_, best + tol_, merge_tol_);
   res.found = true;
   res.param = cands_[0].u;
   res.point = cands_[0].point;
@@ -277,6 +322,9 @@ CurveProjectionAll<Dim> project_point_on_curve(const BSplineCurve<Dim>& curve,
 template class CurveProjector<1>;
 template class CurveProjector<2>;
 template class CurveProjector<3>;
+template double refine_foot<1>(CurveEvaluator<1>&, const Eigen::Matrix<double, 1, 1>&, double, const newton::Domain<1>&, int, double);
+template double refine_foot<2>(CurveEvaluator<2>&, const Eigen::Vector2d&, double, const newton::Domain<1>&, int, double);
+template double refine_foot<3>(CurveEvaluator<3>&, const Eigen::Vector3d&, double, const newton::Domain<1>&, int, double);
 template CurveProjectionAll<1> project_point_on_curve<1>(const BSplineCurve<1>&, const Eigen::Matrix<double, 1, 1>&);
 template CurveProjectionAll<2> project_point_on_curve<2>(const BSplineCurve<2>&, const Eigen::Vector2d&);
 template CurveProjectionAll<3> project_point_on_curve<3>(const BSplineCurve<3>&, const Eigen::Vector3d&);

@@ -16,6 +16,9 @@
 //     safeguard). Otherwise the piece is split by de Casteljau (A1.5) and both halves are examined.
 //  3. A piece on which |f| is so small that the distance varies by less than the tolerance is
 //     "flat" (e.g. a circle seen from its centre); its end points stand for it.
+//  4. Every distinct minimum is polished by a damped Newton iteration on |C - P|^2 / 2
+//     (newton::minimize, wrapping across the seam of a periodic curve), so a flat piece's end point
+//     (within ~sqrt(tolerance) of the foot) becomes exact to rounding as well.
 // No fixed sampling is used, so no minimum can be missed; the result is exact to rounding (distance)
 // and to ~1e-15 relative (parameter, except at degenerate minima where the distance is flat).
 #include <Eigen/Core>
@@ -25,6 +28,7 @@
 #include "src/algo/bounding_spans.hpp"
 #include "src/core/bspline_curve.hpp"
 #include "src/core/curve_evaluator.hpp"
+#include "src/core/newton.hpp"
 
 namespace cg {
 
@@ -52,8 +56,9 @@ struct CurveProjectionAll : CurveProjection<Dim> {
 };
 
 /// Precomputed projection onto one curve (Bézier pieces, their boxes, a span-cached evaluator) for
-/// many points. Not thread-safe (the evaluator and the work buffers are mutable): one per thread.
-/// The curve must outlive the projector. No heap allocation per query once the buffers have grown.
+/// many points. It owns a copy of the curve (through its evaluator), so it never dangles; a query
+/// mutates work buffers, so one projector per thread. No heap allocation per query once the buffers
+/// have grown.
 template <int Dim>
 class CurveProjector {
  public:
@@ -72,7 +77,7 @@ class CurveProjector {
 
   double tolerance() const { return tol_; }
   double merge_tolerance() const { return merge_tol_; }
-  const BSplineCurve<Dim>& curve() const { return *curve_; }
+  const BSplineCurve<Dim>& curve() const { return ev_.curve(); }
 
  private:
   struct Candidate {
@@ -86,13 +91,13 @@ class CurveProjector {
   void consider(double u, double dist, const Point& point);
   void examine(const double* hp, double a, double b, int depth);
   void newton(double lo, double hi, double u0);
+  Candidate polish(const Candidate& c);
   CurveProjection<Dim> run(const Point& P, double max_distance, std::vector<double>* params);
 
-  const BSplineCurve<Dim>* curve_;
   CurveEvaluator<Dim> ev_;
   int p_ = 0, nspan_ = 0, hdeg_ = 0;
   bool rational_ = false;
-  double tol_ = 0, merge_tol_ = 0;
+  double tol_ = 0, merge_tol_ = 0, scale_ = 0;  // scale_: largest |coordinate| of the poles
   std::vector<double> span_a_, span_b_, span_poles_;  // span_poles_: (p+1)(Dim+1) per span
   std::vector<BoundingBox<Dim>> span_box_;
   std::vector<Point> knot_points_;    // C at span boundaries, nspan + 1
@@ -106,6 +111,14 @@ class CurveProjector {
   std::vector<Piece> stack_;
   std::vector<double> pool_;  // poles of the pieces on stack_, one block per entry
 };
+
+/// Local foot of P on the curve of `ev` from u: damped Newton on |C(u) - P|^2 / 2 (newton::minimize,
+/// gradient (C - P).C', Hessian |C'|^2 + (C - P).C'') on `domain` (clamped, or wrapped when periodic),
+/// accepting steps that raise the squared distance by at most value_noise (its rounding level). Returns
+/// the end parameter. The shared refinement of CurveProjector and of curve-curve intersection.
+template <int Dim>
+double refine_foot(CurveEvaluator<Dim>& ev, const Eigen::Matrix<double, Dim, 1>& P, double u,
+                   const newton::Domain<1>& domain, int max_iterations = 40, double value_noise = 0.0);
 
 /// One-shot projection (builds a CurveProjector): closest point and all minimising parameters.
 template <int Dim>

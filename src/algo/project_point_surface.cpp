@@ -68,11 +68,19 @@ void conv2(const double* a, int na, int ma, const double* b, int nb, int mb, int
 SurfaceProjector::~SurfaceProjector() = default;
 
 SurfaceProjector::SurfaceProjector(const BSplineSurface<3>& surface, double tolerance)
-    : s_(&surface), pu_(surface.degree_u()), pv_(surface.degree_v()), rational_(surface.is_rational()) {
+    : s_(std::make_shared<const BSplineSurface<3>>(surface)),
+      pu_(surface.degree_u()),
+      pv_(surface.degree_v()),
+      rational_(surface.is_rational()) {
   umin_ = surface.first_u();
   umax_ = surface.last_u();
   vmin_ = surface.first_v();
   vmax_ = surface.last_v();
+  domain_.lo = Eigen::Vector2d(umin_, vmin_);
+  domain_.hi = Eigen::Vector2d(umax_, vmax_);
+  domain_.periodic = {surface.is_periodic_u(), surface.is_periodic_v()};
+  newton_.xtol = Eigen::Vector2d(1e-15 * (umax_ - umin_ + std::abs(umax_)), 1e-15 * (vmax_ - vmin_ + std::abs(vmax_)));
+  newton_.shift_extra = 1e-3;
   const auto patches = surface_bezier_patches(surface);
   npatch_ = static_cast<int>(patches.size());
   const int block = (pu_ + 1) * (pv_ + 1) * 4;
@@ -84,13 +92,14 @@ SurfaceProjector::SurfaceProjector(const BSplineSurface<3>& surface, double tole
     patch_poles_.insert(patch_poles_.end(), p.hpoles.data(), p.hpoles.data() + block);
   }
   const double scale = all.diagonal();
+  scale_ = all.hi.cwiseAbs().cwiseMax(all.lo.cwiseAbs()).maxCoeff();
   tol_ = tolerance > 0 ? tolerance : 1e-12 * (1.0 + scale);
   merge_tol_ = 1e-6 * (1.0 + scale);
 
-  // Boundaries (not across a periodic seam) and creases (knots of multiplicity >= degree: C0 lines).
+  // Boundaries (not across a periodic seam) and creases (knots of multiplicity >= degree: C0 lines),
+  // the seam of a periodic direction included when its multiplicity makes it one.
   auto add_iso = [&](bool fixed_u, double value) {
-    IsoCurve iso{fixed_u, value, iso_curve(surface, fixed_u, value), nullptr};
-    iso_.push_back(std::move(iso));
+    iso_.push_back(IsoCurve{fixed_u, value, CurveProjector<3>(iso_curve(surface, fixed_u, value), tol_)});
   };
   if (!surface.is_periodic_u()) {
     add_iso(true, umin_);
@@ -104,12 +113,12 @@ SurfaceProjector::SurfaceProjector(const BSplineSurface<3>& surface, double tole
     const auto& K = dir == 0 ? surface.knots_u() : surface.knots_v();
     const int p = dir == 0 ? pu_ : pv_;
     const double lo = dir == 0 ? umin_ : vmin_, hi = dir == 0 ? umax_ : vmax_;
+    const bool periodic = dir == 0 ? surface.is_periodic_u() : surface.is_periodic_v();
     const auto dk = distinct_knots(K);
     for (std::size_t i = 0; i < dk.values.size(); ++i)
-      if (dk.values[i] > lo && dk.values[i] < hi && dk.mults[i] >= p) add_iso(dir == 0, dk.values[i]);
+      if ((dk.values[i] > lo || (periodic && dk.values[i] == lo)) && dk.values[i] < hi && dk.mults[i] >= p)
+        add_iso(dir == 0, dk.values[i]);
   }
-  // Projectors point at the curves stored in iso_, which no longer moves.
-  for (auto& iso : iso_) iso.proj = std::make_unique<CurveProjector<3>>(iso.curve, tol_);
 
   for (int k = 0; k <= pu_; ++k) bu_.push_back(binomial(pu_, k));
   for (int k = 0; k <= pv_; ++k) bv_.push_back(binomial(pv_, k));
@@ -224,53 +233,41 @@ bool SurfaceProjector::single_critical_point() const {
   return a_min * d_min > e_max * e_max;
 }
 
-// Damped Newton (Levenberg-Marquardt) on grad(|S - P|^2 / 2) = 0 with the analytic Hessian, clamped to
-// the domain, with backtracking so the distance never increases. The end point is a candidate; returns
-// true when it is a critical point (uv receives it).
+// Damped Newton (Levenberg-Marquardt) on grad(|S - P|^2 / 2) = 0 with the analytic Hessian
+// (newton::minimize: clamped to the domain, wrapped across a periodic seam, the distance never
+// increasing). The end point is a candidate; returns true when it is a critical point (uv receives it).
 bool SurfaceProjector::newton(double u, double v, Eigen::Vector2d& uv) {
-  Eigen::Vector3d d[9];
-  const double eu = 1e-15 * (umax_ - umin_ + std::abs(umax_)), ev = 1e-15 * (vmax_ - vmin_ + std::abs(vmax_));
-  Eigen::Vector3d S = s_->point(u, v);
-  double f = 0.5 * (S - P_).squaredNorm();
-  for (int it = 0; it < 40; ++it) {
-    s_->derivatives(u, v, 2, d);
-    const Eigen::Vector3d r = d[0] - P_;
-    const Eigen::Vector3d &Su = d[3], &Sv = d[1], &Suu = d[6], &Suv = d[4], &Svv = d[2];
-    const Eigen::Vector2d g(Su.dot(r), Sv.dot(r));
-    Eigen::Matrix2d H;
-    H << Su.dot(Su) + Suu.dot(r), Su.dot(Sv) + Suv.dot(r), Su.dot(Sv) + Suv.dot(r), Sv.dot(Sv) + Svv.dot(r);
-    // Shift H to positive definite when needed (smallest eigenvalue of a symmetric 2x2).
-    const double tr = H.trace(), det = H(0, 0) * H(1, 1) - H(0, 1) * H(1, 0);
-    const double lmin = 0.5 * tr - std::sqrt(std::max(0.0, 0.25 * tr * tr - det));
-    const double floor = 1e-12 * std::max(1e-300, std::abs(tr));
-    if (lmin < floor) H += Eigen::Matrix2d::Identity() * (floor - lmin + 1e-3 * std::abs(tr));
-    const double dH = H(0, 0) * H(1, 1) - H(0, 1) * H(1, 0);
-    Eigen::Vector2d step(-(H(1, 1) * g[0] - H(0, 1) * g[1]) / dH, -(H(0, 0) * g[1] - H(1, 0) * g[0]) / dH);
-    bool moved = false;
-    for (int half = 0; half < 40; ++half) {
-      const double un = std::clamp(u + step[0], umin_, umax_), vn = std::clamp(v + step[1], vmin_, vmax_);
-      const Eigen::Vector3d Sn = s_->point(un, vn);
-      const double fn = 0.5 * (Sn - P_).squaredNorm();
-      if (fn <= f) {
-        moved = std::abs(un - u) > eu || std::abs(vn - v) > ev;
-        u = un;
-        v = vn;
-        S = Sn;
-        f = fn;
-        break;
-      }
-      step *= 0.5;
-    }
-    if (!moved) break;
-  }
-  consider(u, v, (S - P_).norm(), S);
-  uv = Eigen::Vector2d(u, v);
+  const Candidate c = polish(Candidate{u, v, 0.0, Eigen::Vector3d::Zero()});
+  consider(c.u, c.v, c.dist, c.point);
+  uv = Eigen::Vector2d(c.u, c.v);
   // A critical point: the residual is orthogonal to both tangents to ~1e-9 (Newton converges
   // quadratically, so a converged point is far below this; a stalled one far above).
-  s_->derivatives(u, v, 1, d);
-  const double r = (S - P_).norm();
-  return std::abs(d[2].dot(S - P_)) <= 1e-9 * d[2].norm() * (r + tol_) &&
-         std::abs(d[1].dot(S - P_)) <= 1e-9 * d[1].norm() * (r + tol_);
+  const auto d = s_->derivatives<1>(c.u, c.v);
+  const Eigen::Vector3d r = c.point - P_;
+  return std::abs(d.S_u().dot(r)) <= 1e-9 * d.S_u().norm() * (c.dist + tol_) &&
+         std::abs(d.S_v().dot(r)) <= 1e-9 * d.S_v().norm() * (c.dist + tol_);
+}
+
+// The Newton iteration from c's (u, v); returns the end point with its surface point and distance.
+SurfaceProjector::Candidate SurfaceProjector::polish(const Candidate& c) {
+  auto half_sq_dist = [&](const Eigen::Vector2d& x, Eigen::Vector2d* g, Eigen::Matrix2d* H) {
+    if (!g) return 0.5 * (s_->point(x[0], x[1]) - P_).squaredNorm();
+    const auto d = s_->derivatives<2>(x[0], x[1]);
+    const Eigen::Vector3d r = d.S() - P_;
+    const Eigen::Vector3d &Su = d.S_u(), &Sv = d.S_v();
+    *g = Eigen::Vector2d(Su.dot(r), Sv.dot(r));
+    const double huv = Su.dot(Sv) + d.S_uv().dot(r);
+    *H << Su.dot(Su) + d.S_uu().dot(r), huv, huv, Sv.dot(Sv) + d.S_vv().dot(r);
+    return 0.5 * r.squaredNorm();
+  };
+  // Rounding of |S - P|^2 / 2: |S - P| times the rounding of the coordinates (~1e-16 of their size).
+  newton::MinimizeOptions<2> opt = newton_;
+  const double ulp = 4e-16 * (scale_ + P_.cwiseAbs().maxCoeff());
+  const double d0 = c.dist > 0 ? c.dist : (s_->point(c.u, c.v) - P_).norm();
+  opt.value_noise = ulp * (d0 + ulp);
+  const auto res = newton::minimize<2>(half_sq_dist, Eigen::Vector2d(c.u, c.v), domain_, opt);
+  const Eigen::Vector3d S = s_->point(res.x[0], res.x[1]);
+  return Candidate{res.x[0], res.x[1], (S - P_).norm(), S};
 }
 
 void SurfaceProjector::examine(const double* hp, const Piece& piece) {
@@ -409,7 +406,7 @@ SurfaceProjection SurfaceProjector::run(const Eigen::Vector3d& P, double max_dis
     consider(patch_dom_[static_cast<std::size_t>(k)].u0, patch_dom_[static_cast<std::size_t>(k)].v0, (q - P).norm(), q);
   }
   for (auto& iso : iso_) {
-    const auto r = iso.proj->project(P, best_ + tol_);
+    const auto r = iso.proj.project(P, best_ + tol_);
     if (!r.found) continue;
     if (iso.fixed_u) consider(iso.value, r.param, r.distance, r.point);
     else consider(r.param, iso.value, r.distance, r.point);
@@ -438,7 +435,19 @@ SurfaceProjection SurfaceProjector::run(const Eigen::Vector3d& P, double max_dis
     if (params) params->clear();
     return res;
   }
-  const std::size_t kept = detail::keep_distinct_minima(cands_, best_ + tol_, merge_tol_);
+  std::size_t kept = detail::keep_distinct_minima(cands_, best_ + tol_, merge_tol_);
+  // Step 6: polish every distinct minimum (never worse: Newton does not increase the distance), then
+  // merge again, as two candidates of one foot may now coincide and the best may have dropped.
+  cands_.resize(kept);
+  for (auto& c : cands_) {
+    const Candidate q = polish(c);
+    if (q.dist <= c.dist) c = q;
+    if (domain_.periodic[0]) c.u = newton::Domain<2>::wrap(c.u, umin_, umax_);
+    if (domain_.periodic[1]) c.v = newton::Domain<2>::wrap(c.v, vmin_, vmax_);
+  }
+  double best = cands_[0].dist;
+  for (const auto& c : cands_) best = std::min(best, c.dist);
+  kept = detail::keep_distinct_minima(cands_, best + tol_, merge_tol_);
   res.found = true;
   res.u = cands_[0].u;
   res.v = cands_[0].v;
@@ -459,6 +468,12 @@ SurfaceProjection SurfaceProjector::project(const Eigen::Vector3d& P, double max
 SurfaceProjection SurfaceProjector::project_all(const Eigen::Vector3d& P, std::vector<Eigen::Vector2d>& params,
                                                 double max_distance) {
   return run(P, max_distance, &params);
+}
+
+std::vector<std::pair<bool, double>> SurfaceProjector::iso_curves() const {
+  std::vector<std::pair<bool, double>> out;
+  for (const auto& iso : iso_) out.emplace_back(iso.fixed_u, iso.value);
+  return out;
 }
 
 SurfaceProjection project_point_on_surface(const BSplineSurface<3>& surface, const Eigen::Vector3d& P) {

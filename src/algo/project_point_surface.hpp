@@ -4,8 +4,9 @@
 //
 // Method (branch and bound over Bézier patches, Newton in 2D, boundary curves):
 //  1. The global minimum lies at an interior critical point of the distance, on the surface boundary,
-//     or on a crease (an iso-line at a knot of multiplicity >= degree, where the surface is only C0).
-//     Boundary and crease iso-curves are projected with CurveProjector (global, exact).
+//     or on a crease (an iso-line at a knot of multiplicity >= degree, where the surface is only C0;
+//     in a periodic direction the seam is such a knot when its multiplicity is >= degree). Boundary
+//     and crease iso-curves are projected with CurveProjector (global, exact).
 //  2. Each knot patch is kept in Bézier form. A patch is discarded when a lower bound of its distance
 //     exceeds the best distance: the distance to the box of its poles, or min_j (Q_j - P).n for a unit
 //     direction n (both from the convex hull property).
@@ -18,9 +19,13 @@
 //     converges inside the patch, the patch is resolved.
 //  5. Otherwise Newton's method on grad(|S-P|^2 / 2) = 0 with the analytic Hessian
 //     [S_u.S_u + S_uu.r, S_u.S_v + S_uv.r; ., S_v.S_v + S_vv.r] (The NURBS Book 6.1, eq. 6.6), damped
-//     (Levenberg-Marquardt) and clamped to the domain, gives a candidate, and the patch is split by de
-//     Casteljau along its longer direction. A patch on which the distance varies by less than the
-//     tolerance (bounded from h_u, h_v) is flat: its corners represent it.
+//     (Levenberg-Marquardt, newton::minimize), clamped to the domain and wrapped across a periodic
+//     seam, gives a candidate, and the patch is split by de Casteljau along its longer direction. A
+//     patch on which the distance varies by less than the tolerance (bounded from h_u, h_v) is flat:
+//     its corners represent it.
+//  6. Every distinct minimum found is polished by the same Newton iteration, so a foot point that came
+//     from a flat patch's corner (within ~sqrt(tolerance) of the true foot) is exact to rounding too.
+//     Result parameters of a periodic direction lie in [first, last).
 #include <Eigen/Core>
 #include <limits>
 #include <memory>
@@ -29,6 +34,7 @@
 #include "src/algo/bounding_spans.hpp"
 #include "src/algo/project_point_curve.hpp"
 #include "src/core/bspline_surface.hpp"
+#include "src/core/newton.hpp"
 
 namespace cg {
 
@@ -45,7 +51,8 @@ struct SurfaceProjection {
   bool several_minima() const { return num_minima > 1; }
 };
 
-/// Precomputed projection onto one surface for many points. One per thread; the surface must outlive it.
+/// Precomputed projection onto one surface for many points. It shares ownership of a copy of the
+/// surface (never dangles); a query mutates work buffers, so one projector per thread.
 class SurfaceProjector {
  public:
   /// tolerance <= 0: 1e-12 * (1 + diagonal of the surface's box).
@@ -62,6 +69,8 @@ class SurfaceProjector {
 
   double tolerance() const { return tol_; }
   const BSplineSurface<3>& surface() const { return *s_; }
+  /// The iso-curves projected as boundaries and creases (fixed_u, value), for inspection.
+  std::vector<std::pair<bool, double>> iso_curves() const;
 
  private:
   struct Candidate {
@@ -76,8 +85,7 @@ class SurfaceProjector {
   struct IsoCurve {
     bool fixed_u;
     double value;
-    BSplineCurve<3> curve;
-    std::unique_ptr<CurveProjector<3>> proj;
+    CurveProjector<3> proj;  // owns its curve
   };
   void consider(double u, double v, double dist, const Eigen::Vector3d& point);
   void examine(const double* hp, const Piece& piece);
@@ -85,13 +93,16 @@ class SurfaceProjector {
                           std::vector<double>& out, int& rows, int& cols);
   bool single_critical_point() const;
   bool newton(double u, double v, Eigen::Vector2d& uv);
+  Candidate polish(const Candidate& c);
   SurfaceProjection run(const Eigen::Vector3d& P, double max_distance, std::vector<Eigen::Vector2d>* params);
 
-  const BSplineSurface<3>* s_;
+  std::shared_ptr<const BSplineSurface<3>> s_;
   int pu_ = 0, pv_ = 0, npatch_ = 0;
   bool rational_ = false;
-  double tol_ = 0, merge_tol_ = 0;
+  double tol_ = 0, merge_tol_ = 0, scale_ = 0;  // scale_: largest |coordinate| of the poles
   double umin_ = 0, umax_ = 0, vmin_ = 0, vmax_ = 0;
+  newton::Domain<2> domain_;           // (u, v): clamped, or wrapped in a periodic direction
+  newton::MinimizeOptions<2> newton_;  // the damped Newton iteration of steps 5 and 6
   std::vector<Piece> patch_dom_;
   std::vector<double> patch_poles_;  // (pu+1)(pv+1) x 4 per patch
   std::vector<BoundingBox<3>> patch_box_;

@@ -4,7 +4,9 @@
 #include <cmath>
 #include <cstring>
 
+#include "src/core/bezier_ops.hpp"
 #include "src/core/error.hpp"
+#include "src/core/newton.hpp"
 
 namespace cg {
 
@@ -32,59 +34,45 @@ double sine_to(const Eigen::Matrix<double, Dim, 1>& d, const Eigen::Matrix<doubl
 
 template <int Dim>
 RayCurveCaster<Dim>::RayCurveCaster(const BSplineCurve<Dim>& curve, double hit_tol)
-    : proj_(curve), curve_(&curve) {
+    : proj_(curve) {
   for (const auto& b : curve_span_boxes(curve)) box_.add(b);
   scale_ = box_.diagonal();
   hit_tol_ = hit_tol > 0 ? hit_tol : 1e-9 * (1.0 + scale_);
 }
 
-// Damped Newton on g(s, u) = |o + s d - C(u)|^2 / 2 with the exact Hessian
-// [d.d, -d.C'; -d.C', C'.C' - C''.F], u clamped to the domain, backtracking so g never increases.
-// Returns true when (s, u) is a critical point (gradient ~ 0 relative to the terms).
+// Damped Newton (newton::minimize) on g(s, u) = |o + s d - C(u)|^2 / 2 with the exact Hessian
+// [d.d, -d.C'; -d.C', C'.C' - C''.F], u clamped to the domain, g never increasing. The Hessian is kept
+// positive definite with a floor at the rounding level of its determinant (~1e-16 tr^2), so a
+// degenerate (tangent) minimum still gets full Newton steps. Returns true when (s, u) is a critical
+// point (gradient ~ 0 relative to the terms) or a hit to rounding.
 template <int Dim>
 bool RayCurveCaster<Dim>::closest_approach(const Point& o, const Point& d, double& s, double& u, double& gap) {
-  const double lo = curve_->first_param(), hi = curve_->last_param();
-  const double eu = 1e-15 * (hi - lo + std::abs(hi)), es = 1e-15 * (std::abs(s) + scale_ / d.norm());
+  const BSplineCurve<Dim>& c = curve();
+  newton::Domain<2> dom;
+  dom.lo[1] = c.first_param();
+  dom.hi[1] = c.last_param();
+  newton::MinimizeOptions<2> opt;
+  opt.max_iterations = 60;
+  opt.max_halvings = 50;
+  opt.shift_floor = 1e-18;
+  opt.xtol = Eigen::Vector2d(1e-15 * (std::abs(s) + scale_ / d.norm()), 1e-15 * (dom.hi[1] - dom.lo[1] + std::abs(dom.hi[1])));
   Point D[3];
-  auto value = [&](double ss, double uu) { return 0.5 * (o + ss * d - curve_->point(uu)).squaredNorm(); };
-  double f = value(s, u);
-  bool critical = false;
-  for (int it = 0; it < 60; ++it) {
-    curve_->derivatives(u, 2, D);
-    const Point F = o + s * d - D[0];
-    const double gs = d.dot(F), gu = -D[1].dot(F);
-    critical = std::abs(gs) <= 1e-13 * d.norm() * (F.norm() + scale_) &&
-               std::abs(gu) <= 1e-13 * D[1].norm() * (F.norm() + scale_);
-    double a = d.dot(d), b = -d.dot(D[1]), c = D[1].dot(D[1]) - D[2].dot(F);
-    const double tr = a + c, det = a * c - b * b;
-    const double lmin = 0.5 * tr - std::sqrt(std::max(0.0, 0.25 * tr * tr - det));
-    // Keep H positive definite; the floor is at the rounding level of det (~1e-16 tr^2) so a
-    // degenerate (tangent) minimum still gets full Newton steps.
-    const double floor = 1e-18 * std::abs(tr);
-    if (lmin < floor) {
-      const double shift = floor - lmin;
-      a += shift;
-      c += shift;
-    }
-    const double dd = a * c - b * b;
-    double ds = -(c * gs - b * gu) / dd, du = -(a * gu - b * gs) / dd;
-    bool moved = false;
-    for (int half = 0; half < 50; ++half) {
-      const double sn = s + ds, un = std::clamp(u + du, lo, hi);
-      const double fn = value(sn, un);
-      if (fn <= f) {
-        moved = std::abs(sn - s) > es || std::abs(un - u) > eu;
-        s = sn;
-        u = un;
-        f = fn;
-        break;
-      }
-      ds *= 0.5;
-      du *= 0.5;
-    }
-    if (!moved) break;
-  }
-  gap = std::sqrt(2.0 * f);
+  auto objective = [&](const Eigen::Vector2d& x, Eigen::Vector2d* g, Eigen::Matrix2d* H) {
+    if (!g) return 0.5 * (o + x[0] * d - c.point(x[1])).squaredNorm();
+    c.derivatives(x[1], 2, D);
+    const Point F = o + x[0] * d - D[0];
+    *g = Eigen::Vector2d(d.dot(F), -D[1].dot(F));
+    *H << d.dot(d), -d.dot(D[1]), -d.dot(D[1]), D[1].dot(D[1]) - D[2].dot(F);
+    return 0.5 * F.squaredNorm();
+  };
+  const auto r = newton::minimize<2>(objective, Eigen::Vector2d(s, u), dom, opt);
+  s = r.x[0];
+  u = r.x[1];
+  gap = std::sqrt(2.0 * r.value);
+  c.derivatives(u, 1, D);
+  const Point F = o + s * d - D[0];
+  const bool critical = std::abs(d.dot(F)) <= 1e-13 * d.norm() * (F.norm() + scale_) &&
+                        std::abs(D[1].dot(F)) <= 1e-13 * D[1].norm() * (F.norm() + scale_);
   return critical || gap <= 1e-12 * (1.0 + scale_);
 }
 
@@ -114,9 +102,9 @@ RayCurveHit<Dim> RayCurveCaster<Dim>::first_hit(const Point& o, const Point& d, 
         hit.found = true;
         hit.ray_param = std::max(ss, 0.0);
         hit.curve_param = uu;
-        hit.point = curve_->point(uu);
+        hit.point = curve().point(uu);
         hit.gap = gap;
-        hit.tangent = sine_to<Dim>(d, curve_->derivatives(uu, 1)[1]) <= kTangentSine;
+        hit.tangent = sine_to<Dim>(d, curve().derivatives(uu, 1)[1]) <= kTangentSine;
         return hit;
       }
       // Otherwise a near miss (gap > hit_tol): the march goes on past it with plain sphere steps.
@@ -138,11 +126,9 @@ namespace {
 
 // Value at t of the Bernstein polynomial of degree n with coefficients c (de Casteljau, A1.5).
 double bernstein_value(const double* c, int n, double t) {
-  double q[kMaxDegree + 1];
-  std::copy(c, c + n + 1, q);
-  for (int k = 1; k <= n; ++k)
-    for (int i = 0; i <= n - k; ++i) q[i] = (1.0 - t) * q[i] + t * q[i + 1];
-  return q[0];
+  double v;
+  de_casteljau_point(n, 1, c, t, &v);
+  return v;
 }
 
 struct LineRoots {
@@ -162,24 +148,9 @@ struct LineRoots {
 
   // Bracketed Newton on g in [lo, hi] with g(lo), g(hi) of opposite signs.
   void newton(double lo, double hi, double u) {
-    double glo = g(lo, nullptr);
+    const int sign_lo = g(lo, nullptr) < 0 ? -1 : 1;
     const double eps = 4e-16 * (std::abs(lo) + std::abs(hi) + (hi - lo));
-    for (int it = 0; it < 100; ++it) {
-      double dg = 0;
-      const double gu = g(u, &dg);
-      if (gu == 0) break;
-      if ((gu < 0) == (glo < 0)) {
-        lo = u;
-        glo = gu;
-      } else {
-        hi = u;
-      }
-      double next = u - gu / dg;
-      if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-      const bool done = std::abs(next - u) <= eps || hi - lo <= eps;
-      u = next;
-      if (done) break;
-    }
+    u = newton::solve_bracketed([&](double x, double& dg) { return g(x, &dg); }, lo, hi, sign_lo, u, eps);
     roots->emplace_back(u, false);
   }
 

@@ -49,11 +49,12 @@ class RayCurveCaster {
   RayCurveHit<Dim> first_hit(const Point& origin, const Point& direction,
                              double s_max = std::numeric_limits<double>::infinity());
   double hit_tolerance() const { return hit_tol_; }
+  /// The caster's own copy of the curve (it never dangles; one caster per thread).
+  const BSplineCurve<Dim>& curve() const { return proj_.curve(); }
 
  private:
   bool closest_approach(const Point& o, const Point& d, double& s, double& u, double& gap);
   CurveProjector<Dim> proj_;
-  const BSplineCurve<Dim>* curve_;
   BoundingBox<Dim> box_;
   double scale_ = 0, hit_tol_ = 0;
 };

@@ -8,6 +8,7 @@
 #include <functional>
 
 #include "src/core/error.hpp"
+#include "src/core/newton.hpp"
 
 namespace cg {
 
@@ -20,7 +21,7 @@ constexpr double kTransversalCos = 0.2;
 }  // namespace
 
 RaySurfaceCaster::RaySurfaceCaster(const BSplineSurface<3>& surface, double tolerance)
-    : s_(&surface), pu_(surface.degree_u()), pv_(surface.degree_v()), patches_(surface_bezier_patches(surface)) {
+    : s_(std::make_shared<const BSplineSurface<3>>(surface)), pu_(surface.degree_u()), pv_(surface.degree_v()), patches_(surface_bezier_patches(surface)) {
   BoundingBox<3> all;
   for (const auto& p : patches_) all.add(p.box);
   scale_ = all.diagonal();
@@ -38,43 +39,46 @@ std::size_t RaySurfaceCaster::new_block() {
   return pool_.size() / size - 1;
 }
 
-// Newton on F(s, u, v) = o + s d - S(u, v) = 0 from the patch centre; (u, v) may leave the patch by a
-// margin while converging, a hit must end inside it.
+// Newton on F(s, u, v) = o + s d - S(u, v) = 0 (J = [d, -S_u, -S_v]) from the patch centre, to the
+// residual tol_ (newton::solve_system); (u, v) may leave the patch by half its size while converging,
+// a hit must end inside it.
 bool RaySurfaceCaster::newton(const Item& it, const Eigen::Vector3d& o, const Eigen::Vector3d& d, RaySurfaceHit& hit) {
-  double u = 0.5 * (it.u0 + it.u1), v = 0.5 * (it.v0 + it.v1);
+  const double u = 0.5 * (it.u0 + it.u1), v = 0.5 * (it.v0 + it.v1);
   const double mu = 0.5 * (it.u1 - it.u0), mv = 0.5 * (it.v1 - it.v0);
-  const double ulo = std::max(s_->first_u(), it.u0 - mu), uhi = std::min(s_->last_u(), it.u1 + mu);
-  const double vlo = std::max(s_->first_v(), it.v0 - mv), vhi = std::min(s_->last_v(), it.v1 + mv);
-  Eigen::Vector3d D[4];
-  s_->derivatives(u, v, 1, D);
-  double s = d.dot(D[0] - o) / d.squaredNorm();
-  for (int k = 0; k < 30; ++k) {
-    const Eigen::Vector3d F = o + s * d - D[0];
-    if (F.norm() <= tol_) {
-      const double eu = 1e-12 * (it.u1 - it.u0), ev = 1e-12 * (it.v1 - it.v0);
-      if (u < it.u0 - eu || u > it.u1 + eu || v < it.v0 - ev || v > it.v1 + ev) return false;
-      hit.found = true;
-      hit.ray_param = s;
-      hit.u = u;
-      hit.v = v;
-      hit.point = D[0];
-      hit.gap = F.norm();
-      return true;
-    }
-    Eigen::Matrix3d J;
-    J.col(0) = d;
-    J.col(1) = -D[2];
-    J.col(2) = -D[1];
-    const auto lu = J.partialPivLu();
-    if (!(std::abs(lu.determinant()) > 1e-300)) return false;
-    const Eigen::Vector3d step = lu.solve(-F);
-    if (!step.allFinite()) return false;
-    s += step[0];
-    u = std::clamp(u + step[1], ulo, uhi);
-    v = std::clamp(v + step[2], vlo, vhi);
-    s_->derivatives(u, v, 1, D);
-  }
-  return false;
+  newton::Domain<3> dom;
+  dom.lo[1] = std::max(s_->first_u(), it.u0 - mu);
+  dom.hi[1] = std::min(s_->last_u(), it.u1 + mu);
+  dom.lo[2] = std::max(s_->first_v(), it.v0 - mv);
+  dom.hi[2] = std::min(s_->last_v(), it.v1 + mv);
+  const double s0 = d.dot(s_->point(u, v) - o) / d.squaredNorm();
+  newton::SystemOptions opt;
+  opt.max_iterations = 30;
+  opt.residual_tol = tol_;
+  opt.step_tol = 0;  // only the residual decides: a hit is a point on both
+  opt.max_stalls = 0;
+  const Eigen::Vector3d scale(1.0 + std::abs(s0), it.u1 - it.u0, it.v1 - it.v0);
+  const auto r = newton::solve_system<3>(
+      [&](const Eigen::Vector3d& x, Eigen::Vector3d& F, Eigen::Matrix3d& J) {
+        const auto D = s_->derivatives<1>(x[1], x[2]);
+        F = o + x[0] * d - D.S();
+        J.col(0) = d;
+        J.col(1) = -D.S_u();
+        J.col(2) = -D.S_v();
+      },
+      Eigen::Vector3d(s0, u, v), dom, scale, opt);
+  if (!r.settled || r.singular) return false;
+  const double eu = 1e-12 * (it.u1 - it.u0), ev = 1e-12 * (it.v1 - it.v0);
+  const double hu = r.x[1], hv = r.x[2];
+  if (hu < it.u0 - eu || hu > it.u1 + eu || hv < it.v0 - ev || hv > it.v1 + ev) return false;
+  const Eigen::Vector3d S = s_->point(hu, hv);
+  if (!((o + r.x[0] * d - S).norm() <= tol_)) return false;
+  hit.found = true;
+  hit.ray_param = r.x[0];
+  hit.u = hu;
+  hit.v = hv;
+  hit.point = S;
+  hit.gap = (o + r.x[0] * d - S).norm();
+  return true;
 }
 
 RaySurfaceHit RaySurfaceCaster::first_hit(const Eigen::Vector3d& o, const Eigen::Vector3d& d, double s_max) {

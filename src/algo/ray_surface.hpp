@@ -15,6 +15,7 @@
 // miss.
 #include <Eigen/Core>
 #include <limits>
+#include <memory>
 #include <vector>
 
 #include "src/algo/bounding_spans.hpp"
@@ -30,8 +31,8 @@ struct RaySurfaceHit {
   double gap = 0.0;                                 // |origin + s d - S(u, v)| (rounding)
 };
 
-/// Precomputed ray casting against one surface (patches and their boxes). One per thread; the
-/// surface must outlive it.
+/// Precomputed ray casting against one surface (patches and their boxes). It shares ownership of a
+/// copy of the surface (never dangles); a query mutates work buffers, so one caster per thread.
 class RaySurfaceCaster {
  public:
   /// tolerance <= 0: 1e-12 * (1 + diagonal of the surface's box) (Newton residual for a hit).
@@ -53,7 +54,7 @@ class RaySurfaceCaster {
   bool newton(const Item& it, const Eigen::Vector3d& o, const Eigen::Vector3d& d, RaySurfaceHit& hit);
   std::size_t new_block();
 
-  const BSplineSurface<3>* s_;
+  std::shared_ptr<const BSplineSurface<3>> s_;
   int pu_ = 0, pv_ = 0;
   double tol_ = 0, scale_ = 0;
   std::vector<SurfaceBezierPatch<3>> patches_;

@@ -6,12 +6,13 @@
 
 #include "src/algo/intersect_engine.hpp"
 #include "src/core/error.hpp"
+#include "src/core/format.hpp"
 
 namespace cg {
 
 SelfIntersections self_intersections(const BSplineCurve<2>& curve, double tol) {
   require(curve.num_poles() > 0, "self_intersections needs a non-empty curve");
-  require(std::isfinite(tol) && tol > 0.0, "intersection tolerance " + std::to_string(tol) + " must be > 0");
+  require(std::isfinite(tol) && tol > 0.0, "intersection tolerance " + format_number(tol) + " must be > 0");
   detail::CurvePairIntersector engine(curve, curve, tol, true);
   const auto& pieces = engine.pieces_a();
   std::vector<detail::Box2> boxes;

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "src/core/error.hpp"
+#include "src/core/format.hpp"
 
 namespace cg {
 
@@ -24,8 +25,8 @@ std::vector<ParamInterval> loop_intervals(const std::vector<SelfIntersection>& p
 }
 
 std::vector<ParamInterval> kept_intervals(double first, double last, const std::vector<SelfIntersection>& points) {
-  require(first < last, "kept_intervals: first parameter " + std::to_string(first) + " must be below last " +
-                            std::to_string(last));
+  require(first < last, "kept_intervals: first parameter " + format_number(first) + " must be below last " +
+                            format_number(last));
   std::vector<ParamInterval> kept;
   double start = first;
   for (const auto& l : loop_intervals(points)) {

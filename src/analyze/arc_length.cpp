@@ -3,9 +3,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "src/core/error.hpp"
+#include "src/core/format.hpp"
+#include "src/core/newton.hpp"
 
 namespace cg {
 
@@ -44,27 +47,32 @@ const GaussRule& gauss() {
   return rule;
 }
 
+// The integrand w(C(u)) |C'(u)| (w = 1 when no weight is given).
 template <int Dim>
-double speed(const BSplineCurve<Dim>& c, double u) {
-  typename BSplineCurve<Dim>::Point d[2];
-  c.derivatives(u, 1, d);
-  return d[1].norm();
-}
+struct Integrand {
+  const BSplineCurve<Dim>& curve;
+  typename ArcLength<Dim>::Weight weight;
+  double operator()(double u) const {
+    typename BSplineCurve<Dim>::Point d[2];
+    curve.derivatives(u, 1, d);
+    return weight ? weight(d[0]) * d[1].norm() : d[1].norm();
+  }
+};
 
 template <int Dim>
-double gauss_panel(const BSplineCurve<Dim>& c, double a, double b) {
+double gauss_panel(const Integrand<Dim>& speed, double a, double b) {
   const GaussRule& g = gauss();
   const double h = 0.5 * (b - a), m = 0.5 * (a + b);
   double s = 0;
   for (int i = 0; i < kGaussPoints; ++i)
-    s += g.w[static_cast<std::size_t>(i)] * speed(c, m + h * g.x[static_cast<std::size_t>(i)]);
+    s += g.w[static_cast<std::size_t>(i)] * speed(m + h * g.x[static_cast<std::size_t>(i)]);
   return s * h;
 }
 
 // Recursive bisection until the panel and its halves agree to tol (the halves' sum is returned, its
 // error being far below the difference for a smooth integrand).
 template <int Dim>
-double adaptive(const BSplineCurve<Dim>& c, double a, double b, double whole, double tol, int depth) {
+double adaptive(const Integrand<Dim>& c, double a, double b, double whole, double tol, int depth) {
   const double m = 0.5 * (a + b);
   const double left = gauss_panel(c, a, m), right = gauss_panel(c, m, b);
   const double sum = left + right;
@@ -88,10 +96,10 @@ std::vector<double> span_breaks(const BSplineCurve<Dim>& c, double a, double b) 
 // absolute tolerance). A first pass of one rule per panel estimates the total, which fixes the
 // absolute tolerance; each panel gets the share of it proportional to its parameter length.
 template <int Dim>
-std::vector<double> span_lengths(const BSplineCurve<Dim>& c, const std::vector<double>& breaks, double rel_tol,
+std::vector<double> span_lengths(const Integrand<Dim>& c, const std::vector<double>& breaks, double rel_tol,
                                  double& abs_tol) {
   require(rel_tol >= 1e-15 && rel_tol < 1,
-          "arc length tolerance " + std::to_string(rel_tol) + " out of range [1e-15, 1)");
+          "arc length tolerance " + format_number(rel_tol) + " out of range [1e-15, 1)");
   std::vector<double> len(breaks.size() - 1);
   double estimate = 0;
   for (std::size_t i = 0; i < len.size(); ++i) estimate += len[i] = gauss_panel(c, breaks[i], breaks[i + 1]);
@@ -105,10 +113,24 @@ std::vector<double> span_lengths(const BSplineCurve<Dim>& c, const std::vector<d
 }  // namespace
 
 template <int Dim>
-ArcLength<Dim>::ArcLength(const BSplineCurve<Dim>& curve, double rel_tol) : curve_(&curve) {
-  require(curve.num_poles() > 0, "arc length of an empty curve");
-  breaks_ = span_breaks(curve, curve.first_param(), curve.last_param());
-  const std::vector<double> len = span_lengths(curve, breaks_, rel_tol, tol_);
+ArcLength<Dim>::ArcLength(BSplineCurve<Dim> curve, double rel_tol, Weight weight)
+    : ArcLength(std::move(curve), std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(),
+                rel_tol, weight) {}
+
+template <int Dim>
+ArcLength<Dim>::ArcLength(BSplineCurve<Dim> curve, double a, double b, double rel_tol, Weight weight)
+    : curve_(std::move(curve)), weight_(weight) {
+  require(curve_.num_poles() > 0, "arc length of an empty curve");
+  if (std::isnan(a) && std::isnan(b)) {
+    a = curve_.first_param();
+    b = curve_.last_param();
+  } else {
+    require(a < b && a >= curve_.first_param() && b <= curve_.last_param(),
+            "arc length interval [" + format_number(a) + ", " + format_number(b) + "] must satisfy first = " +
+                format_number(curve_.first_param()) + " <= a < b <= last = " + format_number(curve_.last_param()));
+  }
+  breaks_ = span_breaks(curve_, a, b);
+  const std::vector<double> len = span_lengths(Integrand<Dim>{curve_, weight_}, breaks_, rel_tol, tol_);
   cumulative_.assign(breaks_.size(), 0.0);
   for (std::size_t i = 0; i < len.size(); ++i) cumulative_[i + 1] = cumulative_[i] + len[i];
 }
@@ -117,15 +139,16 @@ template <int Dim>
 double ArcLength<Dim>::integrate(double a, double b) const {
   if (b == a) return 0;
   const double share = std::max(tol_ * std::abs(b - a) / (breaks_.back() - breaks_.front()), 1e-16 * tol_);
-  return adaptive(*curve_, a, b, gauss_panel(*curve_, a, b), share, 0);
+  const Integrand<Dim> f{curve_, weight_};
+  return adaptive(f, a, b, gauss_panel(f, a, b), share, 0);
 }
 
 template <int Dim>
 double ArcLength<Dim>::length_to(double u) const {
   const double a = breaks_.front(), b = breaks_.back();
   const double eps = 1e-12 * (b - a);
-  require(u >= a - eps && u <= b + eps, "parameter " + std::to_string(u) + " outside the curve domain [" +
-                                            std::to_string(a) + ", " + std::to_string(b) + "]");
+  require(u >= a - eps && u <= b + eps, "parameter " + format_number(u) + " outside the curve domain [" +
+                                            format_number(a) + ", " + format_number(b) + "]");
   u = std::clamp(u, a, b);
   if (u == b) return cumulative_.back();
   const std::size_t i =
@@ -136,7 +159,7 @@ double ArcLength<Dim>::length_to(double u) const {
 template <int Dim>
 double ArcLength<Dim>::param_at(double s) const {
   const double L = total();
-  require(s >= -tol_ && s <= L + tol_, "arc length " + std::to_string(s) + " outside [0, " + std::to_string(L) + "]");
+  require(s >= -tol_ && s <= L + tol_, "arc length " + format_number(s) + " outside [0, " + format_number(L) + "]");
   if (s <= 0) return breaks_.front();
   if (s >= L) return breaks_.back();
   std::size_t i =
@@ -145,29 +168,26 @@ double ArcLength<Dim>::param_at(double s) const {
   double lo = breaks_[i], hi = breaks_[i + 1];
   const double span_len = cumulative_[i + 1] - cumulative_[i];
   if (span_len <= 0) return lo;
-  const double x0 = lo;
-  double u = lo + (hi - lo) * (s - cumulative_[i]) / span_len;
-  for (int it = 0; it < 200; ++it) {
-    const double F = cumulative_[i] + integrate(x0, u) - s;
-    if (std::abs(F) <= tol_) return u;
-    (F < 0 ? lo : hi) = u;
-    const double v = speed(*curve_, u);
-    double next = v > 0 ? u - F / v : 0.5 * (lo + hi);
-    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);  // Newton left the bracket: bisect
-    if (std::abs(next - u) <= 4e-16 * (std::abs(u) + (hi - lo))) return next;
-    u = next;
-  }
-  return u;
+  const double x0 = lo, base = cumulative_[i];
+  const double u = lo + (hi - lo) * (s - base) / span_len;
+  // L(u) - s increases with u (derivative: the speed); bracketed Newton stops at |L(u) - s| <= tol.
+  return newton::solve_bracketed(
+      [&](double x, double& dL) {
+        dL = Integrand<Dim>{curve_, weight_}(x);
+        return base + integrate(x0, x) - s;
+      },
+      lo, hi, -1, u, 4e-16 * (std::abs(lo) + std::abs(hi) + (hi - lo)), tol_, 200);
 }
 
 template <int Dim>
 double arc_length(const BSplineCurve<Dim>& curve, double a, double b, double rel_tol) {
-  require(a <= b, "arc length needs a <= b, got a = " + std::to_string(a) + ", b = " + std::to_string(b));
+  require(a <= b, "arc length needs a <= b, got a = " + format_number(a) + ", b = " + format_number(b));
   a = curve.check_param(a);
   if (b != curve.last_param()) b = curve.check_param(b);  // a periodic curve would wrap its end to the start
   if (a == b) return 0;
   double abs_tol;
-  const std::vector<double> len = span_lengths(curve, span_breaks(curve, a, b), rel_tol, abs_tol);
+  const std::vector<double> len =
+      span_lengths(Integrand<Dim>{curve, nullptr}, span_breaks(curve, a, b), rel_tol, abs_tol);
   double sum = 0;
   for (double l : len) sum += l;
   return sum;

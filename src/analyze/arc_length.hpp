@@ -13,15 +13,27 @@
 namespace cg {
 
 /// Arc length table of one curve: lengths of all knot spans, cumulated, so that length_to(u) and
-/// param_at(s) only integrate inside one span. The curve must outlive the table.
+/// param_at(s) only integrate inside one span. A value type: it owns a copy of its curve (so it never
+/// dangles and may be copied), and every member is const and thread-safe.
+///
+/// With a weight w the table integrates w(C(u)) |C'(u)| instead of |C'(u)| (e.g. 1 / r for the
+/// conformal meridional coordinate m' = integral dm / r); w must be smooth and positive on the curve.
 template <int Dim>
 class ArcLength {
  public:
-  /// rel_tol: relative accuracy of every length (>= 1e-15; default 1e-12 of the total length).
-  explicit ArcLength(const BSplineCurve<Dim>& curve, double rel_tol = 1e-12);
+  using Point = typename BSplineCurve<Dim>::Point;
+  using Weight = double (*)(const Point&);
 
+  /// rel_tol: relative accuracy of every length (>= 1e-15; default 1e-12 of the total length).
+  explicit ArcLength(BSplineCurve<Dim> curve, double rel_tol = 1e-12, Weight weight = nullptr);
+  /// The table on [a, b] (first <= a < b <= last of a non-periodic or periodic curve's base period).
+  ArcLength(BSplineCurve<Dim> curve, double a, double b, double rel_tol = 1e-12, Weight weight = nullptr);
+
+  const BSplineCurve<Dim>& curve() const { return curve_; }
+  double first() const { return breaks_.front(); }
+  double last() const { return breaks_.back(); }
   double total() const { return cumulative_.back(); }
-  /// Length from first_param to u (u clamped to the domain within check_param's tolerance).
+  /// Length from first() to u (u clamped to [first(), last()] within 1e-12 of its length).
   double length_to(double u) const;
   /// Length between a and b (negative when b < a).
   double length(double a, double b) const { return length_to(b) - length_to(a); }
@@ -31,7 +43,8 @@ class ArcLength {
 
  private:
   double integrate(double a, double b) const;
-  const BSplineCurve<Dim>* curve_;
+  BSplineCurve<Dim> curve_;
+  Weight weight_ = nullptr;
   double tol_;                      // absolute tolerance (rel_tol * total)
   std::vector<double> breaks_;      // distinct knots in [first, last]
   std::vector<double> cumulative_;  // length from first to breaks_[i]

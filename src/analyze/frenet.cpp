@@ -5,6 +5,7 @@
 #include <string>
 
 #include "src/core/error.hpp"
+#include "src/core/format.hpp"
 
 namespace cg {
 
@@ -31,7 +32,7 @@ double speed_threshold(const BSplineCurve<Dim>& c, double size) {
 }
 
 [[noreturn]] void fail(const char* what, double u, const char* why) {
-  throw AlgorithmFailure(std::string(what) + " undefined at u = " + std::to_string(u) + ": " + why);
+  throw AlgorithmFailure(std::string(what) + " undefined at u = " + format_number(u) + ": " + why);
 }
 
 }  // namespace

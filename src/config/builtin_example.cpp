@@ -6,7 +6,7 @@ const char* builtin_example_json() {
   return R"json({
   "$schema": "../schema/coolinggen.schema.json",
   "name": "hpt_rotor",
-  "description": "High-pressure turbine rotor blade at engine scale: hub radius ~275 mm, span ~55 mm, axial chord ~36 mm; curved hub and casing contours, three parametric sections with twist and thickness taper, fitted between the LE and TE lines.",
+  "description": "High-pressure turbine rotor blade at engine scale: hub radius ~275 mm, span ~55 mm, axial chord ~36 mm; curved hub and casing contours, three parametric sections with twist and thickness taper, fitted between the LE and TE lines. Cooled: 1 mm wall, a radial LE chamber and a 3-pass serpentine (ribs 2 and 3 turn at the tip and the hub), filleted ribs, two hub inlets.",
   "units": "mm",
   "flow_path": {
     "type": "meridional",
@@ -28,6 +28,21 @@ const char* builtin_example_json() {
       "le_radius": 1.3, "te_radius": 0.5}}
   ],
   "blade": {"overbuild": 0.05, "chordwise_samples": 97, "stacking": "centroid"},
+  "cooling": {
+    "core": {
+      "wall_thickness": 1.0,
+      "tip_cap": {"thickness": 1.2},
+      "hub_floor": {"thickness": 2.0},
+      "ribs": [
+        {"suction_chord": 0.24, "pressure_chord": -0.2, "thickness": 1.0, "fillet_radius": 0.5},
+        {"suction_chord": 0.46, "pressure_chord": -0.44, "thickness": 1.0, "fillet_radius": 0.5,
+          "turnaround": {"end": "tip", "gap": 2.5, "tip_radius": 0.5}},
+        {"suction_chord": 0.68, "pressure_chord": -0.66, "thickness": 1.0, "fillet_radius": 0.5,
+          "turnaround": {"end": "hub", "gap": 2.5, "tip_radius": 0.5}}
+      ],
+      "inlets": [{"chamber": 1, "end": "hub", "diameter": 2.0}, {"chamber": 2, "end": "hub", "diameter": 2.5}]
+    }
+  },
   "output": {"step_schema": "AP214"}
 }
 )json";

@@ -13,6 +13,7 @@
 
 #include "src/blade/blade_surface.hpp"
 #include "src/config/config_error.hpp"
+#include "src/config/cooling_config.hpp"
 #include "src/config/grid_config.hpp"
 #include "src/core/progress.hpp"
 
@@ -55,6 +56,7 @@ struct Config {
   std::string description;  ///< "description" (optional)
   blade::BladeDefinition blade;
   OutputOptions output;
+  CoolingConfig cooling;    ///< "cooling" (optional; empty = an uncooled blade)
   MeshConfig mesh;
   GridConfig grid;          ///< "grid" (structured grids around the sections; optional)
   /// One per section, in order; `field` is empty for parametric sections.

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include "src/core/bezier_ops.hpp"
 #include "src/core/error.hpp"
 
 namespace cg {
@@ -35,12 +36,9 @@ bool BezierCurve<Dim>::is_rational() const {
 
 template <int Dim>
 typename BezierCurve<Dim>::Point BezierCurve<Dim>::point(double t) const {
-  HPoint Q[kMaxDegree + 1];
-  const int p = degree();
-  for (int i = 0; i <= p; ++i) Q[i] = hpoles_.col(i);
-  for (int k = 1; k <= p; ++k)
-    for (int i = 0; i <= p - k; ++i) Q[i] = (1.0 - t) * Q[i] + t * Q[i + 1];
-  return Q[0].template head<Dim>() / Q[0][Dim];
+  HPoint Q;
+  de_casteljau_point(degree(), Dim + 1, hpoles_.data(), t, Q.data());
+  return Q.template head<Dim>() / Q[Dim];
 }
 
 template <int Dim>
@@ -52,12 +50,7 @@ template <int Dim>
 std::pair<BezierCurve<Dim>, BezierCurve<Dim>> BezierCurve<Dim>::split(double t) const {
   const int p = degree();
   HPoles left(Dim + 1, p + 1), right(Dim + 1, p + 1);
-  HPoles Q = hpoles_;
-  for (int k = 0; k <= p; ++k) {
-    left.col(k) = Q.col(0);
-    right.col(p - k) = Q.col(p - k);
-    for (int i = 0; i < p - k; ++i) Q.col(i) = (1.0 - t) * Q.col(i) + t * Q.col(i + 1);
-  }
+  split_bezier(p, Dim + 1, hpoles_.data(), t, left.data(), right.data());
   return {BezierCurve(std::move(left)), BezierCurve(std::move(right))};
 }
 

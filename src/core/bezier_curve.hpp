@@ -1,6 +1,7 @@
 #pragma once
 // Rational Bézier curves on [0, 1], evaluated by de Casteljau on the homogeneous poles
-// (The NURBS Book A1.5). Used for Bézier decomposition and subdivision-based algorithms.
+// (The NURBS Book A1.5, the shared kernels of bezier_ops.hpp). Used for Bézier decomposition and
+// subdivision-based algorithms.
 #include <Eigen/Core>
 #include <utility>
 #include <vector>

@@ -5,6 +5,7 @@
 
 #include "src/core/basis.hpp"
 #include "src/core/error.hpp"
+#include "src/core/format.hpp"
 #include "src/core/periodic.hpp"
 #include "src/core/rational.hpp"
 
@@ -42,7 +43,7 @@ void BSplineCurve<Dim>::init(int degree, std::vector<double> knots, HPoles hpole
   for (Eigen::Index i = 0; i < hpoles.cols(); ++i) {
     const double w = hpoles(Dim, i);
     if (!(std::isfinite(w) && w > 0.0))
-      throw InvalidGeometry("weight " + std::to_string(i) + " = " + std::to_string(w) + " must be positive and finite");
+      throw InvalidGeometry("weight " + std::to_string(i) + " = " + format_number(w) + " must be positive and finite");
     if (!hpoles.col(i).allFinite()) throw InvalidGeometry("pole " + std::to_string(i) + " is not finite");
     if (w != 1.0) rational_ = true;
   }
@@ -128,7 +129,7 @@ double BSplineCurve<Dim>::check_param(double u) const {
   require(num_poles() > 0, "evaluation of an empty curve");
   const double a = first_param(), b = last_param();
   // Without this a periodic curve would wrap NaN/inf into a NaN span search.
-  if (!std::isfinite(u)) throw InvalidGeometry("curve parameter " + std::to_string(u) + " is not finite");
+  if (!std::isfinite(u)) throw InvalidGeometry("curve parameter " + format_number(u) + " is not finite");
   if (periodic_) {
     if (u >= a && u < b) return u;
     const double T = b - a;
@@ -138,8 +139,8 @@ double BSplineCurve<Dim>::check_param(double u) const {
   }
   const double eps = 1e-12 * (b - a);
   if (!(u >= a - eps && u <= b + eps))
-    throw InvalidGeometry("parameter " + std::to_string(u) + " outside the curve domain [" + std::to_string(a) +
-                          ", " + std::to_string(b) + "]");
+    throw InvalidGeometry("parameter " + format_number(u) + " outside the curve domain [" + format_number(a) +
+                          ", " + format_number(b) + "]");
   return u < a ? a : (u > b ? b : u);
 }
 
@@ -169,7 +170,7 @@ typename BSplineCurve<Dim>::Point BSplineCurve<Dim>::point(double u) const {
 
 template <int Dim>
 void BSplineCurve<Dim>::homogeneous_derivatives(double u, int order, HPoint* out) const {
-  require(order >= 0, "derivative order must be >= 0");
+  check_derivative_order(order, "curve");
   u = check_param(u);
   const int p = degree_;
   const int s = find_span(knots_.data(), num_poles() - 1, p, u);
@@ -186,14 +187,8 @@ void BSplineCurve<Dim>::homogeneous_derivatives(double u, int order, HPoint* out
 
 template <int Dim>
 void BSplineCurve<Dim>::derivatives(double u, int order, Point* out) const {
-  constexpr int kStack = kMaxDegree + 1;
-  HPoint stack[kStack];
-  std::vector<HPoint> heap;
-  HPoint* hom = stack;
-  if (order >= kStack) {
-    heap.resize(static_cast<std::size_t>(order + 1));
-    hom = heap.data();
-  }
+  check_derivative_order(order, "curve");
+  HPoint hom[kMaxDegree + 1];  // order <= kMaxDegree (checked): no heap allocation
   homogeneous_derivatives(u, order, hom);
   if (!rational_) {
     for (int k = 0; k <= order; ++k) out[k] = hom[k].template head<Dim>();
@@ -204,6 +199,7 @@ void BSplineCurve<Dim>::derivatives(double u, int order, Point* out) const {
 
 template <int Dim>
 std::vector<typename BSplineCurve<Dim>::Point> BSplineCurve<Dim>::derivatives(double u, int order) const {
+  check_derivative_order(order, "curve");
   std::vector<Point> out(static_cast<std::size_t>(order + 1));
   derivatives(u, order, out.data());
   return out;

@@ -70,7 +70,7 @@ class BSplineCurve {
 
   Point point(double u) const;
   HPoint homogeneous_point(double u) const;
-  /// C^(k)(u), k = 0..order, into out[0..order]. No heap allocation for order <= kMaxDegree.
+  /// C^(k)(u), k = 0..order, into out[0..order]; order in [0, kMaxDegree] (InvalidGeometry otherwise).
   void derivatives(double u, int order, Point* out) const;
   std::vector<Point> derivatives(double u, int order) const;
   /// Homogeneous derivatives Cw^(k)(u), k = 0..order (The NURBS Book A3.2 on the 4D curve).

@@ -7,6 +7,7 @@
 
 #include "src/core/basis.hpp"
 #include "src/core/error.hpp"
+#include "src/core/format.hpp"
 #include "src/core/periodic.hpp"
 #include "src/core/rational.hpp"
 
@@ -111,7 +112,7 @@ void BSplineSurface<Dim>::set_periodic(bool periodic_u, bool periodic_v) {
 
 namespace {
 double wrap_or_check(double t, double a, double b, bool periodic, const char* name) {
-  if (!std::isfinite(t)) throw InvalidGeometry(std::string("surface parameter ") + name + " = " + std::to_string(t) + " is not finite");
+  if (!std::isfinite(t)) throw InvalidGeometry(std::string("surface parameter ") + name + " = " + format_number(t) + " is not finite");
   if (periodic) {
     if (t >= a && t < b) return t;
     double r = std::fmod(t - a, b - a);
@@ -120,8 +121,8 @@ double wrap_or_check(double t, double a, double b, bool periodic, const char* na
   }
   const double eps = 1e-12 * (b - a);
   if (!(t >= a - eps && t <= b + eps))
-    throw InvalidGeometry(std::string("surface parameter ") + name + " = " + std::to_string(t) + " outside [" +
-                          std::to_string(a) + ", " + std::to_string(b) + "]");
+    throw InvalidGeometry(std::string("surface parameter ") + name + " = " + format_number(t) + " outside [" +
+                          format_number(a) + ", " + format_number(b) + "]");
   return t < a ? a : (t > b ? b : t);
 }
 }  // namespace
@@ -154,7 +155,7 @@ typename BSplineSurface<Dim>::Point BSplineSurface<Dim>::point(double u, double 
 
 template <int Dim>
 void BSplineSurface<Dim>::derivatives(double u, double v, int order, Point* out) const {
-  require(order >= 0 && order <= kMaxDegree, "surface derivative order must be in [0, 25]");
+  check_derivative_order(order, "surface");
   check_params(u, v);
   const int su = find_span(U_.data(), nu_ - 1, pu_, u);
   const int sv = find_span(V_.data(), nv_ - 1, pv_, v);
@@ -217,9 +218,8 @@ typename BSplineSurface<Dim>::Point BSplineSurface<Dim>::normal(double u, double
   if constexpr (Dim != 3) {
     throw InvalidGeometry("surface normal is defined for 3D surfaces only");
   } else {
-    Point d[4];
-    derivatives(u, v, 1, d);
-    const Point n = d[2].cross(d[1]);  // S_u = d[1*2+0] = d[2], S_v = d[0*2+1] = d[1]
+    const auto d = derivatives<1>(u, v);
+    const Point n = d.S_u().cross(d.S_v());
     const double len = n.norm();
     require(len > 0.0, "surface normal undefined at a degenerate point");
     return n / len;

@@ -10,6 +10,36 @@
 
 namespace cg {
 
+/// The mixed partial derivatives S^(k,l) = d^(k+l) S / du^k dv^l, k + l <= Order, of a surface at one
+/// point, by name (S_u, S_uv, ...) or by (k, l). Entries with k + l > Order are zero. Flat storage
+/// d[k * (Order + 1) + l] is the layout of BSplineSurface::derivatives(u, v, order, out).
+template <int Dim, int Order>
+struct SurfaceDerivatives {
+  static_assert(Order >= 0 && Order <= 3, "named surface derivatives cover orders 0..3");
+  using Point = Eigen::Matrix<double, Dim, 1>;
+  static constexpr int kOrder = Order;
+  Point d[(Order + 1) * (Order + 1)];
+
+  const Point& operator()(int k, int l) const { return d[k * (Order + 1) + l]; }
+  const Point& S() const { return d[0]; }
+  const Point& S_u() const { return at<1, 0>(); }
+  const Point& S_v() const { return at<0, 1>(); }
+  const Point& S_uu() const { return at<2, 0>(); }
+  const Point& S_uv() const { return at<1, 1>(); }
+  const Point& S_vv() const { return at<0, 2>(); }
+  const Point& S_uuu() const { return at<3, 0>(); }
+  const Point& S_uuv() const { return at<2, 1>(); }
+  const Point& S_uvv() const { return at<1, 2>(); }
+  const Point& S_vvv() const { return at<0, 3>(); }
+
+ private:
+  template <int K, int L>
+  const Point& at() const {
+    static_assert(K + L <= Order, "derivative above the order evaluated");
+    return d[K * (Order + 1) + L];
+  }
+};
+
 template <int Dim>
 class BSplineSurface {
   static_assert(Dim >= 1 && Dim <= 3, "BSplineSurface is instantiated for dimensions 1, 2, 3");
@@ -56,8 +86,16 @@ class BSplineSurface {
   void check_params(double& u, double& v) const;
 
   Point point(double u, double v) const;
-  /// Mixed partial derivatives S^(k,l), 0 <= k + l <= order, into out[k * (order + 1) + l]
-  /// ((order+1)^2 entries; entries with k + l > order are set to zero). The NURBS Book A3.6 + A4.4.
+  /// Mixed partials up to Order by name: `const auto d = s.derivatives<2>(u, v); d.S_uv()`.
+  template <int Order>
+  SurfaceDerivatives<Dim, Order> derivatives(double u, double v) const {
+    SurfaceDerivatives<Dim, Order> r;
+    derivatives(u, v, Order, r.d);
+    return r;
+  }
+  /// Flat form: S^(k,l), 0 <= k + l <= order, into out[k * (order + 1) + l] ((order+1)^2 entries;
+  /// entries with k + l > order are set to zero; so out[2] is S_u at order 1 but S_vv at order 2:
+  /// prefer the named form). The NURBS Book A3.6 + A4.4.
   void derivatives(double u, double v, int order, Point* out) const;
   /// Unit normal S_u x S_v / |S_u x S_v| (3D only).
   Point normal(double u, double v) const;

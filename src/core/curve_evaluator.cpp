@@ -5,16 +5,22 @@
 
 #include "src/core/basis.hpp"
 #include "src/core/error.hpp"
+#include "src/core/format.hpp"
 
 namespace cg {
 
 template <int Dim>
 CurveEvaluator<Dim>::CurveEvaluator(const BSplineCurve<Dim>& curve)
-    : curve_(&curve),
-      p_(curve.degree()),
-      n_(curve.num_poles() - 1),
-      rational_(curve.is_rational()),
-      periodic_(curve.is_periodic()) {
+    : CurveEvaluator(std::make_shared<const BSplineCurve<Dim>>(curve)) {}
+
+template <int Dim>
+CurveEvaluator<Dim>::CurveEvaluator(std::shared_ptr<const BSplineCurve<Dim>> shared)
+    : curve_(std::move(shared)),
+      p_(curve_->degree()),
+      n_(curve_->num_poles() - 1),
+      rational_(curve_->is_rational()),
+      periodic_(curve_->is_periodic()) {
+  const BSplineCurve<Dim>& curve = *curve_;
   require(curve.num_poles() > 0, "CurveEvaluator needs a non-empty curve");
   first_ = curve.first_param();
   last_ = curve.last_param();
@@ -50,8 +56,8 @@ void CurveEvaluator<Dim>::relocate(double& u) {
   if (periodic_) {
     u = curve_->check_param(u);  // wraps into the base period; rejects non-finite u
   } else if (!(u >= first_ - eps_ && u <= last_ + eps_)) {
-    throw InvalidGeometry("parameter " + std::to_string(u) + " outside the curve domain [" + std::to_string(first_) +
-                          ", " + std::to_string(last_) + "] (tolerance " + std::to_string(eps_) + ")");
+    throw InvalidGeometry("parameter " + format_number(u) + " outside the curve domain [" + format_number(first_) +
+                          ", " + format_number(last_) + "] (tolerance " + format_number(eps_) + ")");
   }
   if (u >= sp_.lo && u < sp_.hi) return;  // wrapping landed in the current span
   span_ = spans_.find(u);

@@ -5,9 +5,12 @@
 // midpoint), then every point costs one Horner pass. Centring halves the coefficient growth of
 // an expansion at the span start, which keeps the result within a few ulps of de Boor.
 //
-// One evaluator per thread (the cache is mutable); the curve must outlive the evaluator.
+// Ownership and threads: the evaluator shares ownership of an immutable copy of its curve (built from
+// a const reference it copies the curve once; from a shared_ptr it shares it), so it never dangles.
+// Evaluation mutates the span cache: one evaluator per thread. A copy is an independent evaluator.
 #include <Eigen/Core>
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 #include "src/core/bspline_curve.hpp"
@@ -21,6 +24,7 @@ class CurveEvaluator {
   using HPoint = typename BSplineCurve<Dim>::HPoint;
 
   explicit CurveEvaluator(const BSplineCurve<Dim>& curve);
+  explicit CurveEvaluator(std::shared_ptr<const BSplineCurve<Dim>> curve);
 
   Point point(double u);
   void d1(double u, Point& P, Point& D1);
@@ -46,7 +50,7 @@ class CurveEvaluator {
   template <int Order>
   void dispatch(const double* u, std::size_t n, Point* P0, Point* D1, Point* D2);
 
-  const BSplineCurve<Dim>* curve_;
+  std::shared_ptr<const BSplineCurve<Dim>> curve_;
   int p_, n_;
   bool rational_, periodic_;
   double first_, last_, eps_;

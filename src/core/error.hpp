@@ -29,4 +29,8 @@ inline void require(bool condition, const std::string& message) {
   if (!condition) throw InvalidGeometry(message);
 }
 
+/// Throws InvalidGeometry naming the argument and its range unless 0 <= order <= 25 (kMaxDegree:
+/// derivatives above the degree vanish, and higher orders are never needed).
+void check_derivative_order(int order, const char* what);
+
 }  // namespace cg

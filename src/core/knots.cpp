@@ -5,6 +5,7 @@
 #include <string>
 
 #include "src/core/error.hpp"
+#include "src/core/format.hpp"
 
 namespace cg {
 
@@ -20,8 +21,8 @@ void validate_knots(const std::vector<double>& U, int p, int num_poles) {
   for (std::size_t i = 0; i < U.size(); ++i) {
     if (!std::isfinite(U[i])) throw InvalidGeometry("knot " + std::to_string(i) + " is not finite");
     if (i > 0 && U[i] < U[i - 1])
-      throw InvalidGeometry("knots must be non-decreasing: knot " + std::to_string(i) + " = " + std::to_string(U[i]) +
-                            " < knot " + std::to_string(i - 1) + " = " + std::to_string(U[i - 1]));
+      throw InvalidGeometry("knots must be non-decreasing: knot " + std::to_string(i) + " = " + format_number(U[i]) +
+                            " < knot " + std::to_string(i - 1) + " = " + format_number(U[i - 1]));
   }
   require(U[num_poles] > U[p], "empty parameter domain [U[p], U[n+1]]");
   // Interior multiplicity > p would make the curve discontinuous.
@@ -32,7 +33,7 @@ void validate_knots(const std::vector<double>& U, int p, int num_poles) {
     const int mult = static_cast<int>(j - i + 1);
     const bool at_end = (i == 0) || (j == U.size() - 1);
     if (mult > (at_end ? p + 1 : p))
-      throw InvalidGeometry("knot " + std::to_string(U[i]) + " has multiplicity " + std::to_string(mult) +
+      throw InvalidGeometry("knot " + format_number(U[i]) + " has multiplicity " + std::to_string(mult) +
                             ", allowed at most " + std::to_string(at_end ? p + 1 : p));
     i = j + 1;
   }
@@ -164,6 +165,16 @@ std::vector<double> uniform_clamped_knots(int p, int num_poles, double a, double
   }
   for (int j = 1; j < spans; ++j) U[static_cast<std::size_t>(p + j)] = a + (b - a) * j / spans;
   return U;
+}
+
+}  // namespace cg
+
+namespace cg {
+
+void check_derivative_order(int order, const char* what) {
+  if (order < 0 || order > kMaxDegree)
+    throw InvalidGeometry(std::string(what) + " derivative order " + std::to_string(order) + " outside [0, " +
+                          std::to_string(kMaxDegree) + "]");
 }
 
 }  // namespace cg

@@ -7,7 +7,12 @@ namespace cg {
 
 template <int Dim>
 SurfaceEvaluator<Dim>::SurfaceEvaluator(const BSplineSurface<Dim>& s)
-    : s_(&s), pu_(s.degree_u()), pv_(s.degree_v()) {
+    : SurfaceEvaluator(std::make_shared<const BSplineSurface<Dim>>(s)) {}
+
+template <int Dim>
+SurfaceEvaluator<Dim>::SurfaceEvaluator(std::shared_ptr<const BSplineSurface<Dim>> shared)
+    : s_(std::move(shared)), pu_(s_->degree_u()), pv_(s_->degree_v()) {
+  const BSplineSurface<Dim>& s = *s_;
   require(s.num_poles_u() > 0, "SurfaceEvaluator needs a non-empty surface");
   nspan_u_ = s.num_poles_u() - pu_;
   nspan_v_ = s.num_poles_v() - pv_;

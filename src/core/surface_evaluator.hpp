@@ -4,9 +4,11 @@
 // coefficients of the homogeneous surface), then each point costs (p+1)(q+1) fused multiply-adds per
 // coordinate. Batched points() first contracts the patch in u to a polynomial in t and keeps it while
 // u and the patch stay the same, so walking a grid row by row (u outer, v inner) costs (q+1)
-// multiply-adds per point. One evaluator per thread; the surface must outlive the evaluator.
+// multiply-adds per point. Ownership and threads as CurveEvaluator: it shares ownership of an immutable
+// copy of the surface (never dangles); evaluation mutates the cache, so one evaluator per thread.
 #include <Eigen/Core>
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 #include "src/core/bspline_surface.hpp"
@@ -20,6 +22,8 @@ class SurfaceEvaluator {
   using HPoint = typename BSplineSurface<Dim>::HPoint;
 
   explicit SurfaceEvaluator(const BSplineSurface<Dim>& surface);
+  explicit SurfaceEvaluator(std::shared_ptr<const BSplineSurface<Dim>> surface);
+  const BSplineSurface<Dim>& surface() const { return *s_; }
 
   Point point(double u, double v);
   /// Point and first partials S_u, S_v.
@@ -36,7 +40,7 @@ class SurfaceEvaluator {
   template <int PU, int PV>
   void eval_batch(const double* uv, std::size_t n, Point* P);
 
-  const BSplineSurface<Dim>* s_;
+  std::shared_ptr<const BSplineSurface<Dim>> s_;
   int pu_, pv_, nspan_u_, nspan_v_;
   SpanTable spans_u_, spans_v_;
   std::vector<double> coeffs_;  // per patch: (pu+1) x (pv+1) x (Dim+1), index (k*(pv+1)+l)*(Dim+1)

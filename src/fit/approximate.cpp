@@ -11,6 +11,7 @@
 #include "src/core/basis.hpp"
 #include "src/core/curve_evaluator.hpp"
 #include "src/core/error.hpp"
+#include "src/core/format.hpp"
 
 namespace cg {
 
@@ -94,7 +95,7 @@ std::vector<double> distinct_values(const std::vector<double>& U, double a, doub
 }
 
 void check_tolerance(double tol, int npoints, int p) {
-  require(std::isfinite(tol) && tol > 0, "approximation tolerance must be positive, got " + std::to_string(tol));
+  require(std::isfinite(tol) && tol > 0, "approximation tolerance must be positive, got " + format_number(tol));
   require(npoints >= p + 1, "approximation of degree " + std::to_string(p) + " needs at least " +
                                 std::to_string(p + 1) + " points, got " + std::to_string(npoints));
 }

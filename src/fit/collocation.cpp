@@ -7,6 +7,7 @@
 
 #include "src/core/basis.hpp"
 #include "src/core/error.hpp"
+#include "src/core/format.hpp"
 #include "src/core/knots.hpp"
 
 namespace cg {
@@ -31,7 +32,7 @@ Eigen::MatrixXd solve_collocation(int p, const std::vector<double>& U, bool peri
       if (t < a) t += b - a;
     } else {
       require(t >= a && t <= b, "interpolation parameter " + std::to_string(t) + " outside the knot domain [" +
-                                    std::to_string(a) + ", " + std::to_string(b) + "]");
+                                    format_number(a) + ", " + format_number(b) + "]");
     }
     const int s = find_span(U.data(), num_basis - 1, p, t);
     ders_basis_funs(s, t, p, k, U.data(), ders);
@@ -48,7 +49,7 @@ Eigen::MatrixXd solve_collocation(int p, const std::vector<double>& U, bool peri
   if (!periodic)
     for (int r = 0; r < n; ++r)
       if (A.coeff(r, r) == 0.0)
-        throw InvalidGeometry("interpolation parameter " + std::to_string(params[static_cast<std::size_t>(r)]) +
+        throw InvalidGeometry("interpolation parameter " + format_number(params[static_cast<std::size_t>(r)]) +
                               " lies outside the support of basis function " + std::to_string(r) +
                               " (Schoenberg-Whitney condition violated)");
   Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;

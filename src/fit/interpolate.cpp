@@ -5,6 +5,7 @@
 #include <string>
 
 #include "src/core/error.hpp"
+#include "src/core/format.hpp"
 #include "src/fit/collocation.hpp"
 
 namespace cg {
@@ -64,7 +65,7 @@ std::vector<double> interpolation_parameters(const PointList<Dim>& points, Param
   // Coincident consecutive points give a zero chord: a repeated parameter and a singular system.
   for (std::size_t k = 0; k < segments; ++k)
     require(chord[k] > 1e-14 * polygon, "points " + std::to_string(k) + " and " + std::to_string((k + 1) % n) +
-                                            " coincide (distance " + std::to_string(chord[k]) +
+                                            " coincide (distance " + format_number(chord[k]) +
                                             "); consecutive points must be distinct");
   std::vector<double> step(segments);
   for (std::size_t k = 0; k < segments; ++k)

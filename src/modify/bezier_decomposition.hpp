@@ -1,5 +1,6 @@
 #pragma once
-// Decomposition of a B-spline / NURBS curve into its rational Bézier segments (The NURBS Book A5.6).
+// Decomposition of a B-spline / NURBS curve into its rational Bézier segments (the result of The NURBS
+// Book A5.6, computed span by span by the shared span conversion of src/core/bezier_ops.hpp).
 #include <vector>
 
 #include "src/core/bezier_curve.hpp"
@@ -16,8 +17,8 @@ struct BezierDecomposition {
   std::vector<double> breaks;
 };
 
-/// Bézier segments of the curve: every interior knot is raised to multiplicity p (A5.6). A periodic
-/// curve is converted to its clamped form on the base period [first, last] first (seam = break).
+/// Bézier segments of the curve: one per non-empty knot span of [first, last] (a periodic curve's base
+/// period: the seam is a break).
 template <int Dim>
 BezierDecomposition<Dim> decompose_to_bezier(const BSplineCurve<Dim>& curve);
 

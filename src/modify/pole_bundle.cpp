@@ -5,6 +5,7 @@
 #include <string>
 
 #include "src/core/error.hpp"
+#include "src/core/format.hpp"
 #include "src/core/knots.hpp"
 #include "src/core/rational.hpp"  // binomial
 
@@ -13,12 +14,6 @@ namespace {
 
 using Index = Eigen::Index;
 using std::size_t;
-
-std::string num(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", x);
-  return buf;
-}
 
 bool is_clamped(const PoleBundle& b) {
   const auto& U = b.knots;
@@ -263,7 +258,7 @@ void check_multiplicities(const PoleBundle& b, const std::vector<double>& X) {
     const int s = knot_multiplicity(own, X[i]);
     const int total = s + static_cast<int>(j - i);
     if (total > p)
-      throw InvalidGeometry("knot " + num(X[i]) + " would get multiplicity " + std::to_string(total) +
+      throw InvalidGeometry("knot " + format_number(X[i]) + " would get multiplicity " + std::to_string(total) +
                             " (has " + std::to_string(s) + ", inserting " + std::to_string(j - i) +
                             "), more than the degree " + std::to_string(p));
     i = j;
@@ -300,7 +295,7 @@ double checked_param(const PoleBundle& b, double u, const char* what) {
   }
   const double eps = 1e-12 * (c - a);
   if (!(u >= a - eps && u <= c + eps))
-    throw InvalidGeometry(std::string(what) + " " + num(u) + " outside the domain [" + num(a) + ", " + num(c) + "]");
+    throw InvalidGeometry(std::string(what) + " " + format_number(u) + " outside the domain [" + format_number(a) + ", " + format_number(c) + "]");
   return std::clamp(u, a, c);
 }
 
@@ -314,8 +309,8 @@ PoleBundle insert_knot(const PoleBundle& b, double u, int times) {
 
 PoleBundle refine_knots(const PoleBundle& b, const std::vector<double>& X) {
   for (size_t i = 1; i < X.size(); ++i)
-    require(X[i] >= X[i - 1], "refinement knots must be non-decreasing: knot " + std::to_string(i) + " = " + num(X[i]) +
-                                  " < " + num(X[i - 1]));
+    require(X[i] >= X[i - 1], "refinement knots must be non-decreasing: knot " + std::to_string(i) + " = " + format_number(X[i]) +
+                                  " < " + format_number(X[i - 1]));
   if (X.empty()) return b;
   std::vector<double> Y(X.size());
   for (size_t i = 0; i < X.size(); ++i) Y[i] = checked_param(b, X[i], "refinement knot");
@@ -334,16 +329,16 @@ PoleBundle elevate_degree(const PoleBundle& b, int t) {
 
 PoleBundle segment(const PoleBundle& b, double a, double c) {
   require(std::isfinite(a) && std::isfinite(c) && a < c,
-          "segment bounds must satisfy a < b, got [" + num(a) + ", " + num(c) + "]");
+          "segment bounds must satisfy a < b, got [" + format_number(a) + ", " + format_number(c) + "]");
   if (!b.periodic) {
     a = checked_param(b, a, "segment start");
     c = checked_param(b, c, "segment end");
-    require(a < c, "segment [" + num(a) + ", " + num(c) + "] is empty after clamping to the domain");
+    require(a < c, "segment [" + format_number(a) + ", " + format_number(c) + "] is empty after clamping to the domain");
     return segment_raw(b, a, c);
   }
   const double T = b.period();
   if (c - a > T) {
-    require(c - a <= T * (1.0 + 1e-12), "segment length " + num(c - a) + " exceeds the period " + num(T));
+    require(c - a <= T * (1.0 + 1e-12), "segment length " + format_number(c - a) + " exceeds the period " + format_number(T));
     c = a + T;
   }
   // Shift [a, c] so that a lies in the base period; the extension covers [t0 - T, t0 + 2T] ⊃ [a', a' + T].
@@ -362,8 +357,8 @@ PoleBundle segment(const PoleBundle& b, double a, double c) {
 std::pair<PoleBundle, PoleBundle> split(const PoleBundle& b, double u) {
   const PoleBundle c = clamped(b);
   require(std::isfinite(u) && u > c.first() && u < c.last(),
-          "split parameter " + num(u) + " must lie strictly inside the domain (" + num(c.first()) + ", " +
-              num(c.last()) + ")");
+          "split parameter " + format_number(u) + " must lie strictly inside the domain (" + format_number(c.first()) + ", " +
+              format_number(c.last()) + ")");
   std::vector<double> X;
   append_to_multiplicity_p(c, u, X);
   const PoleBundle r = refine_raw(c, X);
@@ -375,47 +370,6 @@ PoleBundle clamped(const PoleBundle& b) {
   PoleBundle open = b;  // the unwrapped periodic form is a valid unclamped B-spline on [first, last]
   open.periodic = false;
   return segment_raw(open, b.first(), b.last());
-}
-
-std::vector<Eigen::MatrixXd> bezier_segments(const PoleBundle& B, std::vector<double>& breaks) {
-  // The NURBS Book A5.6 (DecomposeCurve).
-  const int p = B.degree, n = B.num_poles() - 1, m = n + p + 1;
-  const auto& U = B.knots;
-  const auto& P = B.poles;
-  std::vector<Eigen::MatrixXd> Q;
-  breaks.assign(1, U[static_cast<size_t>(p)]);
-  Q.emplace_back(P.leftCols(p + 1));
-  std::vector<double> alphas(static_cast<size_t>(p));
-  int a = p, b = p + 1;
-  while (b < m) {
-    const int i = b;
-    while (b < m && U[static_cast<size_t>(b + 1)] == U[static_cast<size_t>(b)]) ++b;
-    const int mult = b - i + 1;
-    Eigen::MatrixXd next(P.rows(), p + 1);
-    if (mult < p) {
-      const double numer = U[static_cast<size_t>(b)] - U[static_cast<size_t>(a)];
-      for (int j = p; j > mult; --j)
-        alphas[static_cast<size_t>(j - mult - 1)] = numer / (U[static_cast<size_t>(a + j)] - U[static_cast<size_t>(a)]);
-      const int r = p - mult;
-      auto& cur = Q.back();
-      for (int j = 1; j <= r; ++j) {
-        const int save = r - j, s = mult + j;
-        for (int k = p; k >= s; --k) {
-          const double al = alphas[static_cast<size_t>(k - s)];
-          cur.col(k) = al * cur.col(k) + (1.0 - al) * cur.col(k - 1);
-        }
-        if (b < m) next.col(save) = cur.col(p);
-      }
-    }
-    breaks.push_back(U[static_cast<size_t>(b)]);
-    if (b < m) {
-      for (int j = p - mult; j <= p; ++j) next.col(j) = P.col(b - p + j);
-      Q.push_back(std::move(next));
-      a = b;
-      ++b;
-    }
-  }
-  return Q;
 }
 
 PoleBundle reversed(const PoleBundle& b) {

@@ -64,10 +64,6 @@ std::pair<PoleBundle, PoleBundle> split(const PoleBundle& b, double u);
 /// Returns b unchanged when it is already clamped and non-periodic.
 PoleBundle clamped(const PoleBundle& b);
 
-/// Bézier segments of a clamped non-periodic bundle (The NURBS Book A5.6): one (p+1)-column matrix per
-/// non-empty knot span, and the span breakpoints (segments + 1 values).
-std::vector<Eigen::MatrixXd> bezier_segments(const PoleBundle& b, std::vector<double>& breaks);
-
 /// C(first + last - u): knots reflected, poles reversed (periodic stays periodic, as OCCT's Reverse).
 PoleBundle reversed(const PoleBundle& b);
 

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "src/core/error.hpp"
+#include "src/core/format.hpp"
 #include "src/modify/pole_bundle.hpp"
 
 namespace cg {
@@ -16,7 +17,7 @@ BSplineCurve<Dim> reversed(const BSplineCurve<Dim>& curve) {
 template <int Dim>
 BSplineCurve<Dim> reparametrized(const BSplineCurve<Dim>& curve, double a, double b) {
   require(std::isfinite(a) && std::isfinite(b) && a < b,
-          "reparametrisation interval [" + std::to_string(a) + ", " + std::to_string(b) + "] must satisfy a < b");
+          "reparametrisation interval [" + format_number(a) + ", " + format_number(b) + "] must satisfy a < b");
   const double f = curve.first_param(), l = curve.last_param();
   const double scale = (b - a) / (l - f);
   // Domain ends map exactly onto a and b; other knots keep their order because the map is monotone.

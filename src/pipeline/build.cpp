@@ -1,6 +1,7 @@
 #include "src/pipeline/build.hpp"
 
 #include "src/brep/blade_solid.hpp"
+#include "src/pipeline/cooling.hpp"
 #include "src/pipeline/outputs.hpp"
 #include "src/pipeline/stage_runner.hpp"
 
@@ -23,7 +24,9 @@ std::string BuildResult::failed_checks() const {
 
 blade::BladeModel validate(const config::Config& config, ProgressSink* progress) {
   check_output_options(config);
-  return config::build_model(config, progress);
+  blade::BladeModel model = config::build_model(config, progress);
+  if (!config.cooling.empty()) validate_cooling(config.cooling, model);  // ms: no solid needed
+  return model;
 }
 
 BuildResult run_build(const config::Config& config, const BuildOptions& options, ProgressSink* progress) {
@@ -36,10 +39,23 @@ BuildResult run_build(const config::Config& config, const BuildOptions& options,
     r.uncooled = {solid.solid, solid.faces};
     r.part.push_back({"blade", {solid.solid, std::move(solid.faces)}});
   });
+  std::optional<brep::SolidCheck> cooled_check;
+  if (!config.cooling.empty())
+    stages.run("cooling", "cooling features (chambers, ribs, passages)", [&] {
+      features::PassagesResult cooled = apply_cooling(config.cooling, r.model, r.part.front().geometry);
+      r.part.front().geometry = std::move(cooled.blade);
+      r.cooling = std::move(cooled.report);
+      cooled_check = cooled.check;
+    });
   stages.run("verify", "checks (BRepCheck, free edges, closed mesh, volume)", [&] {
     brep::VerifyOptions vo = options.verify;
     vo.progress = progress;
-    for (const brep::NamedBody& body : r.part) r.checks.push_back(brep::verify_solid(body.geometry.shape, vo));
+    // The cooling stage verified the cooled blade with the default options after its last step.
+    const brep::VerifyOptions defaults;
+    const bool reuse = cooled_check && vo.mesh_relative_deflection == defaults.mesh_relative_deflection &&
+                       vo.mesh_angular_deflection == defaults.mesh_angular_deflection;
+    for (std::size_t i = 0; i < r.part.size(); ++i)
+      r.checks.push_back(i == 0 && reuse ? *cooled_check : brep::verify_solid(r.part[i].geometry.shape, vo));
   });
   return r;
 }

@@ -8,12 +8,16 @@
 // Stages, in order (ids as in BuildResult::timings, the progress sink and report.json):
 //   blade_model  config -> blade model (config::build_model; errors are ConfigError naming the field)
 //   solid        blade surface trimmed to the flow path (brep::build_blade_solid) -> Part bodies[0]
-//   verify       brep::verify_solid on every body of the Part
+//   cooling      the configured cooling features built into bodies[0] (src/pipeline/cooling.hpp; only
+//                when the config has a "cooling" section); its last boolean step verifies the blade
+//   verify       brep::verify_solid on every body of the Part (the cooled blade's check is reused)
 // A later stage slots in as one more StageRunner::run call in run_build (e.g. cooling features applied
 // to bodies[0].geometry between "solid" and "verify"); outputs are added in output_formats.cpp.
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "features/passage_report.hpp"
 #include "src/blade/blade_surface.hpp"
 #include "src/brep/named_shape.hpp"
 #include "src/brep/verify.hpp"
@@ -47,6 +51,8 @@ struct BuildResult {
   std::vector<std::string> warnings;
   /// Stages in run order.
   std::vector<StageTiming> timings;
+  /// What the cooling stage measured (design checks, passage sections, volumes); none when uncooled.
+  std::optional<features::PassageReport> cooling;
 
   /// Every check of every body passed.
   bool valid() const;
@@ -60,8 +66,9 @@ struct BuildResult {
 /// throw: see BuildResult::valid().
 BuildResult run_build(const config::Config& config, const BuildOptions& options = {}, ProgressSink* progress = nullptr);
 
-/// What `coolinggen validate` checks without building the solid: the config's output options and the
-/// blade model (returned). Throws ConfigError.
+/// What `coolinggen validate` checks without building the solid: the config's output options, the
+/// blade model (returned) and the cooling input that needs only the model (pipeline/cooling.hpp).
+/// Throws ConfigError.
 blade::BladeModel validate(const config::Config& config, ProgressSink* progress = nullptr);
 
 }  // namespace cg::pipeline

@@ -93,10 +93,14 @@ std::string input_hash(const config::Config& c) {
     h.update(s);
   };
   part(c.source.dump());
+  std::vector<std::string> files;
   for (const auto& s : c.blade.sections) {
     const auto* p = std::get_if<blade::PointSectionDefinition>(&s.shape);
-    if (!p || p->file.empty()) continue;
-    std::ifstream in(p->file, std::ios::binary);
+    if (p && !p->file.empty()) files.push_back(p->file);
+  }
+  files.insert(files.end(), c.cooling.source_files.begin(), c.cooling.source_files.end());
+  for (const std::string& f : files) {
+    std::ifstream in(f, std::ios::binary);
     std::stringstream bytes;
     bytes << in.rdbuf();
     part(in ? bytes.str() : std::string("<unreadable>"));
@@ -114,6 +118,7 @@ io::ReportContent report_content(const config::Config& c, const BuildResult& r, 
   rc.warnings = r.warnings;
   rc.model = report_model(c, r.model);
   rc.model["source"] = c.source_file.empty() ? "<built-in example>" : c.source_file;
+  if (r.cooling) rc.model["cooling"] = r.cooling->to_json();
   for (const StageTiming& s : timings) rc.timings_s[s.stage] = s.seconds;
   rc.outputs = outputs;
   return rc;

@@ -18,8 +18,8 @@ namespace cg::pipeline {
 nlohmann::ordered_json report_model(const config::Config& config, const blade::BladeModel& model);
 
 /// "sha256:<hex>" of the canonical config (the parsed document, keys sorted) and the bytes of every
-/// section point file it reads, in section order: equal for equal inputs, whatever the formatting or
-/// the files' location.
+/// section point file it reads, in section order, then of the cooling section's table files: equal for
+/// equal inputs, whatever the formatting or the files' location.
 std::string input_hash(const config::Config& config);
 
 /// The report of `result` for the files `outputs` (report.json included) and the stage `timings`.

@@ -154,11 +154,42 @@ BOOST_AUTO_TEST_CASE(line_circle_vs_chfi2d) {
   BOOST_TEST((o.centre - f.centre).norm() <= kOcctTol);
 }
 
+namespace {
+
+// Independent check that a circle (centre, r) is a fillet of the corner on `side` of both curves
+// (+1 left of the tangent): its centre is at GLOBAL distance r from each curve (it touches and does
+// not cut them; CurveProjector, verified against OCCT and dense sampling in test_project_curve), each
+// touching point lies inside its curve (not at an end) and the centre lies on `side` of each curve
+// there (for fillet_corner_2d both sides are the inside of the turn: the arc sits in the corner).
+bool is_fillet(const Curve2& c1, const Curve2& c2, const Eigen::Vector2d& centre, double r, int side, double tol) {
+  for (const Curve2* c : {&c1, &c2}) {
+    const auto pr = project_point_on_curve(*c, centre);
+    if (std::abs(pr.distance - r) > tol) return false;
+    const double span = c->last_param() - c->first_param();
+    for (double u : pr.params) {
+      if (u <= c->first_param() + 1e-9 * span || u >= c->last_param() - 1e-9 * span) return false;
+      const Eigen::Vector2d t = c->derivatives(u, 1)[1];
+      if (cross(t, centre - c->point(u)) * side <= 0) return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+// Random B-spline corners against ChFi2d_FilletAPI. Every case is decided, none skipped:
+//  - ours found: it must pass is_fillet at 1e-12 (ours is exact to rounding);
+//  - OCCT found: its circle is checked by is_fillet at 2e-7 (ChFi2d's iterative accuracy, ~1e-7);
+//  - both found and valid: equal centres (within 2e-7), or ours is the one nearer to the corner (the
+//    documented choice; OCCT returned another local solution) - ours farther is a failure;
+//  - only OCCT found a valid fillet: a failure of ours; an invalid OCCT circle is counted as OCCT's error;
+//  - only ours found: counted (ChFi2d's iteration did not converge); neither: ours must give a reason.
 BOOST_AUTO_TEST_CASE(bspline_corners_vs_chfi2d) {
   test::Rng rng(31);
-  int compared = 0;
+  int same = 0, ours_nearer = 0, only_ours = 0, occt_invalid = 0, neither = 0;
   // 60 cases: ChFi2d's iterative algorithm takes ~0.1 s per B-spline corner (ours ~10 ms).
-  for (int i = 0; i < 60; ++i) {
+  const int cases = 60;
+  for (int i = 0; i < cases; ++i) {
     // Two random curves (degrees 2..5, polynomial and rational) moved so that c1 ends where c2
     // starts, turning by 40..140 degrees there.
     const int p1 = rng.integer(2, 5), p2 = rng.integer(2, 5);
@@ -177,22 +208,42 @@ BOOST_AUTO_TEST_CASE(bspline_corners_vs_chfi2d) {
       H2.col(k).head<2>() = Rm * H2.col(k).head<2>() + (end1 - start) * H2(2, k);
     c2 = Curve2::from_homogeneous(p2, c2.knots(), H2);
     const double r = rng.uniform(0.1, 1.0);
+    const int side = turn > 0 ? 1 : -1;
+    const Eigen::Vector2d corner = c1.point(c1.last_param());
+    const double size = 1 + std::max(test::pole_scale(c1), test::pole_scale(c2));
     const Fillet2d f = fillet_corner_2d(c1, c2, r);
     const OcctFillet o = occt_fillet(c1, c2, r);
-    if (!f.found || !o.found) continue;
-    if ((o.centre - f.centre).norm() > 1e-3) continue;  // OCCT picked another local solution
-    check_fillet(c1, c2, f, r);
-    check_corner_chain(f);
-    // Ours is exact: the centre is at distance r from both curves to rounding.
-    BOOST_TEST(std::abs(CurveProjector<2>(c1).project(f.centre).distance - r) <= 1e-12 * (1 + f.centre.norm()));
-    BOOST_TEST(std::abs(CurveProjector<2>(c2).project(f.centre).distance - r) <= 1e-12 * (1 + f.centre.norm()));
-    // OCCT's iterative fillet leaves a tangency residual up to ~1e-7 on one curve (measured
-    // 9.7e-8 here, curves of size ~10), which moves its centre by up to ~1.5x that.
-    BOOST_TEST((o.centre - f.centre).norm() <= 2 * kOcctTol);
-    BOOST_TEST(std::abs(o.radius - r) <= kOcctTol);
-    ++compared;
+    if (f.found) {
+      check_fillet(c1, c2, f, r);
+      check_corner_chain(f);
+      BOOST_TEST(is_fillet(c1, c2, f.centre, r, side, 1e-12 * size), "case " << i << ": ours is not a fillet");
+    }
+    const bool occt_valid = o.found && std::abs(o.radius - r) <= kOcctTol && is_fillet(c1, c2, o.centre, r, side, 2 * kOcctTol);
+    // OCCT's invalid circles (measured: tangent to one curve from the outside of the corner, or cutting
+    // a curve) are other tangent circles, not fillets inside this corner.
+    if (o.found && !occt_valid) ++occt_invalid;
+    if (f.found && occt_valid) {
+      if ((o.centre - f.centre).norm() <= 2 * kOcctTol) {
+        ++same;
+      } else {
+        // Two valid fillets: ours must be the one nearer to the corner.
+        BOOST_TEST((f.centre - corner).norm() <= (o.centre - corner).norm() + 2 * kOcctTol,
+                   "case " << i << ": OCCT's fillet is nearer to the corner");
+        ++ours_nearer;
+      }
+    } else if (occt_valid) {
+      BOOST_TEST(f.found, "case " << i << ": OCCT found a valid fillet, ours none: " << f.reason);
+    } else if (f.found) {
+      ++only_ours;
+    } else {
+      BOOST_TEST(!f.reason.empty());
+      ++neither;
+    }
   }
-  BOOST_TEST(compared >= 30);
+  std::printf("fillets vs ChFi2d: %d cases: %d same centre, %d ours nearer to the corner, %d only ours valid, %d "
+              "OCCT circles not a corner fillet, %d none by both\n", cases, same, ours_nearer, only_ours, occt_invalid,
+              neither);
+  BOOST_TEST(same + ours_nearer >= cases / 2);  // the comparison is not vacuous
 }
 
 BOOST_AUTO_TEST_CASE(crossing_curves_choose_the_quadrant) {

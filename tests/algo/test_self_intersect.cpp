@@ -1,7 +1,7 @@
 // self_intersections and loop untangling.
 // - Against OCCT's one-curve Geom2dAPI_InterCurveCurve(C, 1e-6) on 1000 random curves (polynomial
 //   and rational, degrees 1..7, repeated knots): every OCCT crossing must have one of ours within
-//   1e-9, widened by the conditioning 1/sin(angle) as in test_intersect_vs_occt; our extra points
+//   a bounded radius (small-angle crossings: along the curve) as in test_intersect_vs_occt; our extra points
 //   must be true self-intersections (|C(s1) - C(s2)| < 1e-9 with s1 < s2 distinct).
 // - Figure-eight (exact symmetric crossing at the origin), a symmetric looped cubic, a cusp without
 //   a loop, a closed circle (its seam is no self-intersection), the offset of the parabola y = x^2 by
@@ -54,10 +54,22 @@ BOOST_AUTO_TEST_CASE(random_curves_vs_occt) {
         ++occt_loose;
         continue;
       }
-      const double radius = 1e-9 + (gap + 1e-13) / std::max(crossing_sine(c, s, t), 1e-300);
+      // Bounded match, as in test_intersect_vs_occt: a transversal crossing (sine >= 1e-3) within the
+      // Euclidean radius 1e-9 + (gap + 1e-13) / sine <= 2e-6; a small-angle one within that distance
+      // along the curve at both parameters, capped at 1e-4.
+      const double sine = crossing_sine(c, s, t);
+      const bool transversal = sine >= 1e-3;
+      const double radius = transversal ? 1e-9 + (gap + 1e-13) / sine : std::min(1e-9 + (gap + 1e-13) / sine, 1e-4);
+      auto along = [&](double a, double b) { return std::abs(b - a) * c.derivatives(a, 1)[1].norm(); };
       bool found = false;
-      for (std::size_t j = 0; j < ours.points.size(); ++j)
-        if ((ours.points[j].point - p).norm() <= radius) found = matched[j] = true;
+      for (std::size_t j = 0; j < ours.points.size(); ++j) {
+        const auto& q = ours.points[j];
+        // Our pair is ordered s1 < s2; OCCT's may come either way round.
+        const bool near = transversal ? (q.point - p).norm() <= radius
+                                      : std::min(std::max(along(s, q.s1), along(t, q.s2)),
+                                                 std::max(along(s, q.s2), along(t, q.s1))) <= radius;
+        if (near) found = matched[j] = true;
+      }
       if (!found) {
         ++missed;
         std::printf("curve %d: missed OCCT self-intersection s=%.17g t=%.17g\n", i, s, t);

@@ -24,6 +24,7 @@ namespace {
 json c3x_config() {
   json d = json::parse(read_text(COOLINGGEN_SOURCE_DIR "/data/examples/c3x_vane.json"));
   d["sections"][0]["points"]["file"] = COOLINGGEN_SOURCE_DIR "/data/c3x/profile_table3_cm.csv";
+  d.erase("cooling");  // these tests are about the section input
   return d;
 }
 
@@ -167,6 +168,7 @@ BOOST_AUTO_TEST_CASE(no_stale_outputs) {
 BOOST_AUTO_TEST_CASE(span_range_of_the_schema) {
   TempDir dir("cli_span");
   json d = json::parse(read_text(COOLINGGEN_SOURCE_DIR "/data/examples/hpt_rotor.json"));
+  d.erase("cooling");  // a 1 mm wall does not fit the blade scaled to 1/10
   for (auto& s : d["sections"])
     for (const char* k : {"chord", "max_thickness", "le_radius", "te_radius"}) s["parametric"][k] = s["parametric"][k].get<double>() / 10;
   for (const double span : {2000.0, 100000.0}) {

@@ -101,7 +101,8 @@ BOOST_AUTO_TEST_CASE(timeout_is_bounded) {
   const double limit = 1.5;
   const test::Run r = test::run_cli("build -q --timeout 1.5 -o " + q(dir.path / "out"), dir.path);
   BOOST_TEST((r.exit_code == 0 || r.exit_code == 6), r.err);
-  BOOST_TEST(r.seconds < limit + cli::watchdog_grace(limit) + 2.0, r.seconds << " s: " << r.err);
+  // + 6 s for process start, teardown and a loaded CI machine (seen: 5 s of overhead at load 10 on 2 cores).
+  BOOST_TEST(r.seconds < limit + cli::watchdog_grace(limit) + 6.0, r.seconds << " s: " << r.err);
   if (r.exit_code == 6) {
     BOOST_TEST(contains(r.err, "time limit of 1.5 s reached: stopped "), r.err);
     BOOST_TEST(contains(r.err, "stage '"), r.err);

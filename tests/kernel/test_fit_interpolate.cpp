@@ -135,7 +135,7 @@ BOOST_AUTO_TEST_CASE(vs_occt_interpolate) {
   // the same well-conditioned system). Our default curve (averaged knots, n poles) is checked by
   // property: both pass through the points at the same parameters (1e-12 relative).
   test::Rng r(33);
-  for (int i = 0; i < 300; ++i) {
+  for (int i = 0; i < 1000; ++i) {
     const auto Q = random_points<3>(r, r.integer(4, 40));
     const auto t = interpolation_parameters<3>(Q, ParamMethod::ChordLength);
     GeomAPI_Interpolate api(to_occt_points(Q), to_occt_reals(t), Standard_False, 1e-9);

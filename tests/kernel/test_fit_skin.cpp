@@ -7,6 +7,7 @@
 #include <BRepOffsetAPI_ThruSections.hxx>
 #include <BRep_Tool.hxx>
 #include <GeomAPI_ProjectPointOnSurf.hxx>
+#include <Geom_BSplineSurface.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Edge.hxx>
@@ -192,24 +193,44 @@ BOOST_AUTO_TEST_CASE(explicit_v_params_and_smooth_iso_curves) {
     const double h = 1e-7 * (v.back() - v.front());
     for (std::size_t k = 4; k + 4 < V.size(); ++k)
       for (int j = 0; j <= 5; ++j) {
-        Eigen::Vector3d lo[16], hi[16];
-        res.surface.derivatives(j / 5.0, V[k] - h, 3, lo);
-        res.surface.derivatives(j / 5.0, V[k] + h, 3, hi);
-        const double scale = lo[1].norm() + lo[2].norm() + lo[3].norm();
-        BOOST_TEST((lo[1] - hi[1]).norm() <= 4 * h * lo[2].norm() + 1e-9 * scale);
+        const auto lo = res.surface.derivatives<3>(j / 5.0, V[k] - h);
+        const auto hi = res.surface.derivatives<3>(j / 5.0, V[k] + h);
+        const double scale = lo.S_v().norm() + lo.S_vv().norm() + lo.S_vvv().norm();
+        BOOST_TEST((lo.S_v() - hi.S_v()).norm() <= 4 * h * lo.S_vv().norm() + 1e-9 * scale);
         // S_vvv itself jumps at a cubic knot: the change of S_vv is h times the sum of both sides.
-        BOOST_TEST((lo[2] - hi[2]).norm() <= 2 * h * (lo[3].norm() + hi[3].norm()) + 1e-7 * scale);
+        BOOST_TEST((lo.S_vv() - hi.S_vv()).norm() <= 2 * h * (lo.S_vvv().norm() + hi.S_vvv().norm()) + 1e-7 * scale);
       }
   }
 }
 
+namespace {
+
+// Largest distance of the points c(t), t in [0, 1] (20 samples), from the chord c(0) c(1).
+template <class F>
+double sagitta(F&& c) {
+  const Eigen::Vector3d A = c(0.0), B = c(1.0), e = (B - A).normalized();
+  double s = 0;
+  for (int j = 1; j < 20; ++j) {
+    const Eigen::Vector3d X = c(j / 20.0) - A;
+    s = std::max(s, (X - X.dot(e) * e).norm());
+  }
+  return s;
+}
+
+}  // namespace
+
 BOOST_AUTO_TEST_CASE(vs_occt_thru_sections) {
-  // OCCT lofts the same sections by approximation (its own v parameters and degree), so the surfaces
-  // agree exactly only on the sections. Checked: OCCT's loft passes within 1e-4 (its approximation
-  // tolerance scale) of points on our sections, and between sections our surface stays within 10% of
-  // the section spacing of OCCT's (both interpolate smooth section families).
+  // OCCT lofts the same sections by approximation (its own v parameters and degree, 3D precision
+  // 1e-6), so the surfaces agree exactly only on the sections:
+  //  - on the sections: every point of our sections (our iso-curves, which reproduce the sections
+  //    to rounding, see sections_reproduced_open) lies within 1e-6 of OCCT's loft (its precision);
+  //  - between two sections, at a fixed u, our iso-curve and OCCT's (the straight path in OCCT's
+  //    parameters between the feet of the two section points) join the same end points A and B, so
+  //    a point of ours is within (our sagitta + OCCT's sagitta) of OCCT's path: both stay that close
+  //    to the chord AB, and OCCT's path passes every position along it. Sagittas are measured at 20
+  //    points of each curve; the loft surface is read back with occt::from_occt.
   test::Rng r(56);
-  double worst_mid = 0;
+  double worst_ratio = 0;
   for (int i = 0; i < 20; ++i) {
     const int K = r.integer(3, 5);
     std::vector<Curve3> s;
@@ -231,23 +252,32 @@ BOOST_AUTO_TEST_CASE(vs_occt_thru_sections) {
     TopExp_Explorer ex(loft.Shape(), TopAbs_FACE);
     BOOST_TEST_REQUIRE(ex.More());
     const Handle(Geom_Surface) os = BRep_Tool::Surface(TopoDS::Face(ex.Current()));
+    const Handle(Geom_BSplineSurface) obs = Handle(Geom_BSplineSurface)::DownCast(os);
+    BOOST_TEST_REQUIRE(!obs.IsNull());
+    const BSplineSurface<3> theirs = occt::from_occt(*obs);
     const SkinResult res = skin(s);
+    auto foot = [&](const Eigen::Vector3d& X, double& u, double& v) {
+      GeomAPI_ProjectPointOnSurf pr(gp_Pnt(X.x(), X.y(), X.z()), os);
+      BOOST_TEST_REQUIRE(pr.NbPoints() > 0);
+      pr.LowerDistanceParameters(u, v);
+      return pr.LowerDistance();
+    };
     for (int k = 0; k + 1 < K; ++k)
       for (int j = 0; j <= 10; ++j) {
-        const double u = j / 10.0;
-        const Eigen::Vector3d on = res.surface.point(u, res.v_params[static_cast<std::size_t>(k)]);
-        GeomAPI_ProjectPointOnSurf p1(gp_Pnt(on.x(), on.y(), on.z()), os);
-        BOOST_TEST_REQUIRE(p1.NbPoints() > 0);
-        BOOST_TEST(p1.LowerDistance() <= 1e-4);
-        const Eigen::Vector3d mid = res.surface.point(
-            u, 0.5 * (res.v_params[static_cast<std::size_t>(k)] + res.v_params[static_cast<std::size_t>(k + 1)]));
-        GeomAPI_ProjectPointOnSurf p2(gp_Pnt(mid.x(), mid.y(), mid.z()), os);
-        BOOST_TEST_REQUIRE(p2.NbPoints() > 0);
-        worst_mid = std::max(worst_mid, p2.LowerDistance());
-        BOOST_TEST(p2.LowerDistance() <= 0.1 * 4.0);
+        const double u = j / 10.0, v0 = res.v_params[static_cast<std::size_t>(k)], v1 = res.v_params[static_cast<std::size_t>(k + 1)];
+        const Eigen::Vector3d A = res.surface.point(u, v0), B = res.surface.point(u, v1);
+        double ua, va, ub, vb;
+        BOOST_TEST(foot(A, ua, va) <= 1e-6);
+        BOOST_TEST(foot(B, ub, vb) <= 1e-6);
+        const double ours = sagitta([&](double t) { return res.surface.point(u, v0 + t * (v1 - v0)); });
+        const double occt = sagitta([&](double t) { return theirs.point(ua + t * (ub - ua), va + t * (vb - va)); });
+        double um, vm;
+        const double gap = foot(res.surface.point(u, 0.5 * (v0 + v1)), um, vm);
+        BOOST_TEST(gap <= ours + occt + 2e-6, "case " << i << " k " << k << " u " << u);
+        worst_ratio = std::max(worst_ratio, gap / (ours + occt + 2e-6));
       }
   }
-  BOOST_TEST_MESSAGE("largest distance of our mid-section points from OCCT's loft: " << worst_mid);
+  BOOST_TEST_MESSAGE("largest mid-section distance from OCCT's loft over its bound: " << worst_ratio);
 }
 
 BOOST_AUTO_TEST_CASE(invalid_input) {

@@ -253,3 +253,28 @@ BOOST_AUTO_TEST_CASE(periodic_wrapping) {
     if (!pv) BOOST_TEST(throws_with([&] { ev.point(u, v - 2 * Tv); }, "outside"));
   }
 }
+
+// A negative derivative order is invalid input like any other: a cg::Error subclass naming the
+// argument ("order") and the allowed range, never std::length_error from a vector of size order + 1.
+BOOST_AUTO_TEST_CASE(negative_derivative_order_is_a_cg_error) {
+  const BSplineCurve<2> c = cubic();
+  BOOST_TEST(throws_with([&] { c.derivatives(0.5, -2); }, "order -2"));
+  BOOST_TEST(throws_with([&] { c.derivatives(0.5, -2); }, "[0, "));
+  V2 out[4];
+  BOOST_TEST(throws_with([&] { c.derivatives(0.5, -1, out); }, "order -1"));
+  const BSplineSurface<3> s(2, 2, {0, 0, 0, 1, 1, 1}, {0, 0, 0, 1, 1, 1}, grid(3, 3));
+  V3 sd[9];
+  BOOST_TEST(throws_with([&] { s.derivatives(0.5, 0.5, -2, sd); }, "order -2"));
+  BOOST_TEST(throws_with([&] { s.derivatives(0.5, 0.5, -2, sd); }, "[0, 25]"));
+}
+
+// Numbers in messages are printed shortest-round-trip ("1e-12"), not with six fixed decimals
+// ("0.000000"), so a tolerance or a parameter in a message is the value the code used.
+BOOST_AUTO_TEST_CASE(messages_print_numbers_round_trip) {
+  const BSplineCurve<2> c = cubic();
+  CurveEvaluator<2> ev(c);
+  BOOST_TEST(throws_with([&] { ev.point(1.5); }, "tolerance 1e-12"));
+  BOOST_TEST(throws_with([&] { c.point(1.0000001); }, "parameter 1.0000001 outside"));
+  const BSplineSurface<3> s(2, 2, {0, 0, 0, 1, 1, 1}, {0, 0, 0, 1, 1, 1}, grid(3, 3));
+  BOOST_TEST(throws_with([&] { s.point(0.5, -3e-9); }, "v = -3e-09 outside [0, 1]"));
+}

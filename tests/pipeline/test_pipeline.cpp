@@ -33,6 +33,14 @@ namespace {
 
 const fs::path kC3x = COOLINGGEN_SOURCE_DIR "/data/examples/c3x_vane.json";
 
+// The C3X example without its cooling (these tests are about the pipeline's stages on a plain blade;
+// tests/features/test_passages_c3x.cpp runs the cooling stage).
+config::Config c3x_uncooled() {
+  config::Config c = config::load_config_file(kC3x);
+  c.cooling = {};
+  return c;
+}
+
 // Records what the pipeline reports; asks to stop when `stop_in` starts (or, with stop_on_progress, at
 // its first progress report).
 struct RecordingSink : ProgressSink {
@@ -63,7 +71,7 @@ struct RecordingSink : ProgressSink {
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(build_as_library_call) {
-  config::Config c = config::load_config_file(kC3x);
+  config::Config c = c3x_uncooled();
   c.output.formats = {"step"};  // the model file alone: the hand-off formats have their own tests (label export)
   RecordingSink sink;
   const pipeline::BuildResult r = pipeline::run_build(c, {}, &sink);
@@ -114,7 +122,7 @@ BOOST_AUTO_TEST_CASE(build_as_library_call) {
 // own model, and the report's span follows the variant.
 BOOST_AUTO_TEST_CASE(design_study_loop) {
   TempDir dir("pipeline_study");
-  config::Config c = config::load_config_file(kC3x);
+  config::Config c = c3x_uncooled();
   for (int k = 0; k < 2; ++k) {
     std::get<blade::StraightFlowPath>(c.blade.flow_path).span = 100 + 20 * k;
     pipeline::TimeLimit limit(nullptr, 60);
@@ -131,7 +139,7 @@ BOOST_AUTO_TEST_CASE(design_study_loop) {
 
 // A stop request ends the build with Cancelled naming the stage, before it starts or from inside OCCT.
 BOOST_AUTO_TEST_CASE(cancel_names_the_stage) {
-  const config::Config c = config::load_config_file(kC3x);
+  const config::Config c = c3x_uncooled();
   for (const char* stage : {"blade_model", "verify"}) {
     RecordingSink sink;
     sink.stop_in = stage;
@@ -212,7 +220,7 @@ BOOST_AUTO_TEST_CASE(output_directory_never_mixes_runs) {
 
 // A failed check writes report.json only (valid: false), and removes the model of an earlier run.
 BOOST_AUTO_TEST_CASE(failed_checks_write_the_report_only) {
-  const config::Config c = config::load_config_file(kC3x);
+  const config::Config c = c3x_uncooled();
   pipeline::BuildResult r = pipeline::run_build(c);
   TempDir dir("pipeline_failed");
   pipeline::write_outputs(c, r, dir.path);
@@ -264,6 +272,7 @@ BOOST_AUTO_TEST_CASE(input_hash_follows_content) {
   fs::copy_file(COOLINGGEN_SOURCE_DIR "/data/c3x/profile_table3_cm.csv", dir.path / "p.csv");
   json doc = json::parse(read_text(kC3x));
   doc["sections"][0]["points"]["file"] = "p.csv";
+  doc["cooling"]["radial_passages"]["file"] = COOLINGGEN_SOURCE_DIR "/data/c3x/cooling_holes_fig7_cm.csv";
   std::ofstream(dir.path / "a.json") << doc.dump(2);
   std::ofstream(dir.path / "b.json") << doc.dump();
   const std::string a = pipeline::input_hash(config::load_config_file(dir.path / "a.json"));

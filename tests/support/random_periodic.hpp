@@ -28,10 +28,11 @@ struct PeriodicKnots {
   }
 };
 
-inline PeriodicKnots random_periodic_knots(Rng& r, int p, int extra_max = 8) {
+/// seam_mult > 0 fixes the seam multiplicity (seam_mult = p: a C0 crease on the seam).
+inline PeriodicKnots random_periodic_knots(Rng& r, int p, int extra_max = 8, int seam_mult = 0) {
   PeriodicKnots k;
   const double a = r.uniform(-3, 3), T = r.uniform(0.5, 10);
-  const int seam = (p >= 2 && r.coin(0.4)) ? r.integer(2, p) : 1;
+  const int seam = seam_mult > 0 ? seam_mult : (p >= 2 && r.coin(0.4)) ? r.integer(2, p) : 1;
   std::vector<double> inner;
   std::vector<int> inner_mults;
   int n = seam;
@@ -88,21 +89,23 @@ BSplineCurve<Dim> random_periodic_bspline(Rng& r, bool rational) {
 }
 
 /// Our surface of degrees 1..5, periodic in the requested directions (unwrapped poles and knots).
-inline BSplineSurface<3> random_periodic_surface(Rng& r, bool rational, bool periodic_u, bool periodic_v) {
+/// seam_crease_u: the u seam gets multiplicity pu (a C0 crease along the seam).
+inline BSplineSurface<3> random_periodic_surface(Rng& r, bool rational, bool periodic_u, bool periodic_v,
+                                                 bool seam_crease_u = false) {
   const int pu = r.integer(1, 5), pv = r.integer(1, 5);
-  auto direction = [&](bool periodic, int p, int& count, int& distinct) {
+  auto direction = [&](bool periodic, int p, int& count, int& distinct, bool crease) {
     if (!periodic) {
       count = distinct = r.integer(p + 1, p + 6);
       return random_knots(r, p, count);
     }
-    const PeriodicKnots k = random_periodic_knots(r, p, 4);
+    const PeriodicKnots k = random_periodic_knots(r, p, 4, crease ? p : 0);
     distinct = k.num_poles();
     count = distinct + p;
     return unwrap_periodic_knots(p, k.period_flat(), k.period());
   };
   int nu, nv, du, dv;
-  std::vector<double> U = direction(periodic_u, pu, nu, du);
-  std::vector<double> V = direction(periodic_v, pv, nv, dv);
+  std::vector<double> U = direction(periodic_u, pu, nu, du, seam_crease_u);
+  std::vector<double> V = direction(periodic_v, pv, nv, dv, false);
   std::vector<std::vector<Eigen::Vector3d>> P(static_cast<std::size_t>(nu), std::vector<Eigen::Vector3d>(static_cast<std::size_t>(nv)));
   std::vector<std::vector<double>> W;
   if (rational) W.assign(static_cast<std::size_t>(nu), std::vector<double>(static_cast<std::size_t>(nv)));

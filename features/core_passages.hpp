@@ -1,0 +1,84 @@
+#pragma once
+// The hollow core with its chambers, ribs, fillets, turnarounds and inlets, as named tool solids for
+// the verified boolean cut.
+//
+// Construction (measured to be the robust order on OCCT 7.6):
+//  1. Core solid: the inner wall (src/blade/inner_wall.hpp) between the hub floor and the tip cap (end
+//     walls, end_walls.hpp), built like the blade solid (brep::build_blade_solid); an open end uses a
+//     cutting surface just outside the blade instead.
+//  2. Ribs are open tubes (rib_geometry.hpp); one BRepAlgoAPI_Splitter splits the core by all of them
+//     into cells. The cells holding a chamber's reference point (midway between its walls at mid-span)
+//     are the coolant; the others are rib material. Chambers joined by a turnaround share a cell.
+//  3. Fillets: in each coolant cell the convex edges between a rib face and the inner wall are rounded
+//     with the rib's fillet radius (BRepFilletAPI_MakeFillet; tangent edge chains round a turnaround's
+//     tip in one go). On the tool these are convex, so the blade gets concave fillets after the cut.
+//  4. Names: a turnaround's mid-surface sheet splits its cell so that every wall face lies in exactly
+//     one chamber (chamber_<k>_wall), then the pieces are merged back into one solid (merge_cells).
+// Face names: chamber_<k>_wall, rib_<i>, rib_<i>_fillet, turnaround_<j>, turnaround_<j>_fillet, tip_cap,
+// hub_floor, inlet_<m>; open ends: open_hub / open_tip (outside the blade, they never reach it).
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "features/end_walls.hpp"
+#include "features/passage_definition.hpp"
+#include "features/rib_geometry.hpp"
+#include "features/verified_boolean.hpp"
+#include "src/blade/blade_surface.hpp"
+#include "src/blade/inner_wall.hpp"
+
+namespace cg::features {
+
+struct ChamberInfo {
+  int number = 0;  ///< 1-based, from the LE
+  /// Chordwise extent on the inner wall (suction side from..to, pressure side from..to; the LE chamber
+  /// starts at 0, the last one ends at the inner wall's crease).
+  double suction_from = 0, suction_to = 0, pressure_from = 0, pressure_to = 0;
+  Eigen::Vector3d reference = Eigen::Vector3d::Zero();  ///< a point inside it at mid-span
+  int system = -1;          ///< index into CoreBuild::systems (chambers joined by turnarounds)
+  double volume = 0;        ///< mm^3, coolant volume of the chamber (its share of the system's cells)
+  bool fed = false;         ///< an inlet or an open end supplies it (directly or through turnarounds)
+};
+
+/// Chambers joined by turnarounds: one coolant solid, one tool.
+struct ChamberSystem {
+  std::vector<int> chambers;  ///< 1-based chamber numbers
+  std::string feature;        ///< tool feature name, e.g. "chamber_1" or "chambers_2_4"
+  double volume = 0;          ///< mm^3 of the tool (after fillets)
+};
+
+struct CoreBuild {
+  blade::InnerWall inner_wall;
+  std::vector<RibTube> ribs;
+  std::vector<ChamberInfo> chambers;
+  std::vector<ChamberSystem> systems;
+  /// Chamber systems with both ends closed: strictly inside the blade (inside the inner wall, between
+  /// the end walls), so they can be inserted as voids; expected volume = their own volume.
+  std::vector<FeatureTool> interior_tools;
+  /// Tools that reach out of the blade: chamber systems through an open end (expected volume NaN: the
+  /// boolean path computes the overlap), then one cylinder per inlet ("inlet_<m>", expected volume =
+  /// the material between the flow-path surface and the end wall over its disc, own quadrature).
+  std::vector<FeatureTool> cut_tools;
+  std::vector<double> inlet_volumes;  ///< mm^3 per inlet, as its expected volume
+  std::optional<EndWall> hub_floor, tip_cap;  ///< none when that end is open
+  double core_volume = 0;                     ///< mm^3, the core before ribs and fillets
+  std::vector<double> rib_volumes;            ///< mm^3 per rib, rib material inside the core
+  std::vector<double> fillet_volumes;         ///< mm^3 per rib, material its fillets leave in the blade
+  std::vector<std::pair<std::string, double>> seconds;  ///< stage timings
+};
+
+/// Builds the core tools for `model`. Input that cannot be built throws PassageInputError naming the
+/// field below "cooling" (and the span / chord where it fails); OCCT failures throw FeatureFailure.
+CoreBuild build_core_tools(const blade::BladeModel& model, const CoreDefinition& def);
+
+/// The input checks of build_core_tools that need no solid (ordering, turnarounds against open ends,
+/// inlets, coolant supply, the inner wall's trailing-edge crossing and the ribs' placement on five spans),
+/// in a few ms: `coolinggen validate` and the build's first stage run them. Throws PassageInputError.
+void check_core_definition(const blade::BladeModel& model, const CoreDefinition& def);
+
+/// The reference point of a chamber: midway between its suction- and pressure-side inner-wall points at
+/// the middle of its chordwise extent, at `span`.
+Eigen::Vector3d chamber_point(const blade::BladeCoordinates& coords, const blade::ThicknessField& wall,
+                              const ChamberInfo& c, double span);
+
+}  // namespace cg::features

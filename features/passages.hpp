@@ -1,0 +1,29 @@
+#pragma once
+// Internal cooling passages of a blade, end to end: core (chambers, ribs, fillets, turnarounds, inlets)
+// and radial passages built as named tools (core_passages.hpp, radial_passages.hpp), applied to the blade
+// (passage_boolean.hpp), then measured on the built solid (passage_checks.hpp).
+#include "features/passage_definition.hpp"
+#include "features/passage_report.hpp"
+#include "src/blade/blade_surface.hpp"
+#include "src/brep/named_shape.hpp"
+#include "src/brep/verify.hpp"
+
+namespace cg::features {
+
+struct PassagesResult {
+  brep::NamedShape blade;  ///< the cooled blade, every face named
+  PassageReport report;
+  brep::SolidCheck check;  ///< verify_solid of the cooled blade (run after the last boolean step)
+};
+
+/// The checks of build_passages that need no solid (definition, inner wall crossing, rib placement,
+/// radial passages against the wall), in milliseconds. Throws PassageInputError.
+void validate_passages(const blade::BladeModel& model, const PassagesDefinition& def);
+
+/// Builds `def` into `blade` (the solid of `model`). Throws PassageInputError for input that cannot be
+/// built (field below "cooling" + where), FeatureFailure when a boolean or a design check fails (the
+/// thickness minimums: measured on the built solid, must reach the configured values).
+PassagesResult build_passages(const blade::BladeModel& model, const brep::NamedShape& blade,
+                              const PassagesDefinition& def);
+
+}  // namespace cg::features

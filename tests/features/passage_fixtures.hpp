@@ -1,0 +1,126 @@
+#pragma once
+// Shared fixtures of the passage tests: the configured examples built once per test program, and
+// measurements on named faces of the built solid (independent of the library's own checks).
+#include <BRepAdaptor_Surface.hxx>
+#include <BRepBuilderAPI_MakeVertex.hxx>
+#include <BRepExtrema_DistShapeShape.hxx>
+#include <BRepGProp.hxx>
+#include <BRepTools.hxx>
+#include <BRepTopAdaptor_FClass2d.hxx>
+#include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
+#include <GProp_GProps.hxx>
+#include <GeomLProp_SLProps.hxx>
+#include <TopoDS_Compound.hxx>
+
+#include <cmath>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "features/passages.hpp"
+#include "src/brep/blade_solid.hpp"
+#include "src/config/builtin_example.hpp"
+#include "src/config/config.hpp"
+#include "src/pipeline/cooling.hpp"
+
+namespace cg::test {
+
+struct CooledBlade {
+  config::Config config;
+  blade::BladeModel model;
+  brep::NamedShape blade;  ///< uncooled
+  features::PassagesResult cooled;
+};
+
+/// Builds a config's blade and its cooling (once per process and file).
+inline const CooledBlade& cooled_example(const std::string& file) {
+  static std::map<std::string, std::unique_ptr<CooledBlade>> cache;
+  auto& slot = cache[file];
+  if (!slot) {
+    slot = std::make_unique<CooledBlade>();
+    slot->config = file.empty() ? config::builtin_example_config() : config::load_config_file(file);
+    slot->model = config::build_model(slot->config);
+    const brep::BladeSolid s = brep::build_blade_solid(slot->model);
+    slot->blade = {s.solid, s.faces};
+    slot->cooled = pipeline::apply_cooling(slot->config.cooling, slot->model, slot->blade);
+  }
+  return *slot;
+}
+
+inline bool name_matches(const std::string& name, const std::string& pattern) {
+  if (!pattern.empty() && pattern.back() == '*') return name.compare(0, pattern.size() - 1, pattern, 0, pattern.size() - 1) == 0;
+  return name == pattern;
+}
+
+inline std::vector<TopoDS_Face> named_faces(const brep::NamedShape& s, const std::vector<std::string>& patterns) {
+  std::vector<TopoDS_Face> out;
+  for (const auto& f : s.faces)
+    for (const auto& p : patterns)
+      if (name_matches(f.name, p)) {
+        out.push_back(f.face);
+        break;
+      }
+  return out;
+}
+
+inline TopoDS_Compound compound(const std::vector<TopoDS_Face>& faces) {
+  BRep_Builder bb;
+  TopoDS_Compound c;
+  bb.MakeCompound(c);
+  for (const auto& f : faces) bb.Add(c, f);
+  return c;
+}
+
+/// Smallest distance between two face groups (BRepExtrema_DistShapeShape).
+inline double min_distance(const std::vector<TopoDS_Face>& a, const std::vector<TopoDS_Face>& b) {
+  BRepExtrema_DistShapeShape d(compound(a), compound(b));
+  return d.IsDone() ? d.Value() : -1;
+}
+
+/// Points of a face on an n x n parameter grid, inside its boundary.
+inline std::vector<gp_Pnt> face_points(const TopoDS_Face& f, int n) {
+  double u0, u1, v0, v1;
+  BRepTools::UVBounds(f, u0, u1, v0, v1);
+  BRepTopAdaptor_FClass2d cls(f, 1e-9);
+  BRepAdaptor_Surface s(f);
+  std::vector<gp_Pnt> out;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const double u = u0 + (u1 - u0) * (i + 0.5) / n, v = v0 + (v1 - v0) * (j + 0.5) / n;
+      if (cls.Perform(gp_Pnt2d(u, v)) == TopAbs_IN) out.push_back(s.Value(u, v));
+    }
+  return out;
+}
+
+/// Largest principal curvature magnitude at interior grid points of a face, min and max over the points.
+inline std::pair<double, double> max_curvature_range(const TopoDS_Face& f, int n) {
+  double u0, u1, v0, v1;
+  BRepTools::UVBounds(f, u0, u1, v0, v1);
+  BRepTopAdaptor_FClass2d cls(f, 1e-9);
+  const Handle(Geom_Surface) s = BRep_Tool::Surface(f);
+  double lo = HUGE_VAL, hi = 0;
+  for (int i = 1; i < n; ++i)
+    for (int j = 1; j < n; ++j) {
+      const double u = u0 + (u1 - u0) * i / n, v = v0 + (v1 - v0) * j / n;
+      if (cls.Perform(gp_Pnt2d(u, v)) != TopAbs_IN) continue;
+      GeomLProp_SLProps p(s, u, v, 2, 1e-9);
+      if (!p.IsCurvatureDefined()) continue;
+      const double k = std::max(std::abs(p.MaxCurvature()), std::abs(p.MinCurvature()));
+      lo = std::min(lo, k);
+      hi = std::max(hi, k);
+    }
+  return {lo, hi};
+}
+
+inline double volume(const TopoDS_Shape& s) {
+  GProp_GProps p;
+  BRepGProp::VolumeProperties(s, p, 1e-9);
+  return p.Mass();
+}
+
+/// Allowed deviation of a measured thickness: 1 % or 0.01 mm, whichever is larger (issue 9).
+inline double thickness_tolerance(double value) { return std::max(0.01, 0.01 * value); }
+
+}  // namespace cg::test
