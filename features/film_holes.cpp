@@ -123,7 +123,7 @@ FilmHoleTools make_film_hole_tools(const HoleTarget& target, const std::vector<H
                              " mm (least metal between the holes, a lower bound), below film_limits.min_ligament = " +
                              mm(limits.min_ligament) + " mm";
     if (a.row == b.row) throw FilmInputError(later.field + later.spacing_field, "pitch too small: " + what);
-    throw FilmInputError(later.field + ".position", "overlapping rows " + a.row + " and " + b.row + ": " + what);
+    throw FilmInputError(later.field + later.position_field, "overlapping rows " + a.row + " and " + b.row + ": " + what);
   }
 
   for (std::size_t i = 0; i < n; ++i) {

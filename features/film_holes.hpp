@@ -31,7 +31,7 @@ struct FilmHoleTools {
 
 /// Analyses every hole and makes its tool. Throws FilmInputError (field + hole) for a hole that does not
 /// fit (hole_analysis.hpp) and for two holes closer than limits.min_ligament: within a row (field
-/// "<row>.pitch_d" or ".count") or between rows ("overlapping rows", field "<later row>.position").
+/// "<row>.pitch_d" or ".count") or between rows ("overlapping rows", field "<later row>.chord" / ".arc_length").
 FilmHoleTools make_film_hole_tools(const HoleTarget& target, const std::vector<HoleSpec>& holes, const FilmLimits& limits,
                                    const HoleQuadrature& quadrature = {});
 

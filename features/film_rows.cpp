@@ -149,6 +149,7 @@ std::vector<HoleSpec> place_row(const blade::BladeCoordinates& coords, RowPositi
     h.shape = row.shape;
     h.pitch = pitch;
     h.spacing_field = row.count > 0 ? ".count" : ".pitch_d";
+    h.position_field = at.kind == RowPosition::Kind::Chord ? ".chord" : ".arc_length";
     h.required_chamber = row.chamber;
     h.span = interpolate(rc.arcs, rc.spans, xs[k]);
     h.chord = positioner.chord(at, h.span);
@@ -187,6 +188,7 @@ std::vector<HoleSpec> place_showerhead(const blade::BladeCoordinates& coords, Ro
       HoleSpec& h = rh[i];
       h.name = hole_name(name, static_cast<int>(i) + 1);
       h.row = name;
+      h.position_field = ".stagnation_arc_length";
       const blade::BladeFrame f = coords.frame(h.span, h.chord);
       Eigen::Vector3d stream, span;
       surface_directions(f, h.chord, stream, span);

@@ -137,7 +137,7 @@ HoleGeometry HoleAnalyser::Impl::analyse(const HoleSpec& h) {
   const Eigen::Vector3d base = E - s_out * d;
   const RaySurfaceHit ao = outer.first(base, d, search);
   if (!ao.found || std::abs(ao.ray_param - s_out) > 1e-6 * (1 + s_out))
-    fail(h, ".position", "the hole axis meets the outer wall " + mm(s_out - ao.ray_param) + " mm before its exit point "
+    fail(h, h.position_field, "the hole axis meets the outer wall " + mm(s_out - ao.ray_param) + " mm before its exit point "
                          "(the hole would cut the blade elsewhere first)");
   Eigen::Vector3d n_exit = target.model->surface.normal(ao.u, ao.v);
   if (n_exit.dot(d) > 0) n_exit = -n_exit;
@@ -145,10 +145,10 @@ HoleGeometry HoleAnalyser::Impl::analyse(const HoleSpec& h) {
   const RaySurfaceHit ai = inner.first(base, d, search);
   const RaySurfaceHit ao2 = outer.first(ao.point + 1e-6 * d, d, search);
   if (ao2.found && (!ai.found || ao.ray_param + 1e-6 + ao2.ray_param < ai.ray_param))
-    fail(h, ".position", "reaches no chamber: its axis leaves the blade again " + mm(ao2.ray_param) +
+    fail(h, h.position_field, "reaches no chamber: its axis leaves the blade again " + mm(ao2.ray_param) +
                              " mm past its exit point, before it enters the cavity");
   if (!ai.found || ai.ray_param <= s_out)
-    fail(h, ".position", "reaches no chamber: its axis does not enter the cavity within " + mm(search - s_out, 1) + " mm");
+    fail(h, h.position_field, "reaches no chamber: its axis does not enter the cavity within " + mm(search - s_out, 1) + " mm");
   const double sense_o = outer.sense(d, ao), sense_i = inner.sense(d, ai);
   const RaySurfaceHit af = inner.first(ai.point + 1e-6 * d, d, search);
   const double sense_f = af.found ? inner.sense(d, af) : 0;
@@ -158,7 +158,7 @@ HoleGeometry HoleAnalyser::Impl::analyse(const HoleSpec& h) {
   g.inlet_chord = chord_of(ai.point, ao, std::nan(""), &inlet_span);
   g.chamber = std::isnan(g.inlet_chord) ? -1 : target.chamber_at(g.inlet_chord);
   if (g.chamber < 0)
-    fail(h, ".position", "reaches no chamber: its axis enters the cavity at chord " + mm(g.inlet_chord) +
+    fail(h, h.position_field, "reaches no chamber: its axis enters the cavity at chord " + mm(g.inlet_chord) +
                              ", which belongs to no chamber (a rib or beyond the core)");
   const TargetChamber& chamber = target.chambers[g.chamber];
   if (h.required_chamber > 0 && chamber.number != h.required_chamber)
@@ -208,7 +208,7 @@ HoleGeometry HoleAnalyser::Impl::analyse(const HoleSpec& h) {
       const RaySurfaceHit ho = outer.near(o, d, ao, sense_o, 0, search, search);
       const RaySurfaceHit hi = inner.near(o, d, ai, sense_i, 0, search, search);
       if (!ho.found || !hi.found || hi.ray_param <= ho.ray_param)
-        fail(h, ".position", "does not cross the wall cleanly into the cavity (a line of the hole at " + mm(rho) +
+        fail(h, h.position_field, "does not cross the wall cleanly into the cavity (a line of the hole at " + mm(rho) +
                                  " mm from the axis misses the outer or the cavity wall)");
       const double so = ho.ray_param - s_out, si = hi.ray_param - s_out;
       if (fan && so >= sd)
@@ -254,7 +254,7 @@ HoleGeometry HoleAnalyser::Impl::analyse(const HoleSpec& h) {
                                      (p0.y + t_far * (p1.y - p0.y)) * fw;
       const double vn = v.norm();
       hit = outer.near(origin, v / vn, ao, sense_o, 0, search * vn, search * vn);
-      if (!hit.found) fail(h, ".position", "a diffuser line misses the outer wall");
+      if (!hit.found) fail(h, h.position_field, "a diffuser line misses the outer wall");
       t_c = t_far - hit.ray_param / vn;
       if (t_c <= 0)
         fail(h, ".diffuser_length_d", "the metering part breaks out of the outer wall: the diffuser (" + mm(sd) +
@@ -319,7 +319,7 @@ HoleGeometry HoleAnalyser::Impl::analyse(const HoleSpec& h) {
   if (!clear) {
     const double cos_t = n_inlet.dot(d);
     if (cos_t < 0.2)
-      fail(h, ".position", "enters the cavity at a grazing angle (" + mm(std::acos(cos_t) * 180 / kPi, 1) +
+      fail(h, h.position_field, "enters the cavity at a grazing angle (" + mm(std::acos(cos_t) * 180 / kPi, 1) +
                                " deg from the wall's normal)");
     const double delta = depth_n + c * cos_t;
     auto plane_s = [&](const Eigen::Vector3d& o) { return (delta - (o - ai.point).dot(n_inlet)) / cos_t - s_out; };
@@ -331,7 +331,7 @@ HoleGeometry HoleAnalyser::Impl::analyse(const HoleSpec& h) {
       worst = std::min(worst, rim_sf[q] - s_end_rim[q]);
     }
     if (worst < c)
-      fail(h, ".position", "the cavity behind the hole is too narrow: its tool must cross the cavity wall by " + mm(c) +
+      fail(h, h.position_field, "the cavity behind the hole is too narrow: its tool must cross the cavity wall by " + mm(c) +
                                " mm and stay " + mm(c) + " mm from the far wall (" + mm(worst) + " mm left)");
     if (fan && g.extent.s_end - r * std::sqrt(1 - cos_t * cos_t) / cos_t <= sd)
       fail(h, dsub, "larger than the wall allows: the diffuser reaches the cavity");
@@ -342,7 +342,7 @@ HoleGeometry HoleAnalyser::Impl::analyse(const HoleSpec& h) {
     end_rim[q] += (s_out + s_end_rim[q]) * d;
   }
   if (reach > chamber.reach)
-    fail(h, ".position", "its tool would reach " + mm(reach) + " mm into " + chamber.name + ", which allows " +
+    fail(h, h.position_field, "its tool would reach " + mm(reach) + " mm into " + chamber.name + ", which allows " +
                              mm(chamber.reach) + " mm (an insert lies behind the gap)");
 
   // Chamber of the whole inlet, obstacles.
@@ -350,7 +350,7 @@ HoleGeometry HoleAnalyser::Impl::analyse(const HoleSpec& h) {
     const double ch = chord_of(p, ao, inlet_span);
     const int k = std::isnan(ch) ? -1 : target.chamber_at(ch);
     if (k != g.chamber)
-      fail(h, ".position", "its inlet straddles " + chamber.name + " and " +
+      fail(h, h.position_field, "its inlet straddles " + chamber.name + " and " +
                                (k < 0 ? std::string("no chamber (a rib)") : target.chambers[k].name));
   }
   for (const TargetObstacle& ob : target.obstacles) {
@@ -360,11 +360,11 @@ HoleGeometry HoleAnalyser::Impl::analyse(const HoleSpec& h) {
     for (const Eigen::Vector3d& p : end_rim) touch = std::min(touch, ob.distance(p));
     if (ob.needs_ligament) {
       if (lig < limits.min_ligament)
-        fail(h, ob.field.empty() ? ".position" : ob.field, "comes " + mm(lig) + " mm close to " + ob.name + " where it enters the cavity; the ligament "
+        fail(h, ob.field.empty() ? h.position_field : ob.field, "comes " + mm(lig) + " mm close to " + ob.name + " where it enters the cavity; the ligament "
                              "must be at least film_limits.min_ligament = " + mm(limits.min_ligament) + " mm");
       if (lig < g.obstacle_ligament) g.obstacle_ligament = lig, g.nearest_obstacle = ob.name;
     }
-    if (touch <= 0) fail(h, ob.field.empty() ? ".position" : ob.field, "its tool would cut " + ob.name);
+    if (touch <= 0) fail(h, ob.field.empty() ? h.position_field : ob.field, "its tool would cut " + ob.name);
   }
 
   // Breakout width along the row: extent of the outline; on the cylinder's evenly spaced rim the extreme

@@ -45,6 +45,9 @@ struct HoleSpec {
   Eigen::Vector3d row_direction = Eigen::Vector3d::UnitZ();  ///< unit, along the row (breakout width)
   double pitch = 0;        ///< mm along the row
   std::string spacing_field = ".pitch_d";  ///< the row's field that sets the pitch (".count" for counted rows)
+  /// The row's field that sets its chordwise position (".chord", ".arc_length"; showerhead:
+  /// ".stagnation_arc_length"), named when the hole does not fit where it is.
+  std::string position_field = ".chord";
   int required_chamber = 0;  ///< 1-based; 0: any
 };
 

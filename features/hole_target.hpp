@@ -43,7 +43,7 @@ struct TargetObstacle {
   /// touch it (an insert behind the gap).
   bool needs_ligament = true;
   /// The config field (suffix of the row's path) to name when a hole comes too close, e.g. ".span_end"
-  /// for the tip cap; empty: ".position".
+  /// for the tip cap; empty: the row's position field (".chord" ...).
   std::string field;
 };
 

@@ -1,6 +1,6 @@
 #include "features/insert.hpp"
 
-#include <BRepAlgoAPI_Cut.hxx>
+#include <BRepAlgoAPI_Splitter.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepClass3d_SolidClassifier.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
@@ -47,22 +47,22 @@ double volume_of(const TopoDS_Shape& s) {
 
 gp_Pnt pnt(const Eigen::Vector3d& p) { return gp_Pnt(p.x(), p.y(), p.z()); }
 
-// The solid between the ends; rib slabs (grown by `grow`) cut away, the piece holding `reference` kept.
+// The solid between the ends, split by the rib walls (grown by `grow`); the piece holding `reference` kept.
 TopoDS_Shape chamber_solid(const BSplineSurface<3>& surface, const brep::EndTrim& hub, const brep::EndTrim& tip,
                            const InsertChamber& chamber, double grow, const std::string& what) {
   TopoDS_Shape s = brep::build_blade_solid(surface, hub, tip).solid;
-  if (!chamber.rib_slabs) return s;
-  const std::vector<TopoDS_Shape> slabs = chamber.rib_slabs(grow);
-  if (slabs.empty()) return s;
+  if (!chamber.rib_walls) return s;
+  const std::vector<TopoDS_Shape> walls = chamber.rib_walls(grow);
+  if (walls.empty()) return s;
   TopTools_ListOfShape args, tools;
   args.Append(s);
-  for (const TopoDS_Shape& t : slabs) tools.Append(t);
-  BRepAlgoAPI_Cut cut;
-  cut.SetArguments(args);
-  cut.SetTools(tools);
-  cut.Build();
-  if (!cut.IsDone() || cut.HasErrors()) throw FeatureFailure(what + ": cutting the rib slabs failed");
-  for (TopExp_Explorer e(cut.Shape(), TopAbs_SOLID); e.More(); e.Next()) {
+  for (const TopoDS_Shape& t : walls) tools.Append(t);
+  BRepAlgoAPI_Splitter split;
+  split.SetArguments(args);
+  split.SetTools(tools);
+  split.Build();
+  if (!split.IsDone() || split.HasErrors()) throw FeatureFailure(what + ": splitting by the rib walls failed");
+  for (TopExp_Explorer e(split.Shape(), TopAbs_SOLID); e.More(); e.Next()) {
     BRepClass3d_SolidClassifier in(e.Current(), pnt(chamber.reference), 1e-7);
     if (in.State() == TopAbs_IN) return e.Current();
   }
@@ -108,7 +108,11 @@ InsertBuild build_insert(const blade::BladeModel& model, const InsertChamber& ch
   if (!(tw > 0))
     throw FilmInputError(field + ".chamber", name + ": inserts need a constant wall thickness of the core (" + chamber.name +
                                                  "'s wall is tabulated)");
+  if (!chamber.refusal.empty()) throw FilmInputError(field + ".chamber", name + ": " + chamber.refusal);
   if (!(Z > 0)) throw FilmInputError(field + ".gap", name + ": the gap must be > 0");
+  if (Z < chamber.min_gap)
+    throw FilmInputError(field + ".gap", name + ": the gap " + mm(Z) + " mm is below " + chamber.min_gap_reason + " (" +
+                                             mm(chamber.min_gap) + " mm): the gap in the corners would fall below Z");
   if (!(ts > 0)) throw FilmInputError(field + ".sheet_thickness", name + ": the sheet thickness must be > 0");
   if (def.jet_spacing_x_d < 2) throw FilmInputError(field + ".jet_spacing_x_d", name + ": x/D must be >= 2");
   if (def.jet_spacing_y_d < 2) throw FilmInputError(field + ".jet_spacing_y_d", name + ": y/D must be >= 2");

@@ -47,8 +47,15 @@ struct InsertChamber {
   /// past them, e.g. for the inner solid of an open end).
   std::function<brep::EndTrim(double extra)> hub_end, tip_end;
   bool hub_open = false, tip_open = false;  ///< the chamber itself runs through that end
-  /// Slabs (solids) of the ribs bounding the chamber, thickened by `grow` mm on each side.
-  std::function<std::vector<TopoDS_Shape>(double grow)> rib_slabs;
+  /// The ribs bounding the chamber, thickened by `grow` mm on each side, as shapes that split the
+  /// chamber from its neighbours (open rib tubes through the core, or slab solids).
+  std::function<std::vector<TopoDS_Shape>(double grow)> rib_walls;
+  /// Non-empty: no insert fits this chamber, for this reason (e.g. a turnaround opens it to the next).
+  std::string refusal;
+  /// The least gap an insert needs here (a rib fillet of radius r leaves less than the gap Z in the
+  /// corner unless Z >= r), and why.
+  double min_gap = 0;
+  std::string min_gap_reason;
   Eigen::Vector3d reference = Eigen::Vector3d::Zero();  ///< a point inside the chamber (and the insert)
 };
 

@@ -95,7 +95,7 @@ BOOST_AUTO_TEST_CASE(row_outside_the_span_range) {
 
 BOOST_AUTO_TEST_CASE(overlapping_rows) {
   const auto [field, what] = attempt(rows({row(0.35), row(0.365)}));
-  BOOST_TEST(field == "film_rows[1].position", what);
+  BOOST_TEST(field == "film_rows[1].chord", what);
   BOOST_TEST(has(what, "overlapping rows film_row_1 and film_row_2"), what);
   BOOST_TEST(has(what, "min_ligament"), what);
 }
@@ -142,19 +142,19 @@ BOOST_AUTO_TEST_CASE(hole_that_reaches_no_chamber) {
     what = e.what();
   }
   BOOST_TEST(hollow.inner.min_suction_chord < 0.98);
-  BOOST_TEST(field == "film_rows[0].position", what);
+  BOOST_TEST(field == "film_rows[0].chord", what);
   BOOST_TEST(has(what, "reaches no chamber"), what);
   BOOST_TEST(has(what, "leaves the blade again"), what);
   HoleTarget front = vane().target;
   front.chambers[0].suction_to = 0.7;
   const auto [f1, w1] = attempt(rows({row(0.8)}), front);
-  BOOST_TEST(f1 == "film_rows[0].position", w1);
+  BOOST_TEST(f1 == "film_rows[0].chord", w1);
   BOOST_TEST(has(w1, "belongs to no chamber"), w1);
   // Two chambers with a gap between them (a rib's place): a row over the gap reaches neither.
   HoleTarget two = vane().target;
   two.chambers = {TargetChamber{1, "chamber_1", 0, 0.3, -0.3, 0}, TargetChamber{2, "chamber_2", 0.4, 1, -1, -0.4}};
   const auto [f2, w2] = attempt(rows({row(0.35)}), two);
-  BOOST_TEST(f2 == "film_rows[0].position", w2);
+  BOOST_TEST(f2 == "film_rows[0].chord", w2);
   BOOST_TEST(has(w2, "reaches no chamber"), w2);
   // A row configured for chamber 2 whose holes enter chamber 1.
   FilmRowDefinition in1 = row(0.2);
@@ -174,7 +174,7 @@ BOOST_AUTO_TEST_CASE(hole_too_close_to_a_rib) {
   HoleTarget t = vane().target;
   t.obstacles.push_back({"rib_1", [a, n](const Eigen::Vector3d& p) { return std::abs((p - a).dot(n)) - 0.5; }, true, ""});
   const auto [field, what] = attempt(rows({row(0.42)}), t);
-  BOOST_TEST(field == "film_rows[0].position", what);
+  BOOST_TEST(field == "film_rows[0].chord", what);
   BOOST_TEST(has(what, "rib_1"), what);
   const auto [f2, w2] = attempt(rows({row(0.30)}), t);
   BOOST_TEST(f2 == "", w2);
@@ -185,7 +185,7 @@ BOOST_AUTO_TEST_CASE(tool_would_reach_an_insert) {
   HoleTarget t = vane().target;
   t.chambers[0].reach = 0.05;  // less than the tool's clearance past the wall
   const auto [field, what] = attempt(rows({row(0.35)}), t);
-  BOOST_TEST(field == "film_rows[0].position", what);
+  BOOST_TEST(field == "film_rows[0].chord", what);
   BOOST_TEST(has(what, "insert"), what);
 }
 
