@@ -96,8 +96,9 @@ FilmCavity film_cavity_of_core(const blade::BladeModel& model, const CoreDefinit
     tc.name = "chamber_" + std::to_string(c.number);
     tc.suction_from = c.suction_from;
     tc.suction_to = c.suction_to;
-    tc.pressure_from = c.pressure_from;
-    tc.pressure_to = c.pressure_to;
+    // ChamberInfo runs LE -> TE on both sides (pressure_from >= pressure_to); ours runs up the chord coordinate.
+    tc.pressure_from = c.pressure_to;
+    tc.pressure_to = c.pressure_from;
     t.chambers.push_back(tc);
   }
   for (std::size_t i = 0; i < def.ribs.size(); ++i) {
@@ -123,8 +124,8 @@ FilmCavity film_cavity_of_core(const blade::BladeModel& model, const CoreDefinit
     ic.wall_thickness = def.wall_thickness.is_constant() ? def.wall_thickness.min_value() : 0.0;
     ic.suction_from = c.suction_from;
     ic.suction_to = c.suction_to;
-    ic.pressure_from = c.pressure_from;
-    ic.pressure_to = c.pressure_to;
+    ic.pressure_from = c.pressure_to;
+    ic.pressure_to = c.pressure_from;
     ic.reference = c.reference;
     ic.hub_open = def.hub_floor.open;
     ic.tip_open = def.tip_cap.open;

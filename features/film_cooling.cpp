@@ -22,8 +22,7 @@ FilmCoolingResult build_film_cooling(const blade::BladeModel& model, const brep:
     t0 = t;
   };
 
-  // Inserts first: they limit how far hole tools may reach into their chambers.
-  std::vector<InsertBuild> inserts;
+  // The inserts' chambers first: an insert limits how far hole tools may reach into its chamber.
   std::vector<const InsertChamber*> insert_chambers;
   for (std::size_t i = 0; i < def.inserts.size(); ++i) {
     const InsertDefinition& d = def.inserts[i];
@@ -37,18 +36,28 @@ FilmCoolingResult build_film_cooling(const blade::BladeModel& model, const brep:
     for (std::size_t j = 0; j < i; ++j)
       if (def.inserts[j].chamber == d.chamber)
         throw FilmInputError(field + ".chamber", "chamber_" + std::to_string(d.chamber) + " already holds insert_" + std::to_string(j + 1));
-    inserts.push_back(build_insert(model, *it, d, static_cast<int>(i) + 1, field, progress));
+    check_insert_input(*it, d, static_cast<int>(i) + 1, field);
     insert_chambers.push_back(&*it);
     for (TargetChamber& c : cavity.target.chambers)
       if (c.number == d.chamber) c.reach = d.gap - std::max(0.05, 0.25 * d.gap);
+  }
+
+  // Film holes placed, analysed and checked before any solid is built (errors name the field).
+  FilmHoleTools tools;
+  if (def.has_holes()) {
+    tools = make_film_hole_tools(cavity.target, place_film_holes(model, def), def.limits);
+    lap("hole_tools");
+  }
+
+  std::vector<InsertBuild> inserts;
+  for (std::size_t i = 0; i < def.inserts.size(); ++i) {
+    inserts.push_back(build_insert(model, *insert_chambers[i], def.inserts[i], static_cast<int>(i) + 1,
+                                   "inserts[" + std::to_string(i) + "]", progress));
     lap("insert_" + std::to_string(i + 1));
   }
 
-  // Film holes: placed, analysed and checked (errors name the field), then cut in one step.
+  // The holes cut in one verified boolean step.
   if (def.has_holes()) {
-    const std::vector<HoleSpec> holes = place_film_holes(model, def);
-    const FilmHoleTools tools = make_film_hole_tools(cavity.target, holes, def.limits);
-    lap("hole_tools");
     FilmCutResult cut = cut_film_holes(blade, cavity.target, tools, film_boolean_options(progress));
     out.blade = std::move(cut.blade);
     out.check = cut.check;

@@ -173,13 +173,13 @@ HoleGeometry HoleAnalyser::Impl::analyse(const HoleSpec& h) {
     const FanDiffuser& fd = h.shape.fan;
     const double ld = fd.diffuser_length_d > 0 ? fd.diffuser_length_d * D : g.length - fd.metering_length_d * D;
     if (ld <= 0)
-      fail(h, ".metering_length_d", "the metering length " + mm(fd.metering_length_d * D) + " mm leaves no diffuser: the "
+      fail(h, ".fan.metering_length_d", "the metering length " + mm(fd.metering_length_d * D) + " mm leaves no diffuser: the "
                                     "hole is only " + mm(g.length) + " mm long through the wall");
     if (ld >= g.length)
       fail(h, dsub, "larger than the wall allows: its diffuser (" + mm(ld) + " mm along the axis) is longer than the "
                     "hole through the wall (" + mm(g.length) + " mm at inclination " + mm(g.inclination_deg, 1) + " deg)");
     if (h.shape.fan.edge_radius_d * D > max_edge_radius(h.shape, ld))
-      fail(h, ".edge_radius_d", "edge radius " + mm(h.shape.fan.edge_radius_d * D) + " mm exceeds the largest the "
+      fail(h, ".fan.edge_radius_d", "edge radius " + mm(h.shape.fan.edge_radius_d * D) + " mm exceeds the largest the "
                                 "diffuser allows, " + mm(max_edge_radius(h.shape, ld)) + " mm");
     prof = std::make_unique<FanProfile>(h.shape, ld);
     sd = ld;
@@ -212,7 +212,7 @@ HoleGeometry HoleAnalyser::Impl::analyse(const HoleSpec& h) {
                                  " mm from the axis misses the outer or the cavity wall)");
       const double so = ho.ray_param - s_out, si = hi.ray_param - s_out;
       if (fan && so >= sd)
-        fail(h, ".diffuser_length_d", "the metering part breaks out of the outer wall: the diffuser (" + mm(sd) +
+        fail(h, ".fan.diffuser_length_d", "the metering part breaks out of the outer wall: the diffuser (" + mm(sd) +
                                           " mm) is too short for the inclination and the wall curvature");
       if (fan && si <= sd)
         fail(h, dsub, "larger than the wall allows: the diffuser reaches the cavity");
@@ -257,7 +257,7 @@ HoleGeometry HoleAnalyser::Impl::analyse(const HoleSpec& h) {
       if (!hit.found) fail(h, h.position_field, "a diffuser line misses the outer wall");
       t_c = t_far - hit.ray_param / vn;
       if (t_c <= 0)
-        fail(h, ".diffuser_length_d", "the metering part breaks out of the outer wall: the diffuser (" + mm(sd) +
+        fail(h, ".fan.diffuser_length_d", "the metering part breaks out of the outer wall: the diffuser (" + mm(sd) +
                                           " mm) is too short for the inclination and the wall curvature");
       const RaySurfaceHit hi = inner.near(origin, v / vn, ai, sense_i, 0, search * vn, search * vn);
       if (hi.found && t_far - hi.ray_param / vn >= 0) fail(h, dsub, "larger than the wall allows: the diffuser reaches the cavity");

@@ -101,11 +101,10 @@ struct Jet {
 
 }  // namespace
 
-InsertBuild build_insert(const blade::BladeModel& model, const InsertChamber& chamber, const InsertDefinition& def,
-                         int index, const std::string& field, ProgressSink* progress) {
+void check_insert_input(const InsertChamber& chamber, const InsertDefinition& def, int index, const std::string& field) {
   const std::string name = "insert_" + std::to_string(index);
-  const double tw = chamber.wall_thickness, Z = def.gap, ts = def.sheet_thickness, D = def.jet_diameter;
-  if (!(tw > 0))
+  const double Z = def.gap, D = def.jet_diameter;
+  if (!(chamber.wall_thickness > 0))
     throw FilmInputError(field + ".chamber", name + ": inserts need a constant wall thickness of the core (" + chamber.name +
                                                  "'s wall is tabulated)");
   if (!chamber.refusal.empty()) throw FilmInputError(field + ".chamber", name + ": " + chamber.refusal);
@@ -113,10 +112,17 @@ InsertBuild build_insert(const blade::BladeModel& model, const InsertChamber& ch
   if (Z < chamber.min_gap)
     throw FilmInputError(field + ".gap", name + ": the gap " + mm(Z) + " mm is below " + chamber.min_gap_reason + " (" +
                                              mm(chamber.min_gap) + " mm): the gap in the corners would fall below Z");
-  if (!(ts > 0)) throw FilmInputError(field + ".sheet_thickness", name + ": the sheet thickness must be > 0");
-  if (def.jet_spacing_x_d < 2) throw FilmInputError(field + ".jet_spacing_x_d", name + ": x/D must be >= 2");
-  if (def.jet_spacing_y_d < 2) throw FilmInputError(field + ".jet_spacing_y_d", name + ": y/D must be >= 2");
-  if (D >= Z * 4 || D <= 0) throw FilmInputError(field + ".jet_diameter", name + ": the jet diameter must be in (0, 4 Z)");
+  if (!(def.sheet_thickness > 0)) throw FilmInputError(field + ".sheet_thickness", name + ": the sheet thickness must be > 0");
+  if (def.jet_spacing_x_d < 2) throw FilmInputError(field + ".jets.spacing_x_d", name + ": x/D must be >= 2");
+  if (def.jet_spacing_y_d < 2) throw FilmInputError(field + ".jets.spacing_y_d", name + ": y/D must be >= 2");
+  if (D >= Z * 4 || D <= 0) throw FilmInputError(field + ".jets.diameter", name + ": the jet diameter must be in (0, 4 Z)");
+}
+
+InsertBuild build_insert(const blade::BladeModel& model, const InsertChamber& chamber, const InsertDefinition& def,
+                         int index, const std::string& field, ProgressSink* progress) {
+  check_insert_input(chamber, def, index, field);
+  const std::string name = "insert_" + std::to_string(index);
+  const double tw = chamber.wall_thickness, Z = def.gap, ts = def.sheet_thickness, D = def.jet_diameter;
   InsertBuild out;
   auto t0 = std::chrono::steady_clock::now();
   const auto lap = [&](const char* stage) {
@@ -194,12 +200,12 @@ InsertBuild build_insert(const blade::BladeModel& model, const InsertChamber& ch
   const std::vector<double> arc = arc_table(ring);
   const std::vector<double> lines = spaced(margin, arc.back() - margin, def.jet_spacing_x_d * D, 0);
   if (lines.empty())
-    throw FilmInputError(field + ".jet_spacing_x_d", name + ": no room for a line of jets around " + chamber.name);
+    throw FilmInputError(field + ".jets.spacing_x_d", name + ": no room for a line of jets around " + chamber.name);
   std::vector<Jet> jets;
   for (std::size_t li = 0; li < lines.size(); ++li) {
     const double c = interpolate(arc, chords, lines[li]);
     const double s0 = span_at(c, true, margin + (def.hub_open ? 0 : ts)), s1 = span_at(c, false, margin + (def.tip_open ? 0 : ts));
-    if (s1 <= s0) throw FilmInputError(field + ".jet_margin", name + ": no room for jets between the insert's ends");
+    if (s1 <= s0) throw FilmInputError(field + ".jets.margin", name + ": no room for jets between the insert's ends");
     std::vector<Eigen::Vector3d> line;
     std::vector<double> spans;
     // Each span is a new section (an iso-curve with its arc-length map): 32 chords of the line.
@@ -231,10 +237,10 @@ InsertBuild build_insert(const blade::BladeModel& model, const InsertChamber& ch
     const Eigen::Vector3d base = jet.exit - back * d;
     const RaySurfaceHit ao = entry.first(base, d, 4 * (back + ts) + 1), ai = exit.first(base, d, 4 * (back + ts) + 1);
     if (!ao.found || !ai.found || ai.ray_param <= ao.ray_param)
-      throw FilmInputError(field + ".jet_diameter", std::string(jn) + ": does not cross the insert's sheet");
+      throw FilmInputError(field + ".jets.diameter", std::string(jn) + ": does not cross the insert's sheet");
     const RaySurfaceHit far = exit.first(ai.point + 1e-6 * d, d, 4 * (back + ts) + 1);
     if (far.found && far.ray_param < 2 * clear)
-      throw FilmInputError(field + ".jet_margin", std::string(jn) + ": the insert is only " + mm(far.ray_param) +
+      throw FilmInputError(field + ".jets.margin", std::string(jn) + ": the insert is only " + mm(far.ray_param) +
                                                      " mm wide behind the jet; keep the jets further from its narrow end");
     const double so = entry.sense(d, ao), si = exit.sense(d, ai);
     double volume = 0, s_max = 0, s_min = HUGE_VAL;
@@ -245,7 +251,7 @@ InsertBuild build_insert(const blade::BladeModel& model, const InsertChamber& ch
         const RaySurfaceHit ho = entry.near(o, d, ao, so, 0, 4 * (back + ts) + 1, 4 * (back + ts) + 1);
         const RaySurfaceHit hi = exit.near(o, d, ai, si, 0, 4 * (back + ts) + 1, 4 * (back + ts) + 1);
         if (!ho.found || !hi.found || hi.ray_param <= ho.ray_param || ho.ray_param < 0.25 * Z)
-          throw FilmInputError(field + ".jet_diameter", std::string(jn) + ": does not cross the insert's sheet cleanly");
+          throw FilmInputError(field + ".jets.diameter", std::string(jn) + ": does not cross the insert's sheet cleanly");
         s_min = std::min(s_min, ho.ray_param);
         s_max = std::max(s_max, hi.ray_param);
         if (k < 6) volume += r * r * gx[k] * gw[k] * 2 * kPi / kAngles * (hi.ray_param - ho.ray_param);

@@ -67,6 +67,10 @@ struct InsertBuild {
   brep::SolidCheck check;  ///< verify_solid of the insert body (run by its last boolean step)
 };
 
+/// The checks of build_insert that need no geometry (wall, chamber refusal, gap against the fillets,
+/// sizes): FilmInputError naming the field below `field` ("inserts[0]").
+void check_insert_input(const InsertChamber& chamber, const InsertDefinition& def, int index, const std::string& field);
+
 /// Builds insert `index` (1-based) into `chamber`. `field` is its config path below "cooling" for
 /// errors ("inserts[0]"). Throws FilmInputError when it does not fit (offset folds in the chamber, ends
 /// cross, no room for a jet line), FeatureFailure when a boolean fails.

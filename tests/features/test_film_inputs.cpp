@@ -75,7 +75,7 @@ BOOST_AUTO_TEST_CASE(hole_larger_than_the_wall) {
   m.shape.fan.diffuser_length_d = 0;
   m.shape.fan.metering_length_d = 8;
   const auto [f2, w2] = attempt(rows({m}));
-  BOOST_TEST(f2 == "film_rows[0].metering_length_d", w2);
+  BOOST_TEST(f2 == "film_rows[0].fan.metering_length_d", w2);
 }
 
 BOOST_AUTO_TEST_CASE(row_outside_the_span_range) {

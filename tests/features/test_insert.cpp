@@ -98,6 +98,6 @@ BOOST_AUTO_TEST_CASE(insert_that_does_not_fit) {
     build_insert(vane().model, chamber, def, 1, "inserts[0]");
     BOOST_FAIL("jets closer than 2 D were accepted");
   } catch (const FilmInputError& e) {
-    BOOST_TEST(e.field() == "inserts[0].jet_spacing_x_d");
+    BOOST_TEST(e.field() == "inserts[0].jets.spacing_x_d");
   }
 }
