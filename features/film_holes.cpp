@@ -14,17 +14,7 @@
 namespace cg::features {
 namespace {
 
-std::string mm(double x) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.3f", x);
-  return b;
-}
 
-brep::NamedShape named_all(const TopoDS_Shape& s, const std::string& name) {
-  brep::NamedShape n{s, {}};
-  for (TopExp_Explorer e(s, TopAbs_FACE); e.More(); e.Next()) n.faces.push_back({TopoDS::Face(e.Current()), name});
-  return n;
-}
 
 // Closest distance between segments p1-q1 and p2-q2 (Ericson, Real-Time Collision Detection 5.1.9).
 double segment_distance(const Eigen::Vector3d& p1, const Eigen::Vector3d& q1, const Eigen::Vector3d& p2,
@@ -119,9 +109,9 @@ FilmHoleTools make_film_hole_tools(const HoleTarget& target, const std::vector<H
     const HoleSpec& a = holes[i];
     const HoleSpec& b = *other;
     const HoleSpec& later = static_cast<std::size_t>(other - holes.begin()) > i ? b : a;
-    const std::string what = "ligament between " + a.name + " and " + b.name + " is " + mm(out.ligament[i]) +
+    const std::string what = "ligament between " + a.name + " and " + b.name + " is " + film_mm(out.ligament[i]) +
                              " mm (least metal between the holes, a lower bound), below film_limits.min_ligament = " +
-                             mm(limits.min_ligament) + " mm";
+                             film_mm(limits.min_ligament) + " mm";
     if (a.row == b.row) throw FilmInputError(later.field + later.spacing_field, "pitch too small: " + what);
     throw FilmInputError(later.field + later.position_field, "overlapping rows " + a.row + " and " + b.row + ": " + what);
   }
@@ -131,7 +121,7 @@ FilmHoleTools make_film_hole_tools(const HoleTarget& target, const std::vector<H
     const HoleGeometry& g = out.geometry[i];
     FeatureTool t;
     t.feature = h.name;
-    t.shape = named_all(make_hole_solid(h.frame, h.shape, g.extent), h.name);
+    t.shape = named_all_faces(make_hole_solid(h.frame, h.shape, g.extent), h.name);
     t.expected_volume = g.expected_volume;
     if (h.shape.kind == HoleKind::Cylindrical) {
       const Eigen::Vector3d p = h.frame.exit + g.extent.s_top * h.frame.axis;

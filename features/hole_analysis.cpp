@@ -7,6 +7,7 @@
 #include "src/algo/project_point_surface.hpp"
 #include "features/hole_rays.hpp"
 #include "src/algo/ray_surface.hpp"
+#include "src/analyze/gauss_legendre.hpp"
 #include "src/blade/blade_coordinates.hpp"
 
 namespace cg::features {
@@ -14,11 +15,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-std::string mm(double x, int digits = 3) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%.*f", digits, x);
-  return b;
-}
 
 // A reference point of a diffuser piece: its position (x, y) in the section at t is linear in t.
 struct PiecePoint {
@@ -47,25 +43,13 @@ PiecePoint piece_point(int piece, double a, double b, const FanSection& s) {
 }  // namespace
 
 void gauss_legendre_01(int n, std::vector<double>& nodes, std::vector<double>& weights) {
-  require(n >= 1 && n <= 64, "gauss_legendre_01: 1 <= n <= 64");
+  std::vector<double> x(static_cast<std::size_t>(std::max(n, 1))), w(x.size());
+  gauss_legendre(n, x.data(), w.data());
   nodes.assign(n, 0);
   weights.assign(n, 0);
   for (int i = 0; i < n; ++i) {
-    double x = std::cos(kPi * (i + 0.75) / (n + 0.5)), dp = 1;
-    for (int it = 0; it < 100; ++it) {
-      double p0 = 1, p1 = x;
-      for (int k = 2; k <= n; ++k) {
-        const double p2 = ((2 * k - 1) * x * p1 - (k - 1) * p0) / k;
-        p0 = p1;
-        p1 = p2;
-      }
-      dp = n * (x * p1 - p0) / (x * x - 1);
-      const double dx = p1 / dp;
-      x -= dx;
-      if (std::abs(dx) < 1e-16) break;
-    }
-    nodes[n - 1 - i] = 0.5 * (1 + x);
-    weights[n - 1 - i] = 1 / ((1 - x * x) * dp * dp);  // 2 / ((1 - x^2) P'^2) on [-1, 1], halved
+    nodes[n - 1 - i] = 0.5 * (1 + x[i]);  // ascending on [0, 1]
+    weights[n - 1 - i] = 0.5 * w[i];
   }
 }
 
@@ -86,7 +70,7 @@ struct HoleAnalyser::Impl {
   }
 
   [[noreturn]] static void fail(const HoleSpec& h, const std::string& sub, const std::string& what) {
-    throw FilmInputError(h.field + sub, h.name + " (span " + mm(h.span) + ", chord " + mm(h.chord) + "): " + what);
+    throw FilmInputError(h.field + sub, h.name + " (span " + film_mm(h.span) + ", chord " + film_mm(h.chord) + "): " + what);
   }
 
   // Chordwise coordinate of the foot of p on the outer wall (Newton from the exit's parameters, else the
@@ -137,7 +121,7 @@ HoleGeometry HoleAnalyser::Impl::analyse(const HoleSpec& h) {
   const Eigen::Vector3d base = E - s_out * d;
   const RaySurfaceHit ao = outer.first(base, d, search);
   if (!ao.found || std::abs(ao.ray_param - s_out) > 1e-6 * (1 + s_out))
-    fail(h, h.position_field, "the hole axis meets the outer wall " + mm(s_out - ao.ray_param) + " mm before its exit point "
+    fail(h, h.position_field, "the hole axis meets the outer wall " + film_mm(s_out - ao.ray_param) + " mm before its exit point "
                          "(the hole would cut the blade elsewhere first)");
   Eigen::Vector3d n_exit = target.model->surface.normal(ao.u, ao.v);
   if (n_exit.dot(d) > 0) n_exit = -n_exit;
@@ -145,10 +129,10 @@ HoleGeometry HoleAnalyser::Impl::analyse(const HoleSpec& h) {
   const RaySurfaceHit ai = inner.first(base, d, search);
   const RaySurfaceHit ao2 = outer.first(ao.point + 1e-6 * d, d, search);
   if (ao2.found && (!ai.found || ao.ray_param + 1e-6 + ao2.ray_param < ai.ray_param))
-    fail(h, h.position_field, "reaches no chamber: its axis leaves the blade again " + mm(ao2.ray_param) +
+    fail(h, h.position_field, "reaches no chamber: its axis leaves the blade again " + film_mm(ao2.ray_param) +
                              " mm past its exit point, before it enters the cavity");
   if (!ai.found || ai.ray_param <= s_out)
-    fail(h, h.position_field, "reaches no chamber: its axis does not enter the cavity within " + mm(search - s_out, 1) + " mm");
+    fail(h, h.position_field, "reaches no chamber: its axis does not enter the cavity within " + film_mm(search - s_out, 1) + " mm");
   const double sense_o = outer.sense(d, ao), sense_i = inner.sense(d, ai);
   const RaySurfaceHit af = inner.first(ai.point + 1e-6 * d, d, search);
   const double sense_f = af.found ? inner.sense(d, af) : 0;
@@ -158,7 +142,7 @@ HoleGeometry HoleAnalyser::Impl::analyse(const HoleSpec& h) {
   g.inlet_chord = chord_of(ai.point, ao, std::nan(""), &inlet_span);
   g.chamber = std::isnan(g.inlet_chord) ? -1 : target.chamber_at(g.inlet_chord);
   if (g.chamber < 0)
-    fail(h, h.position_field, "reaches no chamber: its axis enters the cavity at chord " + mm(g.inlet_chord) +
+    fail(h, h.position_field, "reaches no chamber: its axis enters the cavity at chord " + film_mm(g.inlet_chord) +
                              ", which belongs to no chamber (a rib or beyond the core)");
   const TargetChamber& chamber = target.chambers[g.chamber];
   if (h.required_chamber > 0 && chamber.number != h.required_chamber)
@@ -173,14 +157,14 @@ HoleGeometry HoleAnalyser::Impl::analyse(const HoleSpec& h) {
     const FanDiffuser& fd = h.shape.fan;
     const double ld = fd.diffuser_length_d > 0 ? fd.diffuser_length_d * D : g.length - fd.metering_length_d * D;
     if (ld <= 0)
-      fail(h, ".fan.metering_length_d", "the metering length " + mm(fd.metering_length_d * D) + " mm leaves no diffuser: the "
-                                    "hole is only " + mm(g.length) + " mm long through the wall");
+      fail(h, ".fan.metering_length_d", "the metering length " + film_mm(fd.metering_length_d * D) + " mm leaves no diffuser: the "
+                                    "hole is only " + film_mm(g.length) + " mm long through the wall");
     if (ld >= g.length)
-      fail(h, dsub, "larger than the wall allows: its diffuser (" + mm(ld) + " mm along the axis) is longer than the "
-                    "hole through the wall (" + mm(g.length) + " mm at inclination " + mm(g.inclination_deg, 1) + " deg)");
+      fail(h, dsub, "larger than the wall allows: its diffuser (" + film_mm(ld) + " mm along the axis) is longer than the "
+                    "hole through the wall (" + film_mm(g.length) + " mm at inclination " + film_mm(g.inclination_deg, 1) + " deg)");
     if (h.shape.fan.edge_radius_d * D > max_edge_radius(h.shape, ld))
-      fail(h, ".fan.edge_radius_d", "edge radius " + mm(h.shape.fan.edge_radius_d * D) + " mm exceeds the largest the "
-                                "diffuser allows, " + mm(max_edge_radius(h.shape, ld)) + " mm");
+      fail(h, ".fan.edge_radius_d", "edge radius " + film_mm(h.shape.fan.edge_radius_d * D) + " mm exceeds the largest the "
+                                "diffuser allows, " + film_mm(max_edge_radius(h.shape, ld)) + " mm");
     prof = std::make_unique<FanProfile>(h.shape, ld);
     sd = ld;
     g.diffuser_length = ld;
@@ -208,11 +192,11 @@ HoleGeometry HoleAnalyser::Impl::analyse(const HoleSpec& h) {
       const RaySurfaceHit ho = outer.near(o, d, ao, sense_o, 0, search, search);
       const RaySurfaceHit hi = inner.near(o, d, ai, sense_i, 0, search, search);
       if (!ho.found || !hi.found || hi.ray_param <= ho.ray_param)
-        fail(h, h.position_field, "does not cross the wall cleanly into the cavity (a line of the hole at " + mm(rho) +
+        fail(h, h.position_field, "does not cross the wall cleanly into the cavity (a line of the hole at " + film_mm(rho) +
                                  " mm from the axis misses the outer or the cavity wall)");
       const double so = ho.ray_param - s_out, si = hi.ray_param - s_out;
       if (fan && so >= sd)
-        fail(h, ".fan.diffuser_length_d", "the metering part breaks out of the outer wall: the diffuser (" + mm(sd) +
+        fail(h, ".fan.diffuser_length_d", "the metering part breaks out of the outer wall: the diffuser (" + film_mm(sd) +
                                           " mm) is too short for the inclination and the wall curvature");
       if (fan && si <= sd)
         fail(h, dsub, "larger than the wall allows: the diffuser reaches the cavity");
@@ -257,7 +241,7 @@ HoleGeometry HoleAnalyser::Impl::analyse(const HoleSpec& h) {
       if (!hit.found) fail(h, h.position_field, "a diffuser line misses the outer wall");
       t_c = t_far - hit.ray_param / vn;
       if (t_c <= 0)
-        fail(h, ".fan.diffuser_length_d", "the metering part breaks out of the outer wall: the diffuser (" + mm(sd) +
+        fail(h, ".fan.diffuser_length_d", "the metering part breaks out of the outer wall: the diffuser (" + film_mm(sd) +
                                           " mm) is too short for the inclination and the wall curvature");
       const RaySurfaceHit hi = inner.near(origin, v / vn, ai, sense_i, 0, search * vn, search * vn);
       if (hi.found && t_far - hi.ray_param / vn >= 0) fail(h, dsub, "larger than the wall allows: the diffuser reaches the cavity");
@@ -319,7 +303,7 @@ HoleGeometry HoleAnalyser::Impl::analyse(const HoleSpec& h) {
   if (!clear) {
     const double cos_t = n_inlet.dot(d);
     if (cos_t < 0.2)
-      fail(h, h.position_field, "enters the cavity at a grazing angle (" + mm(std::acos(cos_t) * 180 / kPi, 1) +
+      fail(h, h.position_field, "enters the cavity at a grazing angle (" + film_mm(std::acos(cos_t) * 180 / kPi, 1) +
                                " deg from the wall's normal)");
     const double delta = depth_n + c * cos_t;
     auto plane_s = [&](const Eigen::Vector3d& o) { return (delta - (o - ai.point).dot(n_inlet)) / cos_t - s_out; };
@@ -331,8 +315,8 @@ HoleGeometry HoleAnalyser::Impl::analyse(const HoleSpec& h) {
       worst = std::min(worst, rim_sf[q] - s_end_rim[q]);
     }
     if (worst < c)
-      fail(h, h.position_field, "the cavity behind the hole is too narrow: its tool must cross the cavity wall by " + mm(c) +
-                               " mm and stay " + mm(c) + " mm from the far wall (" + mm(worst) + " mm left)");
+      fail(h, h.position_field, "the cavity behind the hole is too narrow: its tool must cross the cavity wall by " + film_mm(c) +
+                               " mm and stay " + film_mm(c) + " mm from the far wall (" + film_mm(worst) + " mm left)");
     if (fan && g.extent.s_end - r * std::sqrt(1 - cos_t * cos_t) / cos_t <= sd)
       fail(h, dsub, "larger than the wall allows: the diffuser reaches the cavity");
   }
@@ -342,8 +326,8 @@ HoleGeometry HoleAnalyser::Impl::analyse(const HoleSpec& h) {
     end_rim[q] += (s_out + s_end_rim[q]) * d;
   }
   if (reach > chamber.reach)
-    fail(h, h.position_field, "its tool would reach " + mm(reach) + " mm into " + chamber.name + ", which allows " +
-                             mm(chamber.reach) + " mm (an insert lies behind the gap)");
+    fail(h, h.position_field, "its tool would reach " + film_mm(reach) + " mm into " + chamber.name + ", which allows " +
+                             film_mm(chamber.reach) + " mm (an insert lies behind the gap)");
 
   // Chamber of the whole inlet, obstacles.
   for (const Eigen::Vector3d& p : inlet_rim) {
@@ -360,8 +344,8 @@ HoleGeometry HoleAnalyser::Impl::analyse(const HoleSpec& h) {
     for (const Eigen::Vector3d& p : end_rim) touch = std::min(touch, ob.distance(p));
     if (ob.needs_ligament) {
       if (lig < limits.min_ligament)
-        fail(h, ob.field.empty() ? h.position_field : ob.field, "comes " + mm(lig) + " mm close to " + ob.name + " where it enters the cavity; the ligament "
-                             "must be at least film_limits.min_ligament = " + mm(limits.min_ligament) + " mm");
+        fail(h, ob.field.empty() ? h.position_field : ob.field, "comes " + film_mm(lig) + " mm close to " + ob.name + " where it enters the cavity; the ligament "
+                             "must be at least film_limits.min_ligament = " + film_mm(limits.min_ligament) + " mm");
       if (lig < g.obstacle_ligament) g.obstacle_ligament = lig, g.nearest_obstacle = ob.name;
     }
     if (touch <= 0) fail(h, ob.field.empty() ? h.position_field : ob.field, "its tool would cut " + ob.name);

@@ -99,7 +99,7 @@ class HoleAnalyser {
   std::unique_ptr<Impl> impl_;
 };
 
-/// Gauss-Legendre nodes and weights on [0, 1] (Newton on the Legendre recurrence).
+/// Gauss-Legendre nodes (ascending) and weights on [0, 1] (src/analyze/gauss_legendre.hpp mapped).
 void gauss_legendre_01(int n, std::vector<double>& nodes, std::vector<double>& weights);
 
 }  // namespace cg::features

@@ -160,4 +160,10 @@ double hole_solid_volume(const HoleShape& shape, const HoleToolExtent& e) {
   return kPi * r * r * (e.s_end - e.s_diffuser) + a[0] * t + a[1] * t * t / 2 + a[2] * t * t * t / 3;
 }
 
+brep::NamedShape named_all_faces(const TopoDS_Shape& solid, const std::string& name) {
+  brep::NamedShape n{solid, {}};
+  for (TopExp_Explorer e(solid, TopAbs_FACE); e.More(); e.Next()) n.faces.push_back({TopoDS::Face(e.Current()), name});
+  return n;
+}
+
 }  // namespace cg::features

@@ -18,6 +18,7 @@
 #include <TopoDS_Shape.hxx>
 
 #include "features/hole_shape.hpp"
+#include "src/brep/named_shape.hpp"
 
 namespace cg::features {
 
@@ -39,5 +40,8 @@ TopoDS_Shape make_hole_solid(const HoleFrame& frame, const HoleShape& shape, con
 /// The tool's own volume, analytic (cylinder; fan: metering cylinder + the integral of the exact
 /// cross-section area polynomial), mm^3.
 double hole_solid_volume(const HoleShape& shape, const HoleToolExtent& extent);
+
+/// `solid` with every face named `name` (a hole's or an insert's tool).
+brep::NamedShape named_all_faces(const TopoDS_Shape& solid, const std::string& name);
 
 }  // namespace cg::features

@@ -27,17 +27,7 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-std::string mm(double x) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.3f", x);
-  return b;
-}
 
-brep::NamedShape named_all(const TopoDS_Shape& s, const std::string& name) {
-  brep::NamedShape n{s, {}};
-  for (TopExp_Explorer e(s, TopAbs_FACE); e.More(); e.Next()) n.faces.push_back({TopoDS::Face(e.Current()), name});
-  return n;
-}
 
 double volume_of(const TopoDS_Shape& s) {
   GProp_GProps p;
@@ -110,8 +100,8 @@ void check_insert_input(const InsertChamber& chamber, const InsertDefinition& de
   if (!chamber.refusal.empty()) throw FilmInputError(field + ".chamber", name + ": " + chamber.refusal);
   if (!(Z > 0)) throw FilmInputError(field + ".gap", name + ": the gap must be > 0");
   if (Z < chamber.min_gap)
-    throw FilmInputError(field + ".gap", name + ": the gap " + mm(Z) + " mm is below " + chamber.min_gap_reason + " (" +
-                                             mm(chamber.min_gap) + " mm): the gap in the corners would fall below Z");
+    throw FilmInputError(field + ".gap", name + ": the gap " + film_mm(Z) + " mm is below " + chamber.min_gap_reason + " (" +
+                                             film_mm(chamber.min_gap) + " mm): the gap in the corners would fall below Z");
   if (!(def.sheet_thickness > 0)) throw FilmInputError(field + ".sheet_thickness", name + ": the sheet thickness must be > 0");
   if (def.jet_spacing_x_d < 2) throw FilmInputError(field + ".jets.spacing_x_d", name + ": x/D must be >= 2");
   if (def.jet_spacing_y_d < 2) throw FilmInputError(field + ".jets.spacing_y_d", name + ": y/D must be >= 2");
@@ -135,8 +125,8 @@ InsertBuild build_insert(const blade::BladeModel& model, const InsertChamber& ch
     out.outer_surface = blade::build_inner_wall(model, blade::ThicknessField::constant(tw + Z));
     out.inner_surface = blade::build_inner_wall(model, blade::ThicknessField::constant(tw + Z + ts));
   } catch (const blade::InnerWallError& e) {
-    throw FilmInputError(field + ".gap", name + " does not fit in " + chamber.name + ": its sheet lies " + mm(tw + Z) +
-                                             " to " + mm(tw + Z + ts) + " mm inside the outer wall (" + e.what() + ")");
+    throw FilmInputError(field + ".gap", name + " does not fit in " + chamber.name + ": its sheet lies " + film_mm(tw + Z) +
+                                             " to " + film_mm(tw + Z + ts) + " mm inside the outer wall (" + e.what() + ")");
   }
   // Ends: the end walls moved into the chamber by the gap (outer); closed ends keep a cap of the sheet
   // thickness, open ends let the inner solid run out through the outer one's end.
@@ -158,10 +148,10 @@ InsertBuild build_insert(const blade::BladeModel& model, const InsertChamber& ch
   BooleanStep shell(BooleanOperation::Cut, bo);
   FeatureTool core;
   core.feature = name;
-  core.shape = named_all(inner, name);
+  core.shape = named_all_faces(inner, name);
   if (!def.hub_open && !def.tip_open) core.expected_volume = volume_of(inner);  // inside the outer solid
   shell.add(core);
-  brep::NamedShape body = shell.apply(named_all(outer, name));
+  brep::NamedShape body = shell.apply(named_all_faces(outer, name));
   lap("shell");
 
   // Jet lines around the chamber at mid-span of the insert.
@@ -240,7 +230,7 @@ InsertBuild build_insert(const blade::BladeModel& model, const InsertChamber& ch
       throw FilmInputError(field + ".jets.diameter", std::string(jn) + ": does not cross the insert's sheet");
     const RaySurfaceHit far = exit.first(ai.point + 1e-6 * d, d, 4 * (back + ts) + 1);
     if (far.found && far.ray_param < 2 * clear)
-      throw FilmInputError(field + ".jets.margin", std::string(jn) + ": the insert is only " + mm(far.ray_param) +
+      throw FilmInputError(field + ".jets.margin", std::string(jn) + ": the insert is only " + film_mm(far.ray_param) +
                                                      " mm wide behind the jet; keep the jets further from its narrow end");
     const double so = entry.sense(d, ao), si = exit.sense(d, ai);
     double volume = 0, s_max = 0, s_min = HUGE_VAL;
@@ -267,7 +257,7 @@ InsertBuild build_insert(const blade::BladeModel& model, const InsertChamber& ch
     ext.s_end = s_max + clear;
     FeatureTool t;
     t.feature = jn;
-    t.shape = named_all(make_hole_solid(hf, cyl, ext), jn);
+    t.shape = named_all_faces(make_hole_solid(hf, cyl, ext), jn);
     t.expected_volume = volume;
     t.symmetry_axis = gp_Ax1(pnt(base), gp_Dir(d.x(), d.y(), d.z()));
     holes.add(t);
