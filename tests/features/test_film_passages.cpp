@@ -152,6 +152,7 @@ BOOST_AUTO_TEST_CASE(holes_open_into_their_chambers) {
     const std::string want = starts(h.name, "showerhead_") ? "chamber_1" : "chamber_2";
     BOOST_TEST(h.chamber == want, h.name);
     BOOST_TEST(h.volume_passed, h.name);
+    BOOST_TEST(std::abs(h.measured_volume / h.expected_volume - 1) < 1e-4, h.name << " " << h.measured_volume << " vs " << h.expected_volume);
     // Independent: the hole's faces on the built blade touch its chamber's wall faces and are farther
     // than the ligament from the other chamber's.
     int n = 0;
