@@ -113,14 +113,16 @@ void mesh_section(std::ostringstream& o, const json& m) {
 }
 
 // Film cooling (model.cooling.film, features/film_report.hpp): rows, chambers fed, inserts, every hole.
+// A null ligament means no other hole (or obstacle) is near: "-".
 void film_section(std::ostringstream& o, const json& f) {
+  const auto lig = [](const json& v) { return v.is_null() ? std::string("-") : num(v); };
   o << "## Film cooling\n\n" << num(f.value("hole_count", 0)) << " holes; least ligament between holes "
-    << num(f.value("min_ligament_mm", json())) << " mm (configured minimum " << num(f.value("configured_min_ligament_mm", 0.0))
+    << lig(f.value("min_ligament_mm", json())) << " mm (configured minimum " << num(f.value("configured_min_ligament_mm", 0.0))
     << " mm). Coverage = mean breakout width / pitch along the row.\n\n";
   std::vector<std::vector<std::string>> rows;
   for (const auto& r : f.value("rows", json::array()))
     rows.push_back({cell(r.value("name", "")), num(r.value("holes", 0)), num(r.value("pitch_mm", 0.0)),
-                    num(r.value("breakout_width_mm", 0.0)), num(r.value("coverage", 0.0)), num(r.value("min_ligament_mm", json())),
+                    num(r.value("breakout_width_mm", 0.0)), num(r.value("coverage", 0.0)), lig(r.value("min_ligament_mm", json())),
                     num(r.value("metering_area_mm2", 0.0))});
   table(o, {"row", "holes", "pitch mm", "breakout width mm", "coverage", "min ligament mm", "metering area mm²"}, rows);
   rows.clear();

@@ -46,10 +46,10 @@ const char* builtin_example_json() {
                    "span_start": 0.1, "span_end": 0.9, "chamber": 1},
     "film_rows": [
       {"shape": "7-7-7", "diameter": 0.33, "chord": -0.3, "span_start": 0.1, "span_end": 0.9, "chamber": 2},
-      {"diameter": 0.4, "chord": -0.55, "pitch_d": 5, "inclination_deg": 35, "span_start": 0.1, "span_end": 0.85, "chamber": 3},
+      {"diameter": 0.4, "chord": -0.55, "pitch_d": 5, "inclination_deg": 35, "span_start": 0.1, "span_end": 0.9, "chamber": 3},
       {"diameter": 0.4, "chord": 0.17, "pitch_d": 5, "inclination_deg": 35, "span_start": 0.1, "span_end": 0.9, "chamber": 1},
       {"diameter": 0.4, "chord": 0.35, "pitch_d": 5, "inclination_deg": 30, "compound_deg": 15, "span_start": 0.1, "span_end": 0.9, "chamber": 2},
-      {"diameter": 0.4, "chord": 0.57, "pitch_d": 5, "inclination_deg": 30, "span_start": 0.15, "span_end": 0.9, "chamber": 3}
+      {"diameter": 0.4, "chord": 0.57, "pitch_d": 5, "inclination_deg": 30, "span_start": 0.1, "span_end": 0.9, "chamber": 3}
     ]
   },
   "output": {"step_schema": "AP214"}

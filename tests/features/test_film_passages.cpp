@@ -285,6 +285,17 @@ BOOST_AUTO_TEST_CASE(bad_input_names_the_field) {
   // An insert in a chamber that does not exist.
   e = film_error([](json& c) { c["inserts"][0]["chamber"] = 3; });
   BOOST_TEST(has(e, "cooling.inserts[0].chamber"), e);
+  // `coolinggen validate` (pipeline::validate) places the holes without any solid: a row beyond the TE.
+  json v = config_doc();
+  v["cooling"]["film_rows"][0].erase("chord");
+  v["cooling"]["film_rows"][0]["arc_length"] = -80.0;
+  try {
+    pipeline::validate(parse(v));
+    BOOST_ERROR("validate passed a row beyond the TE");
+  } catch (const config::ConfigError& x) {
+    BOOST_TEST(has(x.what(), "cooling.film_rows[0].arc_length"), x.what());
+    BOOST_TEST(has(x.what(), "beyond the TE"), x.what());
+  }
   // Film input without a core: refused by the parser.
   json d = config_doc();
   d["cooling"].erase("core");
