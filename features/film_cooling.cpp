@@ -49,8 +49,13 @@ FilmCoolingResult build_film_cooling(const blade::BladeModel& model, const brep:
     lap("hole_tools");
   }
 
+  // Stop requests between the steps (the booleans and the gap measurement poll inside too).
+  const auto poll = [&](const std::string& before) {
+    if (progress && progress->stop_requested()) throw Cancelled(before, "before");
+  };
   std::vector<InsertBuild> inserts;
   for (std::size_t i = 0; i < def.inserts.size(); ++i) {
+    poll("insert_" + std::to_string(i + 1));
     inserts.push_back(build_insert(model, *insert_chambers[i], def.inserts[i], static_cast<int>(i) + 1,
                                    "inserts[" + std::to_string(i) + "]", progress));
     lap("insert_" + std::to_string(i + 1));
@@ -58,6 +63,7 @@ FilmCoolingResult build_film_cooling(const blade::BladeModel& model, const brep:
 
   // The holes cut in one verified boolean step.
   if (def.has_holes()) {
+    poll("the film hole cut");
     FilmCutResult cut = cut_film_holes(blade, cavity.target, tools, film_boolean_options(progress));
     out.blade = std::move(cut.blade);
     out.check = cut.check;
@@ -70,7 +76,7 @@ FilmCoolingResult build_film_cooling(const blade::BladeModel& model, const brep:
   }
 
   for (std::size_t i = 0; i < inserts.size(); ++i) {
-    measure_insert(model, out.blade, inserts[i], *insert_chambers[i], def.inserts[i]);
+    measure_insert(model, out.blade, inserts[i], *insert_chambers[i], def.inserts[i], progress);
     // The offsets are fitted within 1e-3 mm (inner_wall.hpp): the built gap and sheet must match within 5e-3.
     const InsertMeasure& m = inserts[i].measure;
     const double tol = 5e-3;

@@ -21,6 +21,7 @@
 #include "features/hole_target.hpp"
 #include "features/hole_tool.hpp"
 #include "src/blade/blade_coordinates.hpp"
+#include "src/brep/occt_progress.hpp"
 
 namespace cg::features {
 namespace {
@@ -286,9 +287,12 @@ InsertBuild build_insert(const blade::BladeModel& model, const InsertChamber& ch
 }
 
 void measure_insert(const blade::BladeModel& model, const brep::NamedShape& blade, InsertBuild& insert,
-                    const InsertChamber& chamber, const InsertDefinition& def) {
+                    const InsertChamber& chamber, const InsertDefinition& def, ProgressSink* progress) {
   InsertMeasure& m = insert.measure;
-  BRepExtrema_DistShapeShape dist(insert.body.geometry.shape, blade.shape);
+  const Handle(brep::OcctProgress) bridge = new brep::OcctProgress(progress, insert.body.name + " gap measurement");
+  BRepExtrema_DistShapeShape dist(insert.body.geometry.shape, blade.shape, Extrema_ExtFlag_MIN, Extrema_ExtAlgo_Grad,
+                                  bridge->Start());
+  bridge->throw_if_stopped();
   if (!dist.IsDone()) throw FeatureFailure(insert.body.name + ": cannot measure the gap to the blade");
   m.measured_gap = dist.Value();
   // Along the wall normal at sample points between the jet lines: the gap to the blade and the sheet.

@@ -81,6 +81,6 @@ InsertBuild build_insert(const blade::BladeModel& model, const InsertChamber& ch
 /// (BRepExtrema) and, at sample points of the insert's outer sheet, the gap along the wall normal to the
 /// blade and the sheet thickness through the insert (line intersections with the built faces).
 void measure_insert(const blade::BladeModel& model, const brep::NamedShape& blade, InsertBuild& insert,
-                    const InsertChamber& chamber, const InsertDefinition& def);
+                    const InsertChamber& chamber, const InsertDefinition& def, ProgressSink* progress = nullptr);
 
 }  // namespace cg::features

@@ -65,7 +65,7 @@ json config_doc() {
                    "span_start": 0.25, "span_end": 0.75, "chamber": 1},
     "film_rows": [
       {"shape": "7-7-7", "diameter": 0.3, "chord": -0.45, "span_start": 0.25, "span_end": 0.75, "chamber": 2},
-      {"diameter": 0.3, "chord": 0.45, "pitch_d": 5, "inclination_deg": 35, "compound_deg": 20,
+      {"diameter": 0.3, "chord": 0.36, "pitch_d": 5, "inclination_deg": 35, "compound_deg": 20,
        "span_start": 0.25, "span_end": 0.75, "chamber": 2}
     ],
     "inserts": [{"chamber": 1, "gap": 0.6, "sheet_thickness": 0.3, "hub_end": "closed", "tip_end": "closed",
@@ -264,12 +264,10 @@ BOOST_AUTO_TEST_CASE(step_read_back_with_bodies_and_hole_names) {
 }
 
 BOOST_AUTO_TEST_CASE(bad_input_names_the_field) {
-  // A row over the rib: its holes come too close to rib_1 (or straddle it).
-  std::string e = film_error([](json& c) {
-    c["film_rows"][1]["chord"] = 0.3;
-    c["film_rows"][1].erase("chamber");
-  });
+  // A row next to the rib: its holes enter chamber 2 too close to rib_1 (its fillet included).
+  std::string e = film_error([](json& c) { c["film_rows"][1]["chord"] = 0.35; });
   BOOST_TEST(has(e, "cooling.film_rows[1].chord"), e);
+  BOOST_TEST(has(e, "close to rib_1"), e);
   // A row that feeds chamber 2 but names chamber 1.
   e = film_error([](json& c) { c["film_rows"][1]["chamber"] = 1; });
   BOOST_TEST(has(e, "cooling.film_rows[1].chamber"), e);
