@@ -263,6 +263,21 @@ BOOST_AUTO_TEST_CASE(step_read_back_with_bodies_and_hole_names) {
   BOOST_TEST(faces.count("insert_1_jet_001") > 0u);
 }
 
+// A stop request once the film stage has started ends the build inside that stage, naming it.
+BOOST_AUTO_TEST_CASE(film_stage_stops_on_request) {
+  struct StopAtFilm : ProgressSink {
+    bool stop = false;
+    void stage_started(const std::string& stage, const std::string&) override { stop = stop || stage == "film"; }
+    bool stop_requested() const override { return stop; }
+  } sink;
+  try {
+    pipeline::run_build(parse(config_doc()), {}, &sink);
+    BOOST_ERROR("the build did not stop");
+  } catch (const Cancelled& e) {
+    BOOST_TEST(has(e.what(), "stage 'film'"), e.what());
+  }
+}
+
 BOOST_AUTO_TEST_CASE(bad_input_names_the_field) {
   // A row next to the rib: its holes enter chamber 2 too close to rib_1 (its fillet included).
   std::string e = film_error([](json& c) { c["film_rows"][1]["chord"] = 0.35; });
