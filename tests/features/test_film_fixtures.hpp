@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "blade/blade_fixtures.hpp"
+#include "features/film_definition.hpp"
 #include "features/film_hollow_blade.hpp"
 #include "features/hole_target.hpp"
 #include "src/blade/blade_surface.hpp"
@@ -34,6 +35,20 @@ struct FilmVane {
       : model(short_vane(span, max_thickness)), hollow(features::make_film_hollow_blade(model, 1.0, 1.0, solid)),
         target(features::film_hollow_target(model, hollow)) {}
 };
+
+/// A cylindrical row at a chordwise coordinate over spans 0.25 .. 0.75.
+inline features::FilmRowDefinition film_row(double chord, double d = 0.4, double pitch_d = 4, double inclination = 30,
+                                            double compound = 0) {
+  features::FilmRowDefinition r;
+  r.shape.diameter = d;
+  r.position = {features::RowPosition::Kind::Chord, chord};
+  r.span_start = 0.25;
+  r.span_end = 0.75;
+  r.pitch_d = pitch_d;
+  r.inclination_deg = inclination;
+  r.compound_deg = compound;
+  return r;
+}
 
 /// Cylinder axes and radii of the faces named `name`.
 inline std::vector<gp_Cylinder> named_cylinders(const brep::NamedShape& s, const std::string& name) {

@@ -26,17 +26,6 @@ test::FilmVane& vane() {
   return v;
 }
 
-FilmRowDefinition row(double chord, double d, double pitch_d, double inclination, double compound) {
-  FilmRowDefinition r;
-  r.shape.diameter = d;
-  r.position = {RowPosition::Kind::Chord, chord};
-  r.span_start = 0.25;
-  r.span_end = 0.75;
-  r.pitch_d = pitch_d;
-  r.inclination_deg = inclination;
-  r.compound_deg = compound;
-  return r;
-}
 
 // Streamwise and spanwise unit directions in the surface at a hole (as defined in film_rows.hpp).
 void surface_axes(const blade::BladeFrame& f, double chord, Eigen::Vector3d& stream, Eigen::Vector3d& span) {
@@ -55,9 +44,9 @@ struct Built {
 const Built& built() {
   static const Built b = [] {
     Built out;
-    out.def.rows.push_back(row(0.35, 0.4, 4, 30, 0));     // suction side
-    out.def.rows.push_back(row(-0.45, 0.4, 5, 35, 40));   // pressure side, compound angle
-    FilmRowDefinition fan = row(-0.25, 0.3, 6, 30, 0);    // 7-7-7 (two holes: shaped holes cost the most)
+    out.def.rows.push_back(test::film_row(0.35, 0.4, 4, 30, 0));     // suction side
+    out.def.rows.push_back(test::film_row(-0.45, 0.4, 5, 35, 40));   // pressure side, compound angle
+    FilmRowDefinition fan = test::film_row(-0.25, 0.3, 6, 30, 0);    // 7-7-7 (two holes: shaped holes cost the most)
     fan.shape = preset_777(0.3);
     fan.span_start = 0.4;
     fan.span_end = 0.6;

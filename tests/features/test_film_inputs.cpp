@@ -23,15 +23,6 @@ test::FilmVane& vane() {
   return v;
 }
 
-FilmRowDefinition row(double chord, double d = 0.4, double pitch_d = 4) {
-  FilmRowDefinition r;
-  r.shape.diameter = d;
-  r.position = {RowPosition::Kind::Chord, chord};
-  r.span_start = 0.25;
-  r.span_end = 0.75;
-  r.pitch_d = pitch_d;
-  return r;
-}
 
 // Runs placement and analysis; returns the error's field and message ("" when it built).
 std::pair<std::string, std::string> attempt(const FilmCoolingDefinition& def, const HoleTarget& target) {
@@ -56,21 +47,21 @@ bool has(const std::string& text, const std::string& part) { return text.find(pa
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(a_valid_row_builds) {
-  const auto [field, what] = attempt(rows({row(0.35)}));
+  const auto [field, what] = attempt(rows({test::film_row(0.35)}));
   BOOST_TEST(field == "", what);
 }
 
 // A 7-7-7 hole of D = 0.5 mm needs 3.5 D = 1.75 mm of diffuser along its axis; through a 1 mm wall at
 // 30 deg the hole is 2 mm long, and the metering part's back side reaches the cavity first.
 BOOST_AUTO_TEST_CASE(hole_larger_than_the_wall) {
-  FilmRowDefinition r = row(0.35, 0.5, 6);
+  FilmRowDefinition r = test::film_row(0.35, 0.5, 6);
   r.shape = preset_777(0.5);
   const auto [field, what] = attempt(rows({r}));
   BOOST_TEST(field == "film_rows[0].diameter");
   BOOST_TEST(has(what, "larger than the wall allows"), what);
   BOOST_TEST(has(what, "film_row_1_hole_001"), what);
   // A metering length that leaves no diffuser.
-  FilmRowDefinition m = row(0.35, 0.3, 6);
+  FilmRowDefinition m = test::film_row(0.35, 0.3, 6);
   m.shape = preset_777(0.3);
   m.shape.fan.diffuser_length_d = 0;
   m.shape.fan.metering_length_d = 8;
@@ -79,14 +70,14 @@ BOOST_AUTO_TEST_CASE(hole_larger_than_the_wall) {
 }
 
 BOOST_AUTO_TEST_CASE(row_outside_the_span_range) {
-  FilmRowDefinition r = row(0.35);
+  FilmRowDefinition r = test::film_row(0.35);
   r.span_end = 1.2;
   BOOST_TEST(attempt(rows({r})).first == "film_rows[0].span_end");
-  r = row(0.35);
+  r = test::film_row(0.35);
   r.span_start = -0.1;
   BOOST_TEST(attempt(rows({r})).first == "film_rows[0].span_start");
   // Beyond the tip cap (1 mm of a 12 mm span): inside the blade's span, outside the cavity's.
-  r = row(0.35);
+  r = test::film_row(0.35);
   r.span_end = 0.97;
   const auto [field, what] = attempt(rows({r}));
   BOOST_TEST(field == "film_rows[0].span_end", what);
@@ -94,26 +85,26 @@ BOOST_AUTO_TEST_CASE(row_outside_the_span_range) {
 }
 
 BOOST_AUTO_TEST_CASE(overlapping_rows) {
-  const auto [field, what] = attempt(rows({row(0.35), row(0.365)}));
+  const auto [field, what] = attempt(rows({test::film_row(0.35), test::film_row(0.365)}));
   BOOST_TEST(field == "film_rows[1].chord", what);
   BOOST_TEST(has(what, "overlapping rows film_row_1 and film_row_2"), what);
   BOOST_TEST(has(what, "min_ligament"), what);
 }
 
 BOOST_AUTO_TEST_CASE(pitch_below_the_diameter) {
-  BOOST_TEST(attempt(rows({row(0.35, 0.4, 0.9)})).first == "film_rows[0].pitch_d");
-  FilmRowDefinition c = row(0.35);
+  BOOST_TEST(attempt(rows({test::film_row(0.35, 0.4, 0.9)})).first == "film_rows[0].pitch_d");
+  FilmRowDefinition c = test::film_row(0.35);
   c.pitch_d = 0;
   c.count = 40;  // 6 mm of row
   const auto [field, what] = attempt(rows({c}));
   BOOST_TEST(field == "film_rows[0].count", what);
   BOOST_TEST(has(what, "below the diameter"), what);
   // Above the diameter but below the ligament: 1.5 D leaves 0.2 mm < 0.3 mm.
-  const auto [f2, w2] = attempt(rows({row(0.35, 0.4, 1.5)}));
+  const auto [f2, w2] = attempt(rows({test::film_row(0.35, 0.4, 1.5)}));
   BOOST_TEST(f2 == "film_rows[0].pitch_d", w2);
   BOOST_TEST(has(w2, "pitch too small"), w2);
   // Neither count nor pitch.
-  FilmRowDefinition n = row(0.35);
+  FilmRowDefinition n = test::film_row(0.35);
   n.pitch_d = 0;
   BOOST_TEST(attempt(rows({n})).first == "film_rows[0]");
 }
@@ -131,7 +122,7 @@ BOOST_AUTO_TEST_CASE(hole_that_reaches_no_chamber) {
   const FilmHollowBlade hollow = make_film_hollow_blade(thin, 1.0, 1.0, false);
   const HoleTarget t = film_hollow_target(thin, hollow);
   FilmCoolingDefinition d;
-  FilmRowDefinition r = row(0.99, 0.2, 4);
+  FilmRowDefinition r = test::film_row(0.99, 0.2, 4);
   r.inclination_deg = 90;
   d.rows = {r};
   std::string field, what;
@@ -147,17 +138,17 @@ BOOST_AUTO_TEST_CASE(hole_that_reaches_no_chamber) {
   BOOST_TEST(has(what, "leaves the blade again"), what);
   HoleTarget front = vane().target;
   front.chambers[0].suction_to = 0.7;
-  const auto [f1, w1] = attempt(rows({row(0.8)}), front);
+  const auto [f1, w1] = attempt(rows({test::film_row(0.8)}), front);
   BOOST_TEST(f1 == "film_rows[0].chord", w1);
   BOOST_TEST(has(w1, "belongs to no chamber"), w1);
   // Two chambers with a gap between them (a rib's place): a row over the gap reaches neither.
   HoleTarget two = vane().target;
   two.chambers = {TargetChamber{1, "chamber_1", 0, 0.3, -0.3, 0}, TargetChamber{2, "chamber_2", 0.4, 1, -1, -0.4}};
-  const auto [f2, w2] = attempt(rows({row(0.35)}), two);
+  const auto [f2, w2] = attempt(rows({test::film_row(0.35)}), two);
   BOOST_TEST(f2 == "film_rows[0].chord", w2);
   BOOST_TEST(has(w2, "reaches no chamber"), w2);
   // A row configured for chamber 2 whose holes enter chamber 1.
-  FilmRowDefinition in1 = row(0.2);
+  FilmRowDefinition in1 = test::film_row(0.2);
   in1.chamber = 2;
   const auto [f3, w3] = attempt(rows({in1}), two);
   BOOST_TEST(f3 == "film_rows[0].chamber", w3);
@@ -173,10 +164,10 @@ BOOST_AUTO_TEST_CASE(hole_too_close_to_a_rib) {
   const Eigen::Vector3d n = (a - b).cross(Eigen::Vector3d::UnitZ()).normalized();
   HoleTarget t = vane().target;
   t.obstacles.push_back({"rib_1", [a, n](const Eigen::Vector3d& p) { return std::abs((p - a).dot(n)) - 0.5; }, true, ""});
-  const auto [field, what] = attempt(rows({row(0.42)}), t);
+  const auto [field, what] = attempt(rows({test::film_row(0.42)}), t);
   BOOST_TEST(field == "film_rows[0].chord", what);
   BOOST_TEST(has(what, "rib_1"), what);
-  const auto [f2, w2] = attempt(rows({row(0.30)}), t);
+  const auto [f2, w2] = attempt(rows({test::film_row(0.30)}), t);
   BOOST_TEST(f2 == "", w2);
 }
 
@@ -184,7 +175,7 @@ BOOST_AUTO_TEST_CASE(hole_too_close_to_a_rib) {
 BOOST_AUTO_TEST_CASE(tool_would_reach_an_insert) {
   HoleTarget t = vane().target;
   t.chambers[0].reach = 0.05;  // less than the tool's clearance past the wall
-  const auto [field, what] = attempt(rows({row(0.35)}), t);
+  const auto [field, what] = attempt(rows({test::film_row(0.35)}), t);
   BOOST_TEST(field == "film_rows[0].chord", what);
   BOOST_TEST(has(what, "insert"), what);
 }
@@ -205,7 +196,7 @@ BOOST_AUTO_TEST_CASE(showerhead_inputs) {
   d.showerhead->pitch_d = 7.5;
   BOOST_TEST(attempt(d).first == "");
   // A row position given as an arc length beyond the TE.
-  FilmRowDefinition r = row(0);
+  FilmRowDefinition r = test::film_row(0);
   r.position = {RowPosition::Kind::ArcLength, 500};
   const auto [field, what] = attempt(rows({r}));
   BOOST_TEST(field == "film_rows[0].arc_length", what);
