@@ -4,10 +4,12 @@
 //
 //   bench_holes            N = 100, 400, 1000 holes (ours, cut and verified), OCCT plain at 100 and 400
 //   bench_holes --quick    N = 12 holes, ours and OCCT plain (smoke run, < 10 s on a quiet machine)
+//   bench_holes --hollow   the full run on the hollow blade below instead of the cooled example
 //   bench_holes --counts 50,200 --occt 50
 //
-// The work load (the part and the hole generator) is one function, hollow_blade_workload(): the part
-// is the built-in example blade (hpt_rotor) minus a core ~1.2 mm inside its wall; holes D 0.5 mm,
+// The full run's work load is the cooled example blade with film rows (cooled_example_workload()); the
+// quick one, hollow_blade_workload(): the built-in example blade (hpt_rotor) minus a core ~1.2 mm
+// inside its wall; holes D 0.5 mm,
 // inclined 30 deg to the surface, drilled from outside into the core, on a staggered grid that fills
 // the same field for every N (features/boolean_sample_part.hpp). Each hole's expected removed volume
 // comes from our own kernel (ray casting, quadrature), not from OCCT, and is computed before the clock
@@ -34,6 +36,10 @@
 #include <vector>
 
 #include "features/boolean_sample_part.hpp"
+#include "features/film_bench.hpp"
+#include "features/film_cavity.hpp"
+#include "src/brep/blade_solid.hpp"
+#include "src/pipeline/cooling.hpp"
 #include "features/verified_boolean.hpp"
 #include "src/config/builtin_example.hpp"
 #include "src/config/config.hpp"
@@ -70,8 +76,28 @@ struct Workload {
   std::function<std::vector<features::FeatureTool>(int count)> holes;
 };
 
-// The work load: a part and a generator of `count` disjoint hole tools with independent expectations.
-// (The film-cooling feature will replace this with the cooled example blade and its hole rows.)
+// The work load of the full run: the built-in example blade with its configured passages (LE chamber,
+// 3-pass serpentine, ribs with fillets) and film rows of `count` holes (D 0.3 mm, 30 deg) placed,
+// analysed and checked by the film feature (features/film_bench.hpp) against the real chambers, ribs and
+// end walls (features/film_cavity.hpp); the expected volumes are the film quadrature.
+Workload cooled_example_workload() {
+  static const config::Config config = config::builtin_example_config();
+  static const blade::BladeModel model = config::build_model(config);
+  const brep::BladeSolid solid = brep::build_blade_solid(model);
+  static const features::PassagesResult cooled = pipeline::apply_cooling(config.cooling, model, {solid.solid, solid.faces});
+  static const features::FilmCavity cavity = features::film_cavity_of_core(model, *config.cooling.passages.core, *cooled.core);
+  Workload w;
+  std::ostringstream d;
+  d << "cooled hpt_rotor blade (passages of the built-in example), " << cooled.blade.faces.size() << " faces";
+  w.description = d.str();
+  w.part = cooled.blade;
+  w.part_volume = cooled.check.volume;
+  w.holes = [](int count) { return features::film_bench_holes(cavity.target, count).tools; };
+  return w;
+}
+
+// The work load of --quick (and --hollow): a part and a generator of `count` disjoint hole tools with
+// independent expectations.
 Workload hollow_blade_workload(bool verify_part) {
   static const blade::BladeModel model = config::build_model(config::builtin_example_config());
   features::HollowBladeOptions ho;
@@ -194,18 +220,19 @@ double run_occt_plain(const Workload& w, const std::vector<features::FeatureTool
 int main(int argc, char** argv) {
   std::setvbuf(stdout, nullptr, _IOLBF, 0);  // lines appear as they are measured
   std::vector<int> counts{100, 400, 1000}, occt{100, 400};
-  bool quick = false;
+  bool quick = false, hollow = false;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--quick")) quick = true, counts = {12}, occt = {12};
+    else if (!std::strcmp(argv[i], "--hollow")) hollow = true;
     else if (!std::strcmp(argv[i], "--counts") && i + 1 < argc) counts = parse_list(argv[++i]);
     else if (!std::strcmp(argv[i], "--occt") && i + 1 < argc) occt = parse_list(argv[++i]);
     else {
-      std::fprintf(stderr, "usage: bench_holes [--quick] [--counts N,N,...] [--occt N,...]\n");
+      std::fprintf(stderr, "usage: bench_holes [--quick] [--hollow] [--counts N,N,...] [--occt N,...]\n");
       return 2;
     }
   }
   const auto t0 = Clock::now();
-  const Workload w = hollow_blade_workload(/*verify_part=*/!quick);
+  const Workload w = quick || hollow ? hollow_blade_workload(/*verify_part=*/!quick) : cooled_example_workload();
   std::printf("part: %s, %.3f mm^3, built in %.1f s\n", w.description.c_str(), w.part_volume, since(t0));
   bool all_ok = true;
   double per_hole_first = 0, per_hole_last = 0;

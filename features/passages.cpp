@@ -79,6 +79,7 @@ PassagesResult build_passages(const blade::BladeModel& model, const brep::NamedS
   if (!out.report.all_chambers_fed)
     failed += (failed.empty() ? "" : "; ") + std::to_string(out.report.closed_cavities) + " closed cavities (no inlet)";
   if (!failed.empty()) throw FeatureFailure("design checks of the cooling passages failed: " + failed);
+  if (core) out.core = std::make_shared<const CoreBuild>(std::move(*core));
   return out;
 }
 

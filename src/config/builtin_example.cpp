@@ -48,7 +48,16 @@ const char* builtin_example_json() {
       "trailing_edge": {"type": "pressure_side_cutback", "slot_height": 0.4, "slot_width": 1.2, "pitch": 2.5,
         "lip_thickness": 0.3, "cutback_length": 0.6, "land_taper_deg": 3.0,
         "pin_fins": {"diameter": 0.8, "spanwise_pitch": 2.5, "streamwise_pitch": 1.6, "rows": 2}}
-    }
+    },
+    "showerhead": {"rows": 3, "diameter": 0.5, "row_spacing_d": 4, "pitch_d": 6, "radial_angle_deg": 30, "toward": "tip",
+                   "span_start": 0.1, "span_end": 0.9, "chamber": 1},
+    "film_rows": [
+      {"shape": "7-7-7", "diameter": 0.33, "chord": -0.3, "span_start": 0.1, "span_end": 0.9, "chamber": 2},
+      {"diameter": 0.4, "chord": -0.55, "pitch_d": 5, "inclination_deg": 35, "span_start": 0.1, "span_end": 0.9, "chamber": 3},
+      {"diameter": 0.4, "chord": 0.17, "pitch_d": 5, "inclination_deg": 35, "span_start": 0.1, "span_end": 0.9, "chamber": 1},
+      {"diameter": 0.4, "chord": 0.35, "pitch_d": 5, "inclination_deg": 30, "compound_deg": 15, "span_start": 0.1, "span_end": 0.9, "chamber": 2},
+      {"diameter": 0.4, "chord": 0.57, "pitch_d": 5, "inclination_deg": 30, "span_start": 0.1, "span_end": 0.9, "chamber": 3}
+    ]
   },
   "output": {"step_schema": "AP214"}
 }

@@ -5,6 +5,7 @@
 
 #include "src/blade/section.hpp"
 #include "src/config/config_error.hpp"
+#include "src/config/cooling_film_config.hpp"
 
 namespace cg::config {
 namespace {
@@ -246,10 +247,14 @@ std::vector<features::RadialPassageDefinition> radial_passages(const Field& f, c
 }  // namespace
 
 CoolingConfig parse_cooling(const Field& f, const std::filesystem::path& base_dir) {
-  f.expect_object({"core", "radial_passages"});
+  static_assert(kFilmCoolingKeys.size() == 4, "the film keys are listed here too");
+  f.expect_object({"core", "radial_passages", "film_rows", "showerhead", "inserts", "film_limits"});
   CoolingConfig c;
   if (f.has("core")) c.passages.core = core(f.at("core"));
   if (f.has("radial_passages")) c.passages.radial_passages = radial_passages(f.at("radial_passages"), base_dir, c.source_files);
+  c.film = parse_film_cooling(f);
+  if (!c.film.empty() && !c.passages.core)
+    fail(f.path(), "film rows, a showerhead and inserts need \"core\": the chambers they feed from or sit in");
   return c;
 }
 
