@@ -3,6 +3,9 @@
 #include <BRepBndLib.hxx>
 #include <BRepCheck_Analyzer.hxx>
 #include <BRepGProp.hxx>
+#include <BRepGProp_Domain.hxx>
+#include <BRepGProp_Face.hxx>
+#include <BRepGProp_Vinert.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepTopAdaptor_FClass2d.hxx>
 #include <BRep_Builder.hxx>
@@ -23,11 +26,14 @@
 #include <TopoDS_Solid.hxx>
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <atomic>
 #include <chrono>
 #include <cmath>
 #include <functional>
 #include <map>
+#include <optional>
 #include <mutex>
 #include <set>
 #include <thread>
@@ -46,6 +52,14 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+// Profiling accumulators (DRILL_DEBUG).
+std::atomic<long long> g_ns[8];
+struct Prof {
+  int k;
+  Clock::time_point t = Clock::now();
+  ~Prof() { g_ns[k] += std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - t).count(); }
+};
 
 gp_Pnt pnt(const Eigen::Vector3d& p) { return gp_Pnt(p.x(), p.y(), p.z()); }
 
@@ -216,6 +230,7 @@ void plan_hole(Workspace& ws, HolePlan& h, const DrillOptions& o) {
     if (std::find(surfaces.begin(), surfaces.end(), fi.surface) == surfaces.end()) surfaces.push_back(fi.surface);
   }
   // Along the axis: exactly two faces, the entry and the exit.
+  std::optional<Prof> pr(std::in_place, Prof{0});
   const std::vector<LineHit> axis = line_hits(ws, surfaces, faces, c.o, c.d, c.length);
   if (axis.size() != 2) {
     h.reason = axis.size() < 2 ? "its axis does not cross a wall (entry and exit face)"
@@ -231,6 +246,7 @@ void plan_hole(Workspace& ws, HolePlan& h, const DrillOptions& o) {
   WallSurface& wb = ws.wall(fb.surface);
 
   // The loops, fitted.
+  pr.emplace(Prof{1});
   h.entry_loop = hole_loop(wa, c, h.entry_hit, o.fit_tolerance);
   if (h.entry_loop.ok) h.exit_loop = hole_loop(wb, c, h.exit_hit, o.fit_tolerance);
   const HoleLoop& bad = h.entry_loop.ok ? h.exit_loop : h.entry_loop;
@@ -252,9 +268,10 @@ void plan_hole(Workspace& ws, HolePlan& h, const DrillOptions& o) {
     return;
   }
   // The loops stay inside their faces with the margin: a ring of radius r + margin on each wall.
+  pr.emplace(Prof{2});
   std::vector<Eigen::Vector2d> ring;
   for (const auto& [f, w, hit] : {std::make_tuple(h.entry, &wa, h.entry_hit), std::make_tuple(h.exit, &wb, h.exit_hit)}) {
-    if (!ring_parameters(*w, c, hit, reach, 64, ring)) {
+    if (!ring_parameters(*w, c, hit, reach, 32, ring)) {
       h.reason = "the margin ring around it could not be followed on '" + part.faces[static_cast<std::size_t>(f)].name + "'";
       return;
     }
@@ -265,9 +282,10 @@ void plan_hole(Workspace& ws, HolePlan& h, const DrillOptions& o) {
       }
   }
   // Ruling lines (and lines of the margin ring): nothing but the entry and exit faces in reach.
-  for (int k = 0; k < 16; ++k) {
-    const double theta = 2 * kPi * k / 16;
-    for (const double rho : {c.radius, reach}) {
+  pr.emplace(Prof{3});
+  for (int k = 0; k < 8; ++k) {
+    const double theta = 2 * kPi * k / 8;
+    for (const double rho : {reach}) {
       const std::vector<LineHit> hits = line_hits(ws, surfaces, faces, c.ruling(theta, rho), c.d, c.length);
       for (const LineHit& x : hits)
         if (x.face != h.entry && x.face != h.exit) {
@@ -280,6 +298,7 @@ void plan_hole(Workspace& ws, HolePlan& h, const DrillOptions& o) {
       }
     }
   }
+  pr.emplace(Prof{4});
   h.quadrature = quadrature_volume(wa, h.entry_hit, wb, h.exit_hit, c);
   if (!std::isfinite(h.quadrature)) h.reason = "the volume quadrature could not follow the walls";
 }
@@ -293,6 +312,18 @@ double segment_distance(const Eigen::Vector3d& p0, const Eigen::Vector3d& d0, do
   double t = std::clamp(e + b * s, 0.0, l1);
   s = std::clamp(b * t - dd, 0.0, l0);
   return (p0 + s * d0 - p1 - t * d1).norm();
+}
+
+// 1/3 * integral over the face of (x - c) . n dA with BRepGProp's fixed Gauss rule (orders from the
+// surface's and the edges' degrees and spans; no adaptive refinement: the faces here are small and
+// smooth, and the result is compared with the quadrature at 1e-6, which would expose a coarse rule).
+double hole_face_flux(const TopoDS_Face& f, const gp_Pnt& c) {
+  BRepGProp_Face bf(f);
+  BRepGProp_Domain bd(f);
+  BRepGProp_Vinert g;
+  g.SetLocation(c);
+  g.Perform(bf, bd);
+  return g.Mass();
 }
 
 int count_solids(const TopoDS_Shape& s) {
@@ -370,6 +401,11 @@ DrillResult drill_holes(const brep::NamedShape& input, const std::vector<Cylindr
     po.tools_per_patch = o.patch_holes_per_patch;
     po.parallel = o.parallel;
     PatchedPart pp = patch_faces(input, tools, po);
+    if (getenv("DRILL_DEBUG")) {
+      std::printf("DEBUG patches: cut lines %d, faces %d -> %d, solids %d, warnings:", pp.cut_lines, pp.faces_before, pp.faces_after, count_solids(pp.part.shape));
+      for (const auto& w : pp.warnings) std::printf(" %s", w.c_str());
+      std::printf("\n");
+    }
     if (pp.cut_lines > 0 && pp.warnings.empty() && count_solids(pp.part.shape) == 1) {
       base = std::move(pp.part);
       r.patched_faces = pp.faces_after - pp.faces_before;
@@ -465,9 +501,10 @@ DrillResult drill_holes(const brep::NamedShape& input, const std::vector<Cylindr
       const Eigen::Vector3d mid2 = mid + (p.cyl.radius + 0.5 * (p.exit_hit.t - p.entry_hit.t)) * p.cyl.e1;
       double v2 = 0;
       dh.volume = 0;
+      std::optional<Prof> pr(std::in_place, Prof{5});
       for (const TopoDS_Face& face : {cap_a, cap_b, s.face}) {
-        dh.volume += face_flux(face, pnt(mid));
-        v2 += face_flux(face, pnt(mid2));
+        dh.volume += hole_face_flux(face, pnt(mid));
+        v2 += hole_face_flux(face, pnt(mid2));
       }
       dh.closure = std::abs(dh.volume - v2);
       // Edge tolerances leave a band of 2 tol along each loop undefined; its lever about `mid` is at
@@ -480,7 +517,9 @@ DrillResult drill_holes(const brep::NamedShape& input, const std::vector<Cylindr
       if (!(std::abs(dh.volume - dh.independent_volume) <= allowed && dh.closure <= allowed))
         f = "hole '" + dh.name + "': removed volume " + std::to_string(dh.volume) + " mm^3 by its faces, " +
             std::to_string(dh.independent_volume) + " mm^3 by quadrature, closure " + std::to_string(dh.closure);
-      else if (!BRepCheck_Analyzer(s.face).IsValid())
+      pr.emplace(Prof{6});
+      if (!f.empty()) {
+      } else if (!BRepCheck_Analyzer(s.face).IsValid())
         f = "hole '" + dh.name + "': its face fails BRepCheck";
       return;
     }
@@ -488,10 +527,13 @@ DrillResult drill_holes(const brep::NamedShape& input, const std::vector<Cylindr
     const FaceInfo& fi = part.faces[static_cast<std::size_t>(face)];
     const TopoDS_Face& nf = rebuilt[static_cast<std::size_t>(face)];
     std::string& f = failures[plans.size() + static_cast<std::size_t>(face)];
+    const auto tb = Clock::now();
     if (!BRepCheck_Analyzer(nf).IsValid()) {
       f = "face '" + fi.name + "' with its holes fails BRepCheck";
       return;
     }
+    if (getenv("DRILL_DEBUG")) std::printf("DEBUG BRepCheck %s (%d holes): %.3f s\n", fi.name.c_str(), (int)on_face.at(face).size(), since(tb));
+    if (!o.face_balance) return;
     // Integral after = before - the caps of its holes (all about one point near the face).
     const gp_Pnt c = pnt(0.5 * (Eigen::Vector3d(fi.box.CornerMin().X(), fi.box.CornerMin().Y(), fi.box.CornerMin().Z()) +
                                 Eigen::Vector3d(fi.box.CornerMax().X(), fi.box.CornerMax().Y(), fi.box.CornerMax().Z())));
@@ -514,6 +556,8 @@ DrillResult drill_holes(const brep::NamedShape& input, const std::vector<Cylindr
     if (!f.empty()) failed += (failed_count++ ? "; " : "") + f;
   if (failed_count) throw FeatureFailure("drill_holes: " + std::to_string(failed_count) + " check(s) failed: " + failed);
   for (double b : balance) r.face_balance += std::abs(b);
+  if (getenv("DRILL_DEBUG"))
+    for (int k = 0; k < 7; ++k) std::printf("DEBUG prof %d: %.3f s\n", k, 1e-9 * static_cast<double>(g_ns[k].exchange(0)));
 
   // 5. The solid: shells rebuilt from their faces (a hole joining two shells merges them).
   BRep_Builder b;

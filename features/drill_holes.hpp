@@ -75,6 +75,10 @@ struct DrillOptions {
   int patch_min_holes = 24;
   int patch_holes_per_patch = 8;
   bool parallel = true;
+  /// Also integrate every rebuilt wall face before and after (BRepGProp, 1e-9) and require
+  /// after = before - its caps. Redundant with the edge-use check, BRepCheck's wire orientation and the
+  /// per-hole closed-boundary volume, and it costs the integral of the whole wall: off by default.
+  bool face_balance = false;
   /// brep::verify_solid on the final result (global; see above). Off: local checks only.
   bool verify_solid = false;
   brep::VerifyOptions verify;
