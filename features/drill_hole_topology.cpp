@@ -125,7 +125,7 @@ HoleShape build_hole_shape(const HoleCylinder& h, const HoleLoop& entry, const W
   return s;
 }
 
-TopoDS_Face wall_with_holes(const TopoDS_Face& wall, const std::vector<const LoopEdge*>& loops) {
+TopoDS_Face wall_with_holes(const TopoDS_Face& wall, const std::vector<LoopEdge*>& loops) {
   BRep_Builder b;
   const TopoDS_Face f0 = TopoDS::Face(wall.Oriented(TopAbs_FORWARD));
   TopLoc_Location loc;
@@ -133,12 +133,13 @@ TopoDS_Face wall_with_holes(const TopoDS_Face& wall, const std::vector<const Loo
   TopoDS_Face f;
   b.MakeFace(f, s, loc, BRep_Tool::Tolerance(f0));
   for (TopoDS_Iterator it(f0); it.More(); it.Next()) b.Add(f, it.Value());
-  for (const LoopEdge* l : loops) {
+  for (LoopEdge* l : loops) {
     TopoDS_Wire w;
     b.MakeWire(w);
     b.Add(w, l->edge.Oriented(l->counterclockwise ? TopAbs_REVERSED : TopAbs_FORWARD));  // clockwise
     w.Closed(true);
     b.Add(f, w);
+    l->wire = w;
   }
   f.Orientation(wall.Orientation());
   return f;

@@ -9,6 +9,7 @@
 #include <Geom_Surface.hxx>
 #include <TopoDS_Edge.hxx>
 #include <TopoDS_Face.hxx>
+#include <TopoDS_Wire.hxx>
 
 #include <vector>
 
@@ -28,6 +29,7 @@ struct LoopEdge {
   bool counterclockwise = true;  ///< the edge's FORWARD direction runs counterclockwise on the wall
   double tolerance = 0;          ///< mm
   double length = 0;             ///< mm (of the 3D curve, from the nodes)
+  TopoDS_Wire wire;              ///< its inner wire in the rebuilt wall face (set by wall_with_holes)
 };
 
 /// The hole: its face (FORWARD: the cylinder's own normal, out of the hole's material) and loop edges.
@@ -41,8 +43,8 @@ struct HoleShape {
 HoleShape build_hole_shape(const HoleCylinder& hole, const HoleLoop& entry, const WallFaceGeometry& entry_wall,
                            const HoleLoop& exit, const WallFaceGeometry& exit_wall);
 
-/// `wall` (any orientation, kept) rebuilt with one inner wire per loop edge.
-TopoDS_Face wall_with_holes(const TopoDS_Face& wall, const std::vector<const LoopEdge*>& loops);
+/// `wall` (any orientation, kept) rebuilt with one inner wire per loop edge (stored in the loop edge).
+TopoDS_Face wall_with_holes(const TopoDS_Face& wall, const std::vector<LoopEdge*>& loops);
 
 /// The piece of `wall` inside a loop (same surface and orientation as `wall`): the material a hole
 /// takes out of the wall's boundary, for the volume balance.

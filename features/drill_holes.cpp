@@ -2,6 +2,9 @@
 
 #include <BRepBndLib.hxx>
 #include <BRepCheck_Analyzer.hxx>
+#include <BRepCheck_Edge.hxx>
+#include <BRepCheck_ListOfStatus.hxx>
+#include <BRepCheck_Wire.hxx>
 #include <BRepGProp.hxx>
 #include <BRepGProp_Domain.hxx>
 #include <BRepGProp_Face.hxx>
@@ -326,6 +329,25 @@ double hole_face_flux(const TopoDS_Face& f, const gp_Pnt& c) {
   return g.Mass();
 }
 
+bool no_error(const BRepCheck_ListOfStatus& l) {
+  for (const BRepCheck_Status st : l)
+    if (st != BRepCheck_NoError) return false;
+  return true;
+}
+
+// BRepCheck's checks of one inner wire and its edge in the context of a face, without the face's
+// checks that look at all of its wires (those are the margin checks of plan_hole here).
+bool inner_wire_valid(const TopoDS_Wire& w, const TopoDS_Edge& e, const TopoDS_Face& face) {
+  BRepCheck_Wire bw(w);
+  TopoDS_Edge e1, e2;
+  if (bw.Closed2d(face) != BRepCheck_NoError || bw.Orientation(face) != BRepCheck_NoError ||
+      bw.SelfIntersect(face, e1, e2) != BRepCheck_NoError)
+    return false;
+  BRepCheck_Edge be(e);
+  be.InContext(face);
+  return no_error(be.StatusOnShape(face));
+}
+
 int count_solids(const TopoDS_Shape& s) {
   int n = 0;
   for (TopExp_Explorer e(s, TopAbs_SOLID); e.More(); e.Next()) ++n;
@@ -351,7 +373,72 @@ std::string edge_use_failure(const TopoDS_Shape& solid) {
   return bad ? std::to_string(bad) + " edge(s) not used exactly once in each direction" : std::string();
 }
 
+// Validated holes with their cylinders and boxes.
+std::vector<HolePlan> initial_plans(const std::vector<CylindricalHole>& holes, const DrillOptions& o) {
+  std::set<std::string> names;
+  std::vector<HolePlan> plans(holes.size());
+  for (std::size_t i = 0; i < holes.size(); ++i) {
+    const CylindricalHole& h = holes[i];
+    require(!h.name.empty() && names.insert(h.name).second, "drill_holes: hole names must be unique and non-empty ('" + h.name + "')");
+    require(h.origin.allFinite() && h.axis.allFinite() && h.axis.norm() > 1e-12,
+            "drill_holes: hole '" + h.name + "': origin and axis must be finite, axis non-zero");
+    require(std::isfinite(h.diameter) && h.diameter > 0 && std::isfinite(h.length) && h.length > 0,
+            "drill_holes: hole '" + h.name + "': diameter and length must be > 0");
+    plans[i].cyl = HoleCylinder::from_axis(h.origin, h.axis, 0.5 * h.diameter, h.length);
+    const HoleCylinder& c = plans[i].cyl;
+    plans[i].box.Add(pnt(c.o));
+    plans[i].box.Add(pnt(c.o + c.length * c.d));
+    plans[i].box.Enlarge(c.radius + o.margin);
+  }
+  return plans;
+}
+
+// Geometry of every hole (parallel): faces crossed, loops, preconditions, quadrature volume; then
+// holes too close to each other fall back together (the boolean path fuses overlapping tools).
+void plan_holes(const Part& part, std::vector<HolePlan>& plans, const std::vector<CylindricalHole>& holes,
+                const DrillOptions& o) {
+  const int threads = o.parallel ? 2 : 1;
+  std::vector<Workspace> ws(static_cast<std::size_t>(threads));
+  for (Workspace& w : ws) {
+    w.part = &part;
+    w.walls.resize(part.surfaces.size());
+    w.classifiers.resize(part.faces.size());
+  }
+  for_each_index(static_cast<int>(plans.size()), o.parallel,
+                 [&](int i, int k) { plan_hole(ws[static_cast<std::size_t>(std::min(k, threads - 1))], plans[static_cast<std::size_t>(i)], o); });
+  std::vector<int> order;
+  for (int i = 0; i < static_cast<int>(plans.size()); ++i) order.push_back(i);
+  std::sort(order.begin(), order.end(), [&](int a, int b) {
+    return plans[static_cast<std::size_t>(a)].box.CornerMin().X() < plans[static_cast<std::size_t>(b)].box.CornerMin().X();
+  });
+  std::vector<std::string> near(plans.size());
+  for (std::size_t a = 0; a < order.size(); ++a)
+    for (std::size_t b = a + 1; b < order.size(); ++b) {
+      HolePlan& p = plans[static_cast<std::size_t>(order[a])];
+      HolePlan& q = plans[static_cast<std::size_t>(order[b])];
+      if (q.box.CornerMin().X() > p.box.CornerMax().X()) break;
+      if (p.box.IsOut(q.box)) continue;
+      const double dist = segment_distance(p.cyl.o, p.cyl.d, p.cyl.length, q.cyl.o, q.cyl.d, q.cyl.length);
+      if (dist < p.cyl.radius + q.cyl.radius + o.margin) {
+        near[static_cast<std::size_t>(order[a])] = holes[static_cast<std::size_t>(order[b])].name;
+        near[static_cast<std::size_t>(order[b])] = holes[static_cast<std::size_t>(order[a])].name;
+      }
+    }
+  for (std::size_t i = 0; i < plans.size(); ++i)
+    if (!near[i].empty() && plans[i].reason.empty()) plans[i].reason = "it is within the margin of hole '" + near[i] + "'";
+}
+
 }  // namespace
+
+std::vector<std::string> drill_fallback_reasons(const brep::NamedShape& part, const std::vector<CylindricalHole>& holes,
+                                                const DrillOptions& options) {
+  std::vector<HolePlan> plans = initial_plans(holes, options);
+  const Part p = index_part(part);
+  plan_holes(p, plans, holes, options);
+  std::vector<std::string> reasons;
+  for (const HolePlan& h : plans) reasons.push_back(h.reason);
+  return reasons;
+}
 
 FeatureTool hole_tool(const CylindricalHole& hole) {
   const HoleCylinder c = HoleCylinder::from_axis(hole.origin, hole.axis, 0.5 * hole.diameter, hole.length);
@@ -369,21 +456,7 @@ DrillResult drill_holes(const brep::NamedShape& input, const std::vector<Cylindr
                         const DrillOptions& o) {
   const auto t_start = Clock::now();
   require(!input.shape.IsNull(), "drill_holes: null part");
-  std::set<std::string> names;
-  std::vector<HolePlan> plans(holes.size());
-  for (std::size_t i = 0; i < holes.size(); ++i) {
-    const CylindricalHole& h = holes[i];
-    require(!h.name.empty() && names.insert(h.name).second, "drill_holes: hole names must be unique and non-empty ('" + h.name + "')");
-    require(h.origin.allFinite() && h.axis.allFinite() && h.axis.norm() > 1e-12,
-            "drill_holes: hole '" + h.name + "': origin and axis must be finite, axis non-zero");
-    require(std::isfinite(h.diameter) && h.diameter > 0 && std::isfinite(h.length) && h.length > 0,
-            "drill_holes: hole '" + h.name + "': diameter and length must be > 0");
-    plans[i].cyl = HoleCylinder::from_axis(h.origin, h.axis, 0.5 * h.diameter, h.length);
-    const HoleCylinder& c = plans[i].cyl;
-    plans[i].box.Add(pnt(c.o));
-    plans[i].box.Add(pnt(c.o + c.length * c.d));
-    plans[i].box.Enlarge(c.radius + o.margin);
-  }
+  std::vector<HolePlan> plans = initial_plans(holes, o);
   DrillResult r;
   r.holes.resize(holes.size());
 
@@ -416,42 +489,13 @@ DrillResult drill_holes(const brep::NamedShape& input, const std::vector<Cylindr
   // 2. Geometry of every hole (parallel): faces crossed, loops, preconditions, quadrature volume.
   t = Clock::now();
   const Part part = index_part(base);
-  const int threads = o.parallel ? 2 : 1;
-  std::vector<Workspace> ws(static_cast<std::size_t>(threads));
-  for (Workspace& w : ws) {
-    w.part = &part;
-    w.walls.resize(part.surfaces.size());
-    w.classifiers.resize(part.faces.size());
-  }
-  for_each_index(static_cast<int>(plans.size()), o.parallel,
-                 [&](int i, int k) { plan_hole(ws[static_cast<std::size_t>(std::min(k, threads - 1))], plans[static_cast<std::size_t>(i)], o); });
-  // Holes too close to each other fall back together (the boolean path fuses overlapping tools).
-  std::vector<int> order;
-  for (int i = 0; i < static_cast<int>(plans.size()); ++i) order.push_back(i);
-  std::sort(order.begin(), order.end(), [&](int a, int b) {
-    return plans[static_cast<std::size_t>(a)].box.CornerMin().X() < plans[static_cast<std::size_t>(b)].box.CornerMin().X();
-  });
-  std::vector<std::string> near(plans.size());
-  for (std::size_t a = 0; a < order.size(); ++a)
-    for (std::size_t b = a + 1; b < order.size(); ++b) {
-      HolePlan& p = plans[static_cast<std::size_t>(order[a])];
-      HolePlan& q = plans[static_cast<std::size_t>(order[b])];
-      if (q.box.CornerMin().X() > p.box.CornerMax().X()) break;
-      if (p.box.IsOut(q.box)) continue;
-      const double dist = segment_distance(p.cyl.o, p.cyl.d, p.cyl.length, q.cyl.o, q.cyl.d, q.cyl.length);
-      if (dist < p.cyl.radius + q.cyl.radius + o.margin) {
-        near[static_cast<std::size_t>(order[a])] = holes[static_cast<std::size_t>(order[b])].name;
-        near[static_cast<std::size_t>(order[b])] = holes[static_cast<std::size_t>(order[a])].name;
-      }
-    }
-  for (std::size_t i = 0; i < plans.size(); ++i)
-    if (!near[i].empty() && plans[i].reason.empty()) plans[i].reason = "it is within the margin of hole '" + near[i] + "'";
+  plan_holes(part, plans, holes, o);
   r.seconds_geometry = since(t);
 
   // 3. Topology: hole faces, rebuilt walls, shells.
   t = Clock::now();
   std::vector<HoleShape> shapes(plans.size());
-  std::map<int, std::vector<std::pair<int, const LoopEdge*>>> on_face;  // face -> (hole, loop edge)
+  std::map<int, std::vector<std::pair<int, LoopEdge*>>> on_face;  // face -> (hole, loop edge)
   for (std::size_t i = 0; i < plans.size(); ++i) {
     HolePlan& p = plans[i];
     DrilledHole& dh = r.holes[i];
@@ -476,7 +520,7 @@ DrillResult drill_holes(const brep::NamedShape& input, const std::vector<Cylindr
   for (const auto& [f, loops] : on_face) rebuilt_ids.push_back(f);
   std::vector<TopoDS_Face> rebuilt(part.faces.size());
   for (const auto& [f, loops] : on_face) {
-    std::vector<const LoopEdge*> edges;
+    std::vector<LoopEdge*> edges;
     for (const auto& [hole, e] : loops) edges.push_back(e);
     rebuilt[static_cast<std::size_t>(f)] = wall_with_holes(part.faces[static_cast<std::size_t>(f)].face, edges);
   }
@@ -518,22 +562,31 @@ DrillResult drill_holes(const brep::NamedShape& input, const std::vector<Cylindr
         f = "hole '" + dh.name + "': removed volume " + std::to_string(dh.volume) + " mm^3 by its faces, " +
             std::to_string(dh.independent_volume) + " mm^3 by quadrature, closure " + std::to_string(dh.closure);
       pr.emplace(Prof{6});
-      if (!f.empty()) {
-      } else if (!BRepCheck_Analyzer(s.face).IsValid())
+      if (!f.empty()) return;
+      if (!BRepCheck_Analyzer(s.face).IsValid()) {
         f = "hole '" + dh.name + "': its face fails BRepCheck";
+        return;
+      }
+      // Its loops as inner wires of the rebuilt walls: the wire and edge checks of BRepCheck in the
+      // context of the wall face (2D closure, self-intersection, orientation; pcurve on the wall).
+      for (const auto& [face, e] : {std::make_pair(p.entry, &s.entry), std::make_pair(p.exit, &s.exit)}) {
+        const TopoDS_Face wall = TopoDS::Face(rebuilt[static_cast<std::size_t>(face)].Oriented(TopAbs_FORWARD));
+        if (!inner_wire_valid(e->wire, e->edge, wall)) {
+          f = "hole '" + dh.name + "': its loop fails BRepCheck in face '" + part.faces[static_cast<std::size_t>(face)].name + "'";
+          return;
+        }
+      }
       return;
     }
     const int face = rebuilt_ids[static_cast<std::size_t>(j) - plans.size()];
     const FaceInfo& fi = part.faces[static_cast<std::size_t>(face)];
     const TopoDS_Face& nf = rebuilt[static_cast<std::size_t>(face)];
     std::string& f = failures[plans.size() + static_cast<std::size_t>(face)];
-    const auto tb = Clock::now();
+    if (!o.whole_face_checks) return;
     if (!BRepCheck_Analyzer(nf).IsValid()) {
       f = "face '" + fi.name + "' with its holes fails BRepCheck";
       return;
     }
-    if (getenv("DRILL_DEBUG")) std::printf("DEBUG BRepCheck %s (%d holes): %.3f s\n", fi.name.c_str(), (int)on_face.at(face).size(), since(tb));
-    if (!o.face_balance) return;
     // Integral after = before - the caps of its holes (all about one point near the face).
     const gp_Pnt c = pnt(0.5 * (Eigen::Vector3d(fi.box.CornerMin().X(), fi.box.CornerMin().Y(), fi.box.CornerMin().Z()) +
                                 Eigen::Vector3d(fi.box.CornerMax().X(), fi.box.CornerMax().Y(), fi.box.CornerMax().Z())));

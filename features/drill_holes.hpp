@@ -32,8 +32,12 @@
 //    caps, BRepGProp) against an independent ray quadrature (Gauss-Legendre in radius x trapezoid in
 //    angle of the wall chord of axis-parallel lines, our kernel): |a - b| <= volume_rel_tolerance * b
 //    + the uncertainty the edge tolerances leave;
-//  - per rebuilt wall face: BRepCheck_Analyzer, and its divergence integral after = before - its caps;
-//  - every hole face: BRepCheck_Analyzer;
+//  - every hole face: BRepCheck_Analyzer (its edges with all their pcurves, vertices, wire, face);
+//  - every loop as an inner wire of its rebuilt wall: BRepCheck's wire checks in the face's context
+//    (2D closure, orientation, self-intersection) and edge checks (pcurve on the wall). What
+//    BRepCheck_Face adds -- wires of one face crossing each other or the outer wire -- is what the
+//    margin checks exclude (rings of radius r + margin inside the face, axis distances >= r1 + r2 +
+//    margin); whole_face_checks runs it anyway;
 //  - the whole result: every edge used exactly twice with opposite orientations (closed, oriented
 //    shells), one solid;
 //  - optional (`verify_solid`): brep::verify_solid on the result (BRepCheck, free edges, closed mesh,
@@ -75,10 +79,11 @@ struct DrillOptions {
   int patch_min_holes = 24;
   int patch_holes_per_patch = 8;
   bool parallel = true;
-  /// Also integrate every rebuilt wall face before and after (BRepGProp, 1e-9) and require
-  /// after = before - its caps. Redundant with the edge-use check, BRepCheck's wire orientation and the
-  /// per-hole closed-boundary volume, and it costs the integral of the whole wall: off by default.
-  bool face_balance = false;
+  /// Also check every rebuilt wall face as a whole: BRepCheck_Analyzer of the face (all its wires) and
+  /// its divergence integral (BRepGProp, 1e-9) after = before - its caps. Off by default: the per-hole
+  /// checks cover the same ground locally (see above) and these cost O(holes on the face) each, on
+  /// one thread per face (~10 ms per hole on the blade wall).
+  bool whole_face_checks = false;
   /// brep::verify_solid on the final result (global; see above). Off: local checks only.
   bool verify_solid = false;
   brep::VerifyOptions verify;
@@ -121,6 +126,11 @@ struct DrillResult {
 /// seam lies on the same ruling), every face named after the hole, symmetry axis set, expected volume
 /// NaN (the step measures OCCT's Common).
 FeatureTool hole_tool(const CylindricalHole& hole);
+
+/// The preconditions alone, on `part` as it is (no patches, nothing built): per hole, why it would fall
+/// back ("" when it would be drilled directly). Same errors as drill_holes for bad holes.
+std::vector<std::string> drill_fallback_reasons(const brep::NamedShape& part, const std::vector<CylindricalHole>& holes,
+                                                const DrillOptions& options = {});
 
 /// Drills `holes` into `part` (one solid, named faces). Throws InvalidGeometry for a bad hole (zero or
 /// non-finite axis, diameter or length <= 0, duplicate name), FeatureFailure when a check fails (naming

@@ -127,33 +127,43 @@ std::vector<CylindricalHole> film_hole_field(const blade::BladeModel& model, con
   require(!kept.empty(), "film_hole_field: no chordwise position exits onto a chamber wall");
   const double span_len = (bc.frame(o.span_max, kept[0].x).point - bc.frame(o.span_min, kept[0].x).point).norm();
   const int per_row_max = std::max(1, static_cast<int>(span_len / o.min_pitch));
-  // As few rows as the count needs, spread over the kept positions.
-  const int n_rows = std::min<int>(static_cast<int>(kept.size()), (o.count + per_row_max - 1) / per_row_max);
-  const int per_row = (o.count + n_rows - 1) / n_rows;
-  require(per_row <= per_row_max,
-          "film_hole_field: the chambers leave room for " + std::to_string(per_row_max * kept.size()) + " holes, " +
-              std::to_string(o.count) + " requested");
-  std::vector<Row> chosen;
-  for (int k = 0; k < n_rows; ++k)
-    chosen.push_back(kept[static_cast<std::size_t>(n_rows == 1 ? kept.size() / 2 : k * (kept.size() - 1) / (n_rows - 1))]);
-
+  // As few rows as the count needs, spread over the kept positions; holes the direct drilling would
+  // not take (a rib or fillet within reach, too close to an edge of their faces) are dropped, and rows
+  // are added until `count` remain.
   std::vector<CylindricalHole> holes;
-  for (int row = 0; row < n_rows && static_cast<int>(holes.size()) < o.count; ++row) {
-    const double stagger = (row % 2) * 0.5;
-    for (int j = 0; j < per_row && static_cast<int>(holes.size()) < o.count; ++j) {
-      const double span = o.span_min + (o.span_max - o.span_min) * (j + 0.25 + stagger) / per_row;
-      CylindricalHole h;
-      if (!place_hole(bc, walls, outer, span, chosen[static_cast<std::size_t>(row)].x, o, h)) continue;
-      char name[64];
-      std::snprintf(name, sizeof name, "%s%d_hole_%03d", o.name_prefix.c_str(), row + 1, j + 1);
-      h.name = name;
-      holes.push_back(h);
+  const int min_rows = (o.count + per_row_max - 1) / per_row_max;
+  const int max_rows = static_cast<int>(kept.size());
+  for (int n_rows = std::min(min_rows, max_rows), last = 0; !last && static_cast<int>(holes.size()) < o.count;
+       n_rows = std::min(max_rows, n_rows + 1 + n_rows / 8)) {
+    last = n_rows == max_rows;
+    const int in_row = last ? per_row_max : std::min(per_row_max, (o.count + n_rows - 1) / n_rows + 1);
+    std::vector<CylindricalHole> grid;
+    for (int row = 0; row < n_rows; ++row) {
+      const Row& at = kept[static_cast<std::size_t>(n_rows == 1 ? kept.size() / 2 : row * (kept.size() - 1) / (n_rows - 1))];
+      const double stagger = (row % 2) * 0.5;
+      for (int j = 0; j < in_row; ++j) {
+        const double span = o.span_min + (o.span_max - o.span_min) * (j + 0.25 + stagger) / in_row;
+        CylindricalHole h;
+        if (!place_hole(bc, walls, outer, span, at.x, o, h)) continue;
+        char name[64];
+        std::snprintf(name, sizeof name, "%s%d_hole_%03d", o.name_prefix.c_str(), row + 1, j + 1);
+        h.name = name;
+        grid.push_back(h);
+      }
     }
+    const std::vector<std::string> reasons = drill_fallback_reasons(part, grid);
+    holes.clear();
+    for (std::size_t k = 0; k < grid.size(); ++k)
+      if (reasons[k].empty()) holes.push_back(grid[k]);
   }
-  require(static_cast<int>(holes.size()) == o.count,
+  require(static_cast<int>(holes.size()) >= o.count,
           "film_hole_field: only " + std::to_string(holes.size()) + " of " + std::to_string(o.count) +
-              " holes exit onto a chamber wall");
-  return holes;
+              " holes fit onto the chamber walls (" + std::to_string(kept.size()) + " rows of at most " +
+              std::to_string(per_row_max) + ")");
+  // Every k-th hole, so the field stays spread over all rows.
+  std::vector<CylindricalHole> out;
+  for (int k = 0; k < o.count; ++k) out.push_back(holes[static_cast<std::size_t>(static_cast<long>(k) * static_cast<long>(holes.size()) / o.count)]);
+  return out;
 }
 
 std::vector<CylindricalHole> holes_of_tools(const std::vector<FeatureTool>& tools) {

@@ -22,8 +22,8 @@ struct FilmFieldOptions {
   double span_min = 0.12, span_max = 0.88;
   double chord_min = 0.08, chord_max = 0.92;  ///< chordwise band searched on each side
   double ring_margin = 0.15;    ///< mm: the exit ring r + margin must lie on one chamber wall face
-  double min_row_gap = 0.5;     ///< mm between the footprints of neighbouring rows (along the surface)
-  double min_pitch = 1.5;       ///< mm, smallest spanwise pitch
+  double min_row_gap = 0.4;     ///< mm between the footprints of neighbouring rows (along the surface)
+  double min_pitch = 1.2;       ///< mm, smallest spanwise pitch
   std::string name_prefix = "film_row_";
 };
 
