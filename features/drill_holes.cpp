@@ -57,7 +57,7 @@ using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 // Profiling accumulators (DRILL_DEBUG).
-std::atomic<long long> g_ns[8];
+std::atomic<long long> g_ns[12];
 struct Prof {
   int k;
   Clock::time_point t = Clock::now();
@@ -335,14 +335,27 @@ bool no_error(const BRepCheck_ListOfStatus& l) {
   return true;
 }
 
-// BRepCheck's checks of one inner wire and its edge in the context of a face, without the face's
-// checks that look at all of its wires (those are the margin checks of plan_hole here).
-bool inner_wire_valid(const TopoDS_Wire& w, const TopoDS_Edge& e, const TopoDS_Face& face) {
+// BRepCheck's checks of one inner wire and its edge in the context of its wall: 2D closure,
+// orientation, self-intersection, the edge's pcurve on the wall. They run on a face of the wall's
+// surface that holds only this wire: in the rebuilt wall each of them would first walk every edge of
+// the face (BRepTools_WireExplorer's parameter bounds), O(holes) per hole. What BRepCheck_Face adds --
+// wires of one face crossing each other or the outer wire -- is what plan_hole's margin checks exclude.
+bool inner_wire_valid(const TopoDS_Wire& w, const TopoDS_Edge& e, const TopoDS_Face& wall) {
+  BRep_Builder b;
+  TopLoc_Location loc;
+  const Handle(Geom_Surface) s = BRep_Tool::Surface(wall, loc);
+  TopoDS_Face face;
+  b.MakeFace(face, s, loc, BRep_Tool::Tolerance(wall));
+  b.Add(face, w);
   BRepCheck_Wire bw(w);
   TopoDS_Edge e1, e2;
-  if (bw.Closed2d(face) != BRepCheck_NoError || bw.Orientation(face) != BRepCheck_NoError ||
-      bw.SelfIntersect(face, e1, e2) != BRepCheck_NoError)
-    return false;
+  std::optional<Prof> pr(std::in_place, Prof{8});
+  if (bw.Closed2d(face) != BRepCheck_NoError) return false;
+  pr.emplace(Prof{9});
+  if (bw.Orientation(face) != BRepCheck_NoError) return false;
+  pr.emplace(Prof{10});
+  if (bw.SelfIntersect(face, e1, e2) != BRepCheck_NoError) return false;
+  pr.emplace(Prof{11});
   BRepCheck_Edge be(e);
   be.InContext(face);
   return no_error(be.StatusOnShape(face));
@@ -567,11 +580,11 @@ DrillResult drill_holes(const brep::NamedShape& input, const std::vector<Cylindr
         f = "hole '" + dh.name + "': its face fails BRepCheck";
         return;
       }
+      pr.emplace(Prof{7});
       // Its loops as inner wires of the rebuilt walls: the wire and edge checks of BRepCheck in the
       // context of the wall face (2D closure, self-intersection, orientation; pcurve on the wall).
       for (const auto& [face, e] : {std::make_pair(p.entry, &s.entry), std::make_pair(p.exit, &s.exit)}) {
-        const TopoDS_Face wall = TopoDS::Face(rebuilt[static_cast<std::size_t>(face)].Oriented(TopAbs_FORWARD));
-        if (!inner_wire_valid(e->wire, e->edge, wall)) {
+        if (!inner_wire_valid(e->wire, e->edge, part.faces[static_cast<std::size_t>(face)].face)) {
           f = "hole '" + dh.name + "': its loop fails BRepCheck in face '" + part.faces[static_cast<std::size_t>(face)].name + "'";
           return;
         }
@@ -610,7 +623,7 @@ DrillResult drill_holes(const brep::NamedShape& input, const std::vector<Cylindr
   if (failed_count) throw FeatureFailure("drill_holes: " + std::to_string(failed_count) + " check(s) failed: " + failed);
   for (double b : balance) r.face_balance += std::abs(b);
   if (getenv("DRILL_DEBUG"))
-    for (int k = 0; k < 7; ++k) std::printf("DEBUG prof %d: %.3f s\n", k, 1e-9 * static_cast<double>(g_ns[k].exchange(0)));
+    for (int k = 0; k < 12; ++k) std::printf("DEBUG prof %d: %.3f s\n", k, 1e-9 * static_cast<double>(g_ns[k].exchange(0)));
 
   // 5. The solid: shells rebuilt from their faces (a hole joining two shells merges them).
   BRep_Builder b;
