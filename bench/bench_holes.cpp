@@ -6,7 +6,8 @@
 //                          verified), OCCT plain at 100 and 400; each result also checked globally by
 //                          brep::verify_solid after the clock stopped
 //   bench_holes --quick    N = 12 holes in the hollow example blade (smoke run, < 10 s)
-//   bench_holes --counts 50,200 --occt 50 --step 100 --hollow --no-global
+//   bench_holes --counts 50,200 --occt 50 --step 100 --hollow --no-global --patches
+//                          (--step: also the verified boolean path; --patches: split walls first)
 //
 // Work loads: the cooled example blade (builtin hpt_rotor config with its chambers, ribs and fillets,
 // features/passages.hpp; ~40 s to build, not timed) with a film-hole field from
@@ -277,10 +278,10 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--step") && i + 1 < argc) steps = parse_list(argv[++i]);
     else if (!std::strcmp(argv[i], "--hollow")) hollow = true;
     else if (!std::strcmp(argv[i], "--no-global")) global = false;
-    else if (!std::strcmp(argv[i], "--no-patches")) options.patch_min_holes = 0;
+    else if (!std::strcmp(argv[i], "--patches")) options.patch_min_holes = 24;
     else {
       std::fprintf(stderr, "usage: bench_holes [--quick] [--counts N,N,...] [--occt N,...] [--step N,...] [--hollow] "
-                           "[--no-global] [--no-patches]\n");
+                           "[--no-global] [--patches]\n");
       return 2;
     }
   }

@@ -29,14 +29,11 @@
 #include <TopoDS_Solid.hxx>
 
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 #include <atomic>
 #include <chrono>
 #include <cmath>
 #include <functional>
 #include <map>
-#include <optional>
 #include <mutex>
 #include <set>
 #include <thread>
@@ -55,14 +52,6 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-
-// Profiling accumulators (DRILL_DEBUG).
-std::atomic<long long> g_ns[12];
-struct Prof {
-  int k;
-  Clock::time_point t = Clock::now();
-  ~Prof() { g_ns[k] += std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - t).count(); }
-};
 
 gp_Pnt pnt(const Eigen::Vector3d& p) { return gp_Pnt(p.x(), p.y(), p.z()); }
 
@@ -233,7 +222,6 @@ void plan_hole(Workspace& ws, HolePlan& h, const DrillOptions& o) {
     if (std::find(surfaces.begin(), surfaces.end(), fi.surface) == surfaces.end()) surfaces.push_back(fi.surface);
   }
   // Along the axis: exactly two faces, the entry and the exit.
-  std::optional<Prof> pr(std::in_place, Prof{0});
   const std::vector<LineHit> axis = line_hits(ws, surfaces, faces, c.o, c.d, c.length);
   if (axis.size() != 2) {
     h.reason = axis.size() < 2 ? "its axis does not cross a wall (entry and exit face)"
@@ -249,7 +237,6 @@ void plan_hole(Workspace& ws, HolePlan& h, const DrillOptions& o) {
   WallSurface& wb = ws.wall(fb.surface);
 
   // The loops, fitted.
-  pr.emplace(Prof{1});
   h.entry_loop = hole_loop(wa, c, h.entry_hit, o.fit_tolerance);
   if (h.entry_loop.ok) h.exit_loop = hole_loop(wb, c, h.exit_hit, o.fit_tolerance);
   const HoleLoop& bad = h.entry_loop.ok ? h.exit_loop : h.entry_loop;
@@ -271,7 +258,6 @@ void plan_hole(Workspace& ws, HolePlan& h, const DrillOptions& o) {
     return;
   }
   // The loops stay inside their faces with the margin: a ring of radius r + margin on each wall.
-  pr.emplace(Prof{2});
   std::vector<Eigen::Vector2d> ring;
   for (const auto& [f, w, hit] : {std::make_tuple(h.entry, &wa, h.entry_hit), std::make_tuple(h.exit, &wb, h.exit_hit)}) {
     if (!ring_parameters(*w, c, hit, reach, 32, ring)) {
@@ -285,7 +271,6 @@ void plan_hole(Workspace& ws, HolePlan& h, const DrillOptions& o) {
       }
   }
   // Ruling lines (and lines of the margin ring): nothing but the entry and exit faces in reach.
-  pr.emplace(Prof{3});
   for (int k = 0; k < 8; ++k) {
     const double theta = 2 * kPi * k / 8;
     for (const double rho : {reach}) {
@@ -301,7 +286,6 @@ void plan_hole(Workspace& ws, HolePlan& h, const DrillOptions& o) {
       }
     }
   }
-  pr.emplace(Prof{4});
   h.quadrature = quadrature_volume(wa, h.entry_hit, wb, h.exit_hit, c);
   if (!std::isfinite(h.quadrature)) h.reason = "the volume quadrature could not follow the walls";
 }
@@ -349,13 +333,9 @@ bool inner_wire_valid(const TopoDS_Wire& w, const TopoDS_Edge& e, const TopoDS_F
   b.Add(face, w);
   BRepCheck_Wire bw(w);
   TopoDS_Edge e1, e2;
-  std::optional<Prof> pr(std::in_place, Prof{8});
   if (bw.Closed2d(face) != BRepCheck_NoError) return false;
-  pr.emplace(Prof{9});
   if (bw.Orientation(face) != BRepCheck_NoError) return false;
-  pr.emplace(Prof{10});
   if (bw.SelfIntersect(face, e1, e2) != BRepCheck_NoError) return false;
-  pr.emplace(Prof{11});
   BRepCheck_Edge be(e);
   be.InContext(face);
   return no_error(be.StatusOnShape(face));
@@ -487,11 +467,6 @@ DrillResult drill_holes(const brep::NamedShape& input, const std::vector<Cylindr
     po.tools_per_patch = o.patch_holes_per_patch;
     po.parallel = o.parallel;
     PatchedPart pp = patch_faces(input, tools, po);
-    if (getenv("DRILL_DEBUG")) {
-      std::printf("DEBUG patches: cut lines %d, faces %d -> %d, solids %d, warnings:", pp.cut_lines, pp.faces_before, pp.faces_after, count_solids(pp.part.shape));
-      for (const auto& w : pp.warnings) std::printf(" %s", w.c_str());
-      std::printf("\n");
-    }
     if (pp.cut_lines > 0 && pp.warnings.empty() && count_solids(pp.part.shape) == 1) {
       base = std::move(pp.part);
       r.patched_faces = pp.faces_after - pp.faces_before;
@@ -556,14 +531,16 @@ DrillResult drill_holes(const brep::NamedShape& input, const std::vector<Cylindr
       const Eigen::Vector3d mid = p.cyl.o + 0.5 * (p.entry_hit.t + p.exit_hit.t) * p.cyl.d;
       // About two points a hole size apart: a closed boundary gives the same volume ("closure").
       const Eigen::Vector3d mid2 = mid + (p.cyl.radius + 0.5 * (p.exit_hit.t - p.entry_hit.t)) * p.cyl.e1;
-      double v2 = 0;
-      dh.volume = 0;
-      std::optional<Prof> pr(std::in_place, Prof{5});
-      for (const TopoDS_Face& face : {cap_a, cap_b, s.face}) {
-        dh.volume += hole_face_flux(face, pnt(mid));
-        v2 += hole_face_flux(face, pnt(mid2));
-      }
-      dh.closure = std::abs(dh.volume - v2);
+      const auto measure = [&](bool adaptive) {
+        double v2 = 0;
+        dh.volume = 0;
+        for (const TopoDS_Face& face : {cap_a, cap_b, s.face}) {
+          dh.volume += adaptive ? face_flux(face, pnt(mid)) : hole_face_flux(face, pnt(mid));
+          v2 += adaptive ? face_flux(face, pnt(mid2)) : hole_face_flux(face, pnt(mid2));
+        }
+        dh.closure = std::abs(dh.volume - v2);
+      };
+      measure(false);
       // Edge tolerances leave a band of 2 tol along each loop undefined; its lever about `mid` is at
       // most the loop's distance from it (/3 of the divergence integrand).
       const double lever = std::max((p.entry_loop.start - mid).norm(), (p.exit_loop.start - mid).norm()) +
@@ -571,16 +548,17 @@ DrillResult drill_holes(const brep::NamedShape& input, const std::vector<Cylindr
       dh.uncertainty = (2 * s.entry.tolerance * s.entry.length + 2 * s.exit.tolerance * s.exit.length) * lever / 3;
       const double allowed = o.volume_rel_tolerance * dh.independent_volume + dh.uncertainty;
       std::string& f = failures[static_cast<std::size_t>(j)];
-      if (!(std::abs(dh.volume - dh.independent_volume) <= allowed && dh.closure <= allowed))
+      const auto agrees = [&] { return std::abs(dh.volume - dh.independent_volume) <= allowed && dh.closure <= allowed; };
+      // The fixed rule first (fast); before a disagreement counts, BRepGProp's adaptive rule at 1e-9.
+      if (!agrees()) measure(true);
+      if (!agrees())
         f = "hole '" + dh.name + "': removed volume " + std::to_string(dh.volume) + " mm^3 by its faces, " +
             std::to_string(dh.independent_volume) + " mm^3 by quadrature, closure " + std::to_string(dh.closure);
-      pr.emplace(Prof{6});
       if (!f.empty()) return;
       if (!BRepCheck_Analyzer(s.face).IsValid()) {
         f = "hole '" + dh.name + "': its face fails BRepCheck";
         return;
       }
-      pr.emplace(Prof{7});
       // Its loops as inner wires of the rebuilt walls: the wire and edge checks of BRepCheck in the
       // context of the wall face (2D closure, self-intersection, orientation; pcurve on the wall).
       for (const auto& [face, e] : {std::make_pair(p.entry, &s.entry), std::make_pair(p.exit, &s.exit)}) {
@@ -622,8 +600,6 @@ DrillResult drill_holes(const brep::NamedShape& input, const std::vector<Cylindr
     if (!f.empty()) failed += (failed_count++ ? "; " : "") + f;
   if (failed_count) throw FeatureFailure("drill_holes: " + std::to_string(failed_count) + " check(s) failed: " + failed);
   for (double b : balance) r.face_balance += std::abs(b);
-  if (getenv("DRILL_DEBUG"))
-    for (int k = 0; k < 12; ++k) std::printf("DEBUG prof %d: %.3f s\n", k, 1e-9 * static_cast<double>(g_ns[k].exchange(0)));
 
   // 5. The solid: shells rebuilt from their faces (a hole joining two shells merges them).
   BRep_Builder b;

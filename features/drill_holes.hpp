@@ -75,8 +75,11 @@ struct DrillOptions {
   double min_incidence_deg = 8;
   /// Per-hole |divergence volume - quadrature volume| <= rel * quadrature + uncertainty.
   double volume_rel_tolerance = 1e-6;
-  /// Split faces reached by >= patch_min_holes holes into patches of about patch_holes_per_patch.
-  int patch_min_holes = 24;
+  /// Split faces reached by >= patch_min_holes holes into patches of about patch_holes_per_patch
+  /// (boolean_patches.hpp) first; 0: never. Off by default: every check here is per hole, so a wall
+  /// with 1 000 holes costs no more per hole than one with 10 (measured, bench_holes), and the split
+  /// (a general fuse, ~1-5 s) warns and is rejected on the cooled blade's trimmed chamber walls.
+  int patch_min_holes = 0;
   int patch_holes_per_patch = 8;
   bool parallel = true;
   /// Also check every rebuilt wall face as a whole: BRepCheck_Analyzer of the face (all its wires) and
