@@ -11,6 +11,7 @@
 // the cylinder's angle as the marching parameter, which needs no step control: every ruling is
 // solved exactly).
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <memory>
 #include <string>
