@@ -43,29 +43,21 @@ Handle(Geom2d_BSplineCurve) cylinder_pcurve(const HoleLoop& loop) {
   return c;
 }
 
-// Signed area of the loop's (u, v) polygon at its nodes (> 0: counterclockwise).
-double signed_uv_area(const HoleLoop& loop) {
-  double a = 0;
+// Signed area of the loop's (u, v) polygon (> 0: counterclockwise) and the length of its 3D polygon,
+// sampled at four points per node.
+void loop_measures(const HoleLoop& loop, double& area, double& length) {
+  area = 0, length = 0;
   const int n = 4 * loop.nodes;
-  Eigen::Vector2d prev = loop.pcurve.point(0);
+  Eigen::Vector2d q0 = loop.pcurve.point(0);
+  Eigen::Vector3d p0 = loop.curve.point(0);
   for (int k = 1; k <= n; ++k) {
-    const Eigen::Vector2d q = loop.pcurve.point(static_cast<double>(k % n) / n);
-    a += prev.x() * q.y() - q.x() * prev.y();
-    prev = q;
+    const double s = static_cast<double>(k % n) / n;
+    const Eigen::Vector2d q = loop.pcurve.point(s);
+    const Eigen::Vector3d p = loop.curve.point(s);
+    area += 0.5 * (q0.x() * q.y() - q.x() * q0.y());
+    length += (p - p0).norm();
+    q0 = q, p0 = p;
   }
-  return 0.5 * a;
-}
-
-double loop_length(const HoleLoop& loop) {
-  double l = 0;
-  const int n = 4 * loop.nodes;
-  Eigen::Vector3d prev = loop.curve.point(0);
-  for (int k = 1; k <= n; ++k) {
-    const Eigen::Vector3d q = loop.curve.point(static_cast<double>(k % n) / n);
-    l += (q - prev).norm();
-    prev = q;
-  }
-  return l;
 }
 
 LoopEdge loop_edge(const HoleLoop& loop, const WallFaceGeometry& wall, const Handle(Geom_Surface)& cylinder,
@@ -79,8 +71,9 @@ LoopEdge loop_edge(const HoleLoop& loop, const WallFaceGeometry& wall, const Han
   b.UpdateEdge(e.edge, occt::to_occt(loop.pcurve), wall.surface, wall.location, e.tolerance);
   b.UpdateEdge(e.edge, cylinder_pcurve(loop), cylinder, TopLoc_Location(), e.tolerance);
   b.Range(e.edge, 0, 1);
-  e.counterclockwise = signed_uv_area(loop) > 0;
-  e.length = loop_length(loop);
+  double area = 0;
+  loop_measures(loop, area, e.length);
+  e.counterclockwise = area > 0;
   return e;
 }
 

@@ -14,21 +14,14 @@
 #include <BRep_Tool.hxx>
 #include <GProp_GProps.hxx>
 #include <Geom_CylindricalSurface.hxx>
-#include <Interface_Static.hxx>
-#include <STEPCAFControl_Controller.hxx>
-#include <STEPCAFControl_Reader.hxx>
-#include <TDataStd_Name.hxx>
-#include <TDocStd_Document.hxx>
 #include <TopExp_Explorer.hxx>
-#include <XCAFApp_Application.hxx>
-#include <XCAFDoc_DocumentTool.hxx>
-#include <XCAFDoc_ShapeTool.hxx>
 
 #include <Eigen/Geometry>
 
 #include <map>
 #include <set>
 
+#include "brep/step_read_back.hpp"
 #include "brep/temp_files.hpp"
 #include "export/step_writer.hpp"
 #include "features/boolean_sample_part.hpp"
@@ -203,29 +196,10 @@ BOOST_AUTO_TEST_CASE(step_round_trip_keeps_the_solid_and_every_name) {
   test::TempDir dir("drill_step");
   const auto file = dir.path / "drilled.step";
   io::write_step(file, part.shape, part.faces, {io::StepSchema::AP214, "drilled"});
-  STEPCAFControl_Controller::Init();
-  Interface_Static::SetIVal("read.stepcaf.subshapes.name", 1);
-  Handle(TDocStd_Application) app = XCAFApp_Application::GetApplication();
-  Handle(TDocStd_Document) doc;
-  app->NewDocument("MDTV-XCAF", doc);
-  STEPCAFControl_Reader reader;
-  reader.SetNameMode(true);
-  BOOST_TEST_REQUIRE(reader.ReadFile(file.string().c_str()) == IFSelect_RetDone);
-  BOOST_TEST_REQUIRE(reader.Transfer(doc));
-  const Handle(XCAFDoc_ShapeTool) tool = XCAFDoc_DocumentTool::ShapeTool(doc->Main());
-  TDF_LabelSequence free_shapes;
-  tool->GetFreeShapes(free_shapes);
-  BOOST_TEST_REQUIRE(free_shapes.Length() == 1);
-  const TopoDS_Shape back = tool->GetShape(free_shapes.Value(1));
-  std::multiset<std::string> read;
-  TDF_LabelSequence subs;
-  XCAFDoc_ShapeTool::GetSubShapes(free_shapes.Value(1), subs);
-  for (const TDF_Label& s : subs) {
-    Handle(TDataStd_Name) n;
-    if (s.FindAttribute(TDataStd_Name::GetID(), n)) read.insert(TCollection_AsciiString(n->Get()).ToCString());
-  }
-  app->Close(doc);
-  BOOST_TEST(read == names(part));
-  BOOST_TEST(count(back, TopAbs_SOLID) == 1);
-  BOOST_TEST(std::abs(volume(back) - volume(part.shape)) <= 1e-6 * volume(part.shape));
+  const test::StepReadBack back = test::read_step_back(file);
+  BOOST_TEST_REQUIRE(back.ok);
+  BOOST_TEST_REQUIRE(back.free_shapes.size() == 1u);
+  BOOST_TEST(back.names == names(part));
+  BOOST_TEST(count(back.free_shapes[0], TopAbs_SOLID) == 1);
+  BOOST_TEST(std::abs(volume(back.free_shapes[0]) - volume(part.shape)) <= 1e-6 * volume(part.shape));
 }
