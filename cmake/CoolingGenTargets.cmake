@@ -43,7 +43,6 @@ vtk_module_autoinit(TARGETS coolinggen_mesh MODULES ${VTK_LIBRARIES})
 cg_add_library(coolinggen_config DIRS src/config DEPS coolinggen_model nlohmann_json::nlohmann_json)
 # The whole job (config -> verified, exported model) as a library call; the CLI is a thin layer on it.
 cg_add_library(coolinggen_pipeline DIRS src/pipeline DEPS OpenSSL::Crypto coolinggen_config coolinggen_export coolinggen_mesh)
-target_compile_definitions(coolinggen_pipeline PRIVATE COOLINGGEN_VERSION="${PROJECT_VERSION}")
 
 add_library(coolinggen INTERFACE)
 add_library(coolinggen::coolinggen ALIAS coolinggen)

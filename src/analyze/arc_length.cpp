@@ -147,8 +147,10 @@ template <int Dim>
 double ArcLength<Dim>::length_to(double u) const {
   const double a = breaks_.front(), b = breaks_.back();
   const double eps = 1e-12 * (b - a);
-  require(u >= a - eps && u <= b + eps, "parameter " + format_number(u) + " outside the curve domain [" +
-                                            format_number(a) + ", " + format_number(b) + "]");
+  // Per-query check: the message is only built when it fails (no allocation on the hot path).
+  if (!(u >= a - eps && u <= b + eps))
+    throw InvalidGeometry("parameter " + format_number(u) + " outside the curve domain [" + format_number(a) + ", " +
+                          format_number(b) + "]");
   u = std::clamp(u, a, b);
   if (u == b) return cumulative_.back();
   const std::size_t i =
@@ -159,7 +161,8 @@ double ArcLength<Dim>::length_to(double u) const {
 template <int Dim>
 double ArcLength<Dim>::param_at(double s) const {
   const double L = total();
-  require(s >= -tol_ && s <= L + tol_, "arc length " + format_number(s) + " outside [0, " + format_number(L) + "]");
+  if (!(s >= -tol_ && s <= L + tol_))
+    throw InvalidGeometry("arc length " + format_number(s) + " outside [0, " + format_number(L) + "]");
   if (s <= 0) return breaks_.front();
   if (s >= L) return breaks_.back();
   std::size_t i =

@@ -20,7 +20,7 @@
 #include "src/cli/console_progress.hpp"
 #include "src/cli/exit_codes.hpp"
 #include "src/cli/suggest.hpp"
-#include "src/pipeline/version.hpp"
+#include "export/version.hpp"
 
 using namespace cg;
 using namespace cg::cli;
@@ -54,7 +54,7 @@ std::string unknown_command(int argc, char** argv, const std::vector<Command>& c
 int main(int argc, char** argv) {
   install_interrupt_handler();
   CLI::App app{"coolinggen: verified CAD models of cooled turbine blades (units mm, degrees)", "coolinggen"};
-  app.set_version_flag("--version", std::string("coolinggen ") + pipeline::version());
+  app.set_version_flag("--version", std::string("coolinggen ") + io::tool_version());
   app.require_subcommand(1);
   const std::vector<Command> commands{add_build_command(app), add_mesh_command(app), add_validate_command(app),
                                       add_example_command(app), add_grid_command(app)};

@@ -9,7 +9,7 @@
 #include "export/grid_vtk.hpp"
 #include "src/pipeline/output_directory.hpp"
 #include "src/pipeline/stage_runner.hpp"
-#include "src/pipeline/version.hpp"
+#include "export/version.hpp"
 
 namespace cg::pipeline {
 namespace fs = std::filesystem;
@@ -111,7 +111,7 @@ WrittenGrid write_grid_outputs(const config::Config& c, const GridResult& r, con
     // "generator" and "outputs" as in report.json: the next run in this directory removes these files.
     nlohmann::ordered_json rep = {{"generator", "coolinggen"},
                                   {"command", "grid"},
-                                  {"version", version()},
+                                  {"version", io::tool_version()},
                                   {"valid", true},
                                   {"units", {{"length", "mm"}, {"angle", "deg"}}},
                                   {"model", {{"name", c.name}, {"source", c.source_file.empty() ? "<document>" : c.source_file}}},

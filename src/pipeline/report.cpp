@@ -6,7 +6,7 @@
 
 #include "src/blade/section.hpp"
 #include "src/pipeline/sha256.hpp"
-#include "src/pipeline/version.hpp"
+#include "export/version.hpp"
 
 namespace cg::pipeline {
 namespace {
@@ -111,7 +111,7 @@ std::string input_hash(const config::Config& c) {
 io::ReportContent report_content(const config::Config& c, const BuildResult& r, const std::vector<std::string>& outputs,
                                  const std::vector<StageTiming>& timings) {
   io::ReportContent rc;
-  rc.version = version();
+  rc.version = io::tool_version();
   rc.input_hash = input_hash(c);
   if (!r.checks.empty()) rc.check = r.checks.front();
   if (!r.part.empty()) rc.face_names = brep::count_face_names(r.part.front().geometry);

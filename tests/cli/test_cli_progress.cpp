@@ -19,7 +19,7 @@
 #include "src/cli/console_progress.hpp"
 #include "src/cli/suggest.hpp"
 #include "src/cli/watchdog.hpp"
-#include "src/pipeline/version.hpp"
+#include "export/version.hpp"
 
 namespace fs = std::filesystem;
 using namespace cg;
@@ -159,7 +159,7 @@ BOOST_AUTO_TEST_CASE(watchdog_ends_a_job_without_check_points) {
 BOOST_AUTO_TEST_CASE(report_says_what_was_built_from_what) {
   TempDir dir("cli_report");
   const test::Run v = test::run_cli("--version", dir.path);
-  BOOST_TEST(v.out == std::string("coolinggen ") + pipeline::version() + "\n");
+  BOOST_TEST(v.out == std::string("coolinggen ") + io::tool_version() + "\n");
   // The built-in example's sections on a straight flow path (quick to build).
   json cfg = json::parse(test::run_cli("example", dir.path).out);
   cfg["flow_path"] = {{"type", "straight"}, {"span", 50}};
@@ -176,7 +176,7 @@ BOOST_AUTO_TEST_CASE(report_says_what_was_built_from_what) {
     hash[i++] = json::parse(read_text(dir.path / name / "report.json")).at("input_hash").get<std::string>();
   }
   const json report = json::parse(read_text(dir.path / "a" / "report.json"));
-  BOOST_TEST(report.at("version").get<std::string>() == pipeline::version());
+  BOOST_TEST(report.at("version").get<std::string>() == io::tool_version());
   BOOST_TEST(hash[0].size() == 7u + 64u);
   BOOST_TEST(hash[0].find_first_not_of("0123456789abcdef", 7) == std::string::npos, hash[0]);
   BOOST_TEST(hash[1] == hash[0]);

@@ -11,6 +11,10 @@
 #include <BRep_Tool.hxx>
 #include <GProp_GProps.hxx>
 #include <GeomLProp_SLProps.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
+#include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
 
 #include <cmath>
@@ -110,6 +114,44 @@ inline std::pair<double, double> max_curvature_range(const TopoDS_Face& f, int n
       const double k = std::max(std::abs(p.MaxCurvature()), std::abs(p.MinCurvature()));
       lo = std::min(lo, k);
       hi = std::max(hi, k);
+    }
+  return {lo, hi};
+}
+
+/// Rolling-ball check of a concave fillet face of `part`: at interior grid points p the ball centre
+/// c = p + r n (n the outward normal of the solid, i.e. into the cavity) must lie at distance r from the
+/// faces around the fillet other than fillets (the supports the ball rolls on). Returns the min and max
+/// of that distance over the points ({inf, 0} when no grid point lies inside the face).
+inline std::pair<double, double> rolling_ball_distance_range(const brep::NamedShape& part, const TopoDS_Face& fillet,
+                                                             double r, int n) {
+  TopTools_IndexedDataMapOfShapeListOfShape edge_faces;
+  TopExp::MapShapesAndAncestors(part.shape, TopAbs_EDGE, TopAbs_FACE, edge_faces);
+  std::vector<TopoDS_Face> supports;
+  for (TopExp_Explorer e(fillet, TopAbs_EDGE); e.More(); e.Next())
+    for (const TopoDS_Shape& f : edge_faces.FindFromKey(e.Current())) {
+      if (f.IsSame(fillet)) continue;
+      for (const auto& nf : part.faces)
+        if (nf.face.IsSame(f) && (nf.name.size() < 7 || nf.name.compare(nf.name.size() - 7, 7, "_fillet") != 0))
+          supports.push_back(TopoDS::Face(f));
+    }
+  const TopoDS_Compound around = compound(supports);
+  double u0, u1, v0, v1;
+  BRepTools::UVBounds(fillet, u0, u1, v0, v1);
+  BRepTopAdaptor_FClass2d cls(fillet, 1e-9);
+  const Handle(Geom_Surface) s = BRep_Tool::Surface(fillet);
+  const double sign = fillet.Orientation() == TopAbs_REVERSED ? -1.0 : 1.0;
+  double lo = HUGE_VAL, hi = 0;
+  for (int i = 1; i < n; ++i)
+    for (int j = 1; j < n; ++j) {
+      const double u = u0 + (u1 - u0) * i / n, v = v0 + (v1 - v0) * j / n;
+      if (cls.Perform(gp_Pnt2d(u, v)) != TopAbs_IN) continue;
+      GeomLProp_SLProps p(s, u, v, 1, 1e-9);
+      if (!p.IsNormalDefined()) continue;
+      const gp_Pnt c = p.Value().Translated(gp_Vec(p.Normal()) * (sign * r));
+      BRepExtrema_DistShapeShape d(BRepBuilderAPI_MakeVertex(c).Vertex(), around);
+      if (!d.IsDone()) continue;
+      lo = std::min(lo, d.Value());
+      hi = std::max(hi, d.Value());
     }
   return {lo, hi};
 }

@@ -115,9 +115,12 @@ BOOST_AUTO_TEST_CASE(rib_thickness_between_its_sides) {
 }
 
 // The largest principal curvature of a rolling-ball fillet is 1 / r across it. Along the ribs' sides and
-// round their tips (the stripes) it is within 0.1 %; OCCT builds the short pieces where a stripe passes
-// from a rib's flat side onto its rounded tip (a jump of the support's curvature) less exactly: within
-// 10 % on pieces about 1 mm long (measured 7 % at most).
+// round their tips (the stripes) it is within 0.1 %. On the short pieces (< 2 mm) where a stripe passes
+// from a rib's flat side onto its rounded tip (a jump of the support's curvature) OCCT's approximated
+// surface has a curvature up to 16 % off, so there the test checks the defining property instead: the
+// ball of radius r centred r off the fillet (into the cavity) touches the neighbouring faces, i.e. its
+// centre lies at distance r from them. OCCT's approximation lets the ball sink into the supports by up
+// to 13 um (2.6 % of r, measured); the bound is 3 % of r (a fillet 20 % off is 5.9 % off mid-stripe).
 BOOST_AUTO_TEST_CASE(fillet_radius_from_the_curvature_of_the_fillet_faces) {
   const auto& b = rotor().cooled.blade;
   int faces = 0;
@@ -135,9 +138,15 @@ BOOST_AUTO_TEST_CASE(fillet_radius_from_the_curvature_of_the_fillet_faces) {
     GProp_GProps p;
     BRepGProp::SurfaceProperties(nf.face, p);
     const double length = p.Mass() / (0.5 * 3.14159265358979323846 * r);  // along the stripe
-    const double tol = length > 2.0 ? 1e-3 : 0.1;
-    BOOST_TEST(std::abs(1 / hi - r) <= tol * r, nf.name << " (" << length << " mm long): radius " << 1 / hi << " .. " << 1 / lo);
-    BOOST_TEST(std::abs(1 / lo - r) <= tol * r, nf.name << " (" << length << " mm long): radius " << 1 / hi << " .. " << 1 / lo);
+    if (length > 2.0) {
+      BOOST_TEST(std::abs(1 / hi - r) <= 1e-3 * r, nf.name << " (" << length << " mm long): radius " << 1 / hi << " .. " << 1 / lo);
+      BOOST_TEST(std::abs(1 / lo - r) <= 1e-3 * r, nf.name << " (" << length << " mm long): radius " << 1 / hi << " .. " << 1 / lo);
+    } else {
+      const auto [dlo, dhi] = test::rolling_ball_distance_range(b, nf.face, r, 4);
+      BOOST_TEST_MESSAGE(nf.name << " (" << length << " mm long): ball distance " << dlo << " .. " << dhi << ", r " << r);
+      BOOST_TEST(std::abs(dlo - r) <= 3e-2 * r, nf.name << " (" << length << " mm long): ball distance " << dlo << " .. " << dhi);
+      BOOST_TEST(std::abs(dhi - r) <= 3e-2 * r, nf.name << " (" << length << " mm long): ball distance " << dlo << " .. " << dhi);
+    }
     ++faces;
   }
   BOOST_TEST(faces >= 12);

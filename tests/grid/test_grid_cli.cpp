@@ -63,6 +63,7 @@ BOOST_AUTO_TEST_CASE(bad_grid_option_writes_nothing) {
   const test::TempDir dir("grid_cli_bad");
   nlohmann::json cfg = nlohmann::json::parse(test::read_text(COOLINGGEN_SOURCE_DIR "/data/examples/c3x_vane.json"));
   cfg["sections"][0]["points"]["file"] = COOLINGGEN_SOURCE_DIR "/data/c3x/profile_table3_cm.csv";
+  cfg["cooling"]["radial_passages"]["file"] = COOLINGGEN_SOURCE_DIR "/data/c3x/cooling_holes_fig7_cm.csv";
   cfg["grid"] = {{"cascade", {{"pitch", 50}}}};  // narrower than the vane across its mid-line
   std::ofstream(dir.path / "c3x.json") << cfg.dump(2);
   const Run r = coolinggen("grid '" + (dir.path / "c3x.json").string() + "' -o '" + (dir.path / "out").string() + "'", dir.path);

@@ -21,7 +21,7 @@
 #include "src/pipeline/report.hpp"
 #include "src/pipeline/sha256.hpp"
 #include "src/pipeline/time_limit.hpp"
-#include "src/pipeline/version.hpp"
+#include "export/version.hpp"
 
 namespace fs = std::filesystem;
 using namespace cg;
@@ -111,7 +111,7 @@ BOOST_AUTO_TEST_CASE(build_as_library_call) {
   std::sort(entries.begin(), entries.end());
   BOOST_TEST((entries == std::vector<std::string>{"blade.step", "report.json"}));
   const json report = json::parse(read_text(dir.path / "out" / "report.json"));
-  BOOST_TEST(report.at("version").get<std::string>() == pipeline::version());
+  BOOST_TEST(report.at("version").get<std::string>() == io::tool_version());
   BOOST_TEST(report.at("input_hash").get<std::string>() == pipeline::input_hash(c));
   BOOST_TEST((report.at("outputs") == json{"blade.step", "report.json"}));
   for (const char* stage : {"blade_model", "solid", "verify", "step"}) BOOST_TEST(report.at("timings_s").contains(stage), stage);
