@@ -55,9 +55,14 @@ double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::
 
 gp_Pnt pnt(const Eigen::Vector3d& p) { return gp_Pnt(p.x(), p.y(), p.z()); }
 
-// Runs f(i) for i in [0, n) on up to two threads (the machine's cores), or serially.
+// Worker threads: one per core, or 1.
+int worker_count(bool parallel) {
+  return parallel ? std::max(1, static_cast<int>(std::thread::hardware_concurrency())) : 1;
+}
+
+// Runs f(i, worker) for i in [0, n) on worker_count(parallel) threads; worker < worker_count.
 void for_each_index(int n, bool parallel, const std::function<void(int, int)>& f) {
-  const int threads = parallel ? std::max(1, std::min<int>(n, static_cast<int>(std::thread::hardware_concurrency()))) : 1;
+  const int threads = std::min(n, worker_count(parallel));
   if (threads <= 1) {
     for (int i = 0; i < n; ++i) f(i, 0);
     return;
@@ -390,7 +395,7 @@ std::vector<HolePlan> initial_plans(const std::vector<CylindricalHole>& holes, c
 // holes too close to each other fall back together (the boolean path fuses overlapping tools).
 void plan_holes(const Part& part, std::vector<HolePlan>& plans, const std::vector<CylindricalHole>& holes,
                 const DrillOptions& o) {
-  const int threads = o.parallel ? 2 : 1;
+  const int threads = worker_count(o.parallel);
   std::vector<Workspace> ws(static_cast<std::size_t>(threads));
   for (Workspace& w : ws) {
     w.part = &part;
@@ -398,7 +403,7 @@ void plan_holes(const Part& part, std::vector<HolePlan>& plans, const std::vecto
     w.classifiers.resize(part.faces.size());
   }
   for_each_index(static_cast<int>(plans.size()), o.parallel,
-                 [&](int i, int k) { plan_hole(ws[static_cast<std::size_t>(std::min(k, threads - 1))], plans[static_cast<std::size_t>(i)], o); });
+                 [&](int i, int k) { plan_hole(ws[static_cast<std::size_t>(k)], plans[static_cast<std::size_t>(i)], o); });
   std::vector<int> order;
   for (int i = 0; i < static_cast<int>(plans.size()); ++i) order.push_back(i);
   std::sort(order.begin(), order.end(), [&](int a, int b) {
