@@ -240,6 +240,22 @@ void plan_hole(Workspace& ws, HolePlan& h, const DrillOptions& o) {
   const FaceInfo& fb = part.faces[static_cast<std::size_t>(h.exit)];
   WallSurface& wa = ws.wall(fa.surface);
   WallSurface& wb = ws.wall(fb.surface);
+  // The tool must pass through material between them: into the part at the entry (against the
+  // part's outward normal) and out of it at the exit. A tool starting inside the material and reaching
+  // across a cavity also meets two faces, the other way round.
+  const auto outward = [&](const FaceInfo& f, WallSurface& w, const AxisHit& a) {
+    const Eigen::Vector3d n = w.unit_normal(a.u, a.v);
+    return f.oriented.Orientation() == TopAbs_REVERSED ? Eigen::Vector3d(-n) : n;
+  };
+  if (c.d.dot(outward(fa, wa, h.entry_hit)) >= 0 || c.d.dot(outward(fb, wb, h.exit_hit)) <= 0) {
+    h.reason = "the material between its two faces is not where the tool passes (it starts inside the part)";
+    return;
+  }
+
+  if (h.entry == h.exit) {
+    h.reason = "it enters and leaves through the same face '" + fa.name + "'";
+    return;
+  }
 
   // The loops, fitted.
   h.entry_loop = hole_loop(wa, c, h.entry_hit, o.fit_tolerance);

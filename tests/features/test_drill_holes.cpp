@@ -29,6 +29,7 @@
 #include "features/drill_sample_holes.hpp"
 #include "src/config/builtin_example.hpp"
 #include "src/config/config.hpp"
+#include "src/algo/ray_surface.hpp"
 
 using namespace cg;
 
@@ -174,6 +175,27 @@ BOOST_AUTO_TEST_CASE(holes_that_do_not_qualify_fall_back_to_the_boolean_path) {
   for (const auto& t : r.fallback.tools) BOOST_TEST(t.passed, t.feature);
   const std::multiset<std::string> n = names(r.part);
   for (const auto& h : holes) BOOST_TEST(n.count(h.name) >= 1u, h.name);
+}
+
+BOOST_AUTO_TEST_CASE(a_tool_starting_inside_the_wall_is_not_drilled_across_the_cavity) {
+  // From 0.3 mm before the exit into the cavity, across it, 0.3 mm into the far wall: the axis meets
+  // two faces (the near and the far chamber wall) but the tool passes through material, then cavity,
+  // then material -- not a hole through one wall. It must fall back, and the boolean path cuts it.
+  const Fixture& f = hollow();
+  features::CylindricalHole h = f.holes[5];
+  RaySurfaceCaster core(f.hb.core_surface);
+  const Eigen::Vector3d d = h.axis.normalized();
+  const RaySurfaceHit near = core.first_hit(h.origin, d, 30);
+  BOOST_TEST_REQUIRE(near.found);
+  const RaySurfaceHit far = core.first_hit(h.origin + (near.ray_param + 1e-3) * d, d, 30);
+  BOOST_TEST_REQUIRE(far.found);
+  h.origin += (near.ray_param - 0.3) * d;
+  h.length = 0.3 + 1e-3 + far.ray_param + 0.3;
+  h.name = "inside_start";
+  const features::DrillResult r = features::drill_holes(f.hb.part, {h});
+  BOOST_TEST(r.drilled == 0);
+  BOOST_TEST(r.holes[0].fallback_reason.find("starts inside the part") != std::string::npos, r.holes[0].fallback_reason);
+  BOOST_TEST(r.fallback.check.all_passed(), r.fallback.check.failed_names());
 }
 
 BOOST_AUTO_TEST_CASE(bad_holes_are_rejected) {
