@@ -442,6 +442,11 @@ void plan_holes(const Part& part, std::vector<HolePlan>& plans, const std::vecto
     if (!near[i].empty() && plans[i].reason.empty()) plans[i].reason = "it is within the margin of hole '" + near[i] + "'";
 }
 
+// Cuts holes `ids` into `part` through the verified boolean path; their volumes are the step's
+// measurements, its report is merged into r.fallback.
+brep::NamedShape apply_fallback(const brep::NamedShape& part, const std::vector<std::size_t>& ids,
+                                const std::vector<CylindricalHole>& holes, const DrillOptions& o, DrillResult& r);
+
 }  // namespace
 
 std::vector<std::string> drill_fallback_reasons(const brep::NamedShape& part, const std::vector<CylindricalHole>& holes,
@@ -453,6 +458,31 @@ std::vector<std::string> drill_fallback_reasons(const brep::NamedShape& part, co
   for (const HolePlan& h : plans) reasons.push_back(h.reason);
   return reasons;
 }
+
+namespace {
+
+brep::NamedShape apply_fallback(const brep::NamedShape& part, const std::vector<std::size_t>& ids,
+                                const std::vector<CylindricalHole>& holes, const DrillOptions& o, DrillResult& r) {
+  BooleanStep step(BooleanOperation::Cut, o.fallback);
+  for (std::size_t i : ids) step.add(hole_tool(holes[i]));
+  brep::NamedShape result = step.apply(part);
+  const BooleanStepReport& s = step.report();
+  for (std::size_t k = 0; k < ids.size(); ++k) {
+    r.holes[ids[k]].volume = s.tools[k].measured_volume;
+    r.holes[ids[k]].uncertainty = s.tools[k].uncertainty;
+  }
+  BooleanStepReport& f = r.fallback;
+  f.tool_count += s.tool_count;
+  f.cluster_count += s.cluster_count;
+  f.boolean_runs += s.boolean_runs;
+  f.tools.insert(f.tools.end(), s.tools.begin(), s.tools.end());
+  f.warnings.insert(f.warnings.end(), s.warnings.begin(), s.warnings.end());
+  f.check = s.check;
+  f.seconds += s.seconds;
+  return result;
+}
+
+}  // namespace
 
 FeatureTool hole_tool(const CylindricalHole& hole) {
   const HoleCylinder c = HoleCylinder::from_axis(hole.origin, hole.axis, 0.5 * hole.diameter, hole.length);
@@ -497,9 +527,37 @@ DrillResult drill_holes(const brep::NamedShape& input, const std::vector<Cylindr
 
   // 2. Geometry of every hole (parallel): faces crossed, loops, preconditions, quadrature volume.
   t = Clock::now();
-  const Part part = index_part(base);
+  Part part = index_part(base);
   plan_holes(part, plans, holes, o);
-  r.seconds_geometry = since(t);
+  // Holes that fall back are cut first, by the boolean path on the part as it is (its cost grows
+  // with the faces of the part, and the drilled part has many); the others are then planned again on
+  // that result. A hole that no longer qualifies there is cut by the boolean path after the drilling.
+  std::vector<bool> applied(plans.size(), false);
+  std::vector<std::size_t> early;
+  for (std::size_t i = 0; i < plans.size(); ++i)
+    if (!plans[i].reason.empty()) early.push_back(i);
+  if (!early.empty()) {
+    const auto tf = Clock::now();
+    for (std::size_t i : early) r.holes[i].fallback_reason = plans[i].reason;
+    base = apply_fallback(base, early, holes, o, r);
+    for (std::size_t i : early) applied[i] = true;
+    r.seconds_fallback += since(tf);
+    if (early.size() < plans.size()) {
+      part = index_part(base);
+      std::vector<std::size_t> rest;
+      std::vector<CylindricalHole> rest_holes;
+      for (std::size_t i = 0; i < plans.size(); ++i)
+        if (!applied[i]) rest.push_back(i), rest_holes.push_back(holes[i]);
+      std::vector<HolePlan> again = initial_plans(rest_holes, o);
+      plan_holes(part, again, rest_holes, o);
+      for (std::size_t k = 0; k < rest.size(); ++k) {
+        plans[rest[k]] = std::move(again[k]);
+        if (!plans[rest[k]].reason.empty())
+          plans[rest[k]].reason = "after the other fallback holes were cut: " + plans[rest[k]].reason;
+      }
+    }
+  }
+  r.seconds_geometry = since(t) - r.seconds_fallback;
 
   // 3. Topology: hole faces, rebuilt walls, shells.
   t = Clock::now();
@@ -675,24 +733,12 @@ DrillResult drill_holes(const brep::NamedShape& input, const std::vector<Cylindr
 
   // 6. Holes that could not be drilled directly: the verified boolean path.
   t = Clock::now();
-  BooleanStep step(BooleanOperation::Cut, o.fallback);
-  std::vector<std::size_t> fallen;
-  for (std::size_t i = 0; i < plans.size(); ++i) {
-    if (r.holes[i].drilled) continue;
-    FeatureTool tool = hole_tool(holes[i]);
-    step.add(std::move(tool));
-    fallen.push_back(i);
-  }
-  if (!fallen.empty()) {
-    result = step.apply(result);
-    r.fallback = step.report();
-    for (std::size_t k = 0; k < fallen.size(); ++k) {
-      r.holes[fallen[k]].volume = r.fallback.tools[k].measured_volume;
-      r.holes[fallen[k]].uncertainty = r.fallback.tools[k].uncertainty;
-    }
-  }
-  r.fallen_back = static_cast<int>(fallen.size());
-  r.seconds_fallback = since(t);
+  std::vector<std::size_t> late;
+  for (std::size_t i = 0; i < plans.size(); ++i)
+    if (!r.holes[i].drilled && !applied[i]) late.push_back(i);
+  if (!late.empty()) result = apply_fallback(result, late, holes, o, r);
+  r.fallen_back = static_cast<int>(plans.size()) - r.drilled;
+  r.seconds_fallback += since(t);
 
   // 7. Optional global verification.
   if (o.verify_solid) {

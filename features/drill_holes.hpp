@@ -25,7 +25,8 @@
 //     (features/boolean_patches.hpp), so each rebuilt face holds a bounded number of holes and every
 //     local check costs O(holes on the face): the whole step stays linear in the number of holes.
 // Holes that fail a precondition fall back to the verified boolean path (verified_boolean.hpp,
-// BooleanStep) on the drilled part, with the reason counted.
+// BooleanStep), with the reason counted: first, on the part before drilling (a boolean's cost grows
+// with the part's faces); the others are then planned again on its result and drilled.
 //
 // Verification (local; each failure throws FeatureFailure naming the hole(s)):
 //  - per hole: removed volume by the divergence theorem over its own faces (hole face + the two wall
@@ -118,7 +119,9 @@ struct DrillResult {
   /// mm^3, |sum over rebuilt faces of (integral after - before) + sum of the caps|: 0 up to the
   /// integration accuracy when every inner wire is where and how it should be.
   double face_balance = 0;
-  BooleanStepReport fallback;      ///< report of the fallback step (tool_count 0 when none)
+  /// Report of the fallback step(s) (tool_count 0 when none; tools in the order they were cut; check
+  /// of the last step).
+  BooleanStepReport fallback;
   brep::SolidCheck check;          ///< when options.verify_solid
   /// Wall-clock seconds per stage.
   double seconds = 0, seconds_patches = 0, seconds_geometry = 0, seconds_topology = 0, seconds_checks = 0,
