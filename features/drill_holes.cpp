@@ -4,7 +4,6 @@
 #include <BRepCheck_Edge.hxx>
 #include <BRepCheck_ListOfStatus.hxx>
 #include <BRepCheck_Wire.hxx>
-#include <BRepGProp.hxx>
 #include <BRepGProp_Domain.hxx>
 #include <BRepGProp_Face.hxx>
 #include <BRepGProp_Vinert.hxx>
@@ -12,7 +11,6 @@
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <NCollection_DataMap.hxx>
-#include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_ShapeMapHasher.hxx>
 #include <TopoDS.hxx>
@@ -25,7 +23,6 @@
 #include <functional>
 #include <map>
 
-#include "adaptors/occt_convert.hpp"
 #include "features/boolean_patches.hpp"
 #include "features/boolean_volume.hpp"
 #include "features/drill_hole_geometry.hpp"
