@@ -67,11 +67,11 @@ FilmCoolingResult build_film_cooling(const blade::BladeModel& model, const brep:
     FilmCutResult cut = cut_film_holes(blade, cavity.target, tools, film_boolean_options(progress));
     out.blade = std::move(cut.blade);
     out.check = cut.check;
+    out.blade_checked = cut.checked;
     const std::vector<std::pair<std::string, double>> seconds = rep.seconds;
     rep = std::move(cut.report);
     rep.configured_min_ligament = def.limits.min_ligament;
     rep.seconds.insert(rep.seconds.begin(), seconds.begin(), seconds.end());
-    out.blade_checked = true;
     lap("hole_cut");
   }
 

@@ -28,7 +28,9 @@ struct FilmCoolingResult {
   std::vector<brep::NamedBody> inserts;  ///< "insert_1", ...
   FilmReport report;
   brep::SolidCheck check;                ///< of the blade after the holes (verify_solid, run by the step)
-  bool blade_checked = false;            ///< false: no holes were cut (the blade is unchanged)
+  /// true: `check` is verify_solid of `blade` after the last boolean step; false: no holes were cut,
+  /// or all were drilled directly (checked locally), and the build's verify stage checks the blade.
+  bool blade_checked = false;
   std::vector<brep::SolidCheck> insert_checks;
 };
 

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <map>
 
+#include "features/drill_holes.hpp"
 #include "features/hole_tool.hpp"
 
 namespace cg::features {
@@ -141,16 +142,52 @@ BooleanOptions film_boolean_options(ProgressSink* progress) {
 FilmCutResult cut_film_holes(const brep::NamedShape& blade, const HoleTarget& target, const FilmHoleTools& tools,
                              const BooleanOptions& options) {
   FilmCutResult out;
-  BooleanStep step(BooleanOperation::Cut, options);
-  for (const FeatureTool& t : tools.tools) step.add(t);
-  out.blade = step.apply(blade);
-  const BooleanStepReport& br = step.report();
-  out.check = br.check;
+  // Straight cylinders with a square end are drilled directly (drill_holes.hpp: linear in the number of
+  // holes, each verified locally); shaped holes and oblique-ended tools go through the boolean step.
+  std::vector<CylindricalHole> cylinders;
+  std::vector<std::size_t> boolean_tools;
+  for (std::size_t i = 0; i < tools.holes.size(); ++i) {
+    const HoleSpec& h = tools.holes[i];
+    const HoleToolExtent& e = tools.geometry[i].extent;
+    if (h.shape.kind == HoleKind::Cylindrical && e.end_normal.isZero()) {
+      CylindricalHole c;
+      c.name = h.name;
+      c.origin = h.frame.exit + e.s_top * h.frame.axis;
+      c.axis = h.frame.axis;
+      c.diameter = h.shape.diameter;
+      c.length = e.s_end - e.s_top;
+      cylinders.push_back(std::move(c));
+    } else {
+      boolean_tools.push_back(i);
+    }
+  }
   FilmReport& rep = out.report;
-  rep.tool_clusters = br.cluster_count;
-  rep.boolean_runs = br.boolean_runs;
-  std::map<std::string, const ToolReport*> measured;
-  for (const ToolReport& t : br.tools) measured[t.feature] = &t;
+  std::map<std::string, std::pair<double, bool>> measured;  // hole -> (removed volume, passed)
+  out.blade = blade;
+  if (!cylinders.empty()) {
+    DrillOptions d;
+    d.fallback = options;
+    const DrillResult dr = drill_holes(out.blade, cylinders, d);
+    out.blade = dr.part;
+    rep.drilled_holes = dr.drilled;
+    rep.seconds.emplace_back("drill", dr.seconds);
+    for (const DrilledHole& h : dr.holes) measured[h.name] = {h.volume, true};  // drill_holes throws on a failed check
+    for (const ToolReport& t : dr.fallback.tools)
+      if (t.cluster < 0) measured[t.feature] = {t.measured_volume, t.passed};
+    rep.boolean_runs += dr.fallback.boolean_runs;
+  }
+  if (!boolean_tools.empty()) {
+    BooleanStep step(BooleanOperation::Cut, options);
+    for (std::size_t i : boolean_tools) step.add(tools.tools[i]);
+    out.blade = step.apply(out.blade);
+    const BooleanStepReport& br = step.report();
+    out.check = br.check;
+    out.checked = true;
+    rep.tool_clusters = br.cluster_count;
+    rep.boolean_runs += br.boolean_runs;
+    for (const ToolReport& t : br.tools) measured[t.feature] = {t.cluster < 0 ? t.measured_volume : 0.0, t.passed};
+    rep.seconds.emplace_back("boolean", br.seconds);
+  }
   std::vector<std::pair<std::string, double>> row_pitch;
   for (std::size_t i = 0; i < tools.holes.size(); ++i) {
     const HoleSpec& h = tools.holes[i];
@@ -178,11 +215,9 @@ FilmCutResult cut_film_holes(const brep::NamedShape& blade, const HoleTarget& ta
     m.breakout_width = g.breakout_width;
     m.expected_volume = g.expected_volume;
     const auto it = measured.find(h.name);
-    if (it != measured.end() && it->second->cluster < 0) {
-      m.measured_volume = it->second->measured_volume;
-      m.volume_passed = it->second->passed;
-    } else if (it != measured.end()) {
-      m.volume_passed = it->second->passed;  // measured with its cluster of overlapping tools
+    if (it != measured.end()) {
+      m.measured_volume = it->second.first;  // 0 when measured with its cluster of overlapping tools
+      m.volume_passed = it->second.second;
     }
     m.ligament = tools.ligament[i];
     m.ligament_to = tools.ligament_to[i];
@@ -191,7 +226,6 @@ FilmCutResult cut_film_holes(const brep::NamedShape& blade, const HoleTarget& ta
     rep.holes.push_back(m);
   }
   summarise_film_report(rep, row_pitch);
-  rep.seconds.emplace_back("boolean", br.seconds);
   return out;
 }
 

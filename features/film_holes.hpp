@@ -41,15 +41,19 @@ double hole_ligament(const HoleGeometry& a, const HoleGeometry& b);
 struct FilmCutResult {
   brep::NamedShape blade;
   FilmReport report;
-  brep::SolidCheck check;  ///< verify_solid of the result (run by the boolean step)
+  brep::SolidCheck check;  ///< verify_solid of the result (run by the boolean step), when `checked`
+  /// false: every hole was drilled directly (checked locally, drill_holes.hpp); the build's verify
+  /// stage runs verify_solid on the result.
+  bool checked = false;
 };
 
 /// Options of the film holes' boolean step: the volume tolerance of the step's per-tool check is
 /// 1e-6 relative plus 1e-6 mm^3 by default; the quadrature is converged far below that (tests).
 BooleanOptions film_boolean_options(ProgressSink* progress = nullptr);
 
-/// Cuts the tools from `blade` in one verified boolean step and fills the report (measured volumes).
-/// Throws FeatureFailure naming the holes that failed.
+/// Cuts the holes from `blade` and fills the report (measured volumes): straight square-ended cylinders
+/// by direct drilling (drill_holes.hpp, local checks, fallback to the boolean step), the others (shaped
+/// holes, oblique ends) in one verified boolean step. Throws FeatureFailure naming the holes that failed.
 FilmCutResult cut_film_holes(const brep::NamedShape& blade, const HoleTarget& target, const FilmHoleTools& tools,
                              const BooleanOptions& options);
 

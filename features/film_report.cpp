@@ -114,6 +114,7 @@ nlohmann::json FilmReport::to_json() const {
   j["min_ligament_mm"] = finite_or_null(min_ligament);
   j["configured_min_ligament_mm"] = configured_min_ligament;
   j["tool_clusters"] = tool_clusters;
+  j["drilled_holes"] = drilled_holes;
   j["boolean_runs"] = boolean_runs;
   nlohmann::json t = nlohmann::json::object();
   for (const auto& [stage, s] : seconds) t[stage + "_s"] = s;

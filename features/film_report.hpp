@@ -64,7 +64,8 @@ struct FilmReport {
   std::vector<InsertMeasure> inserts;
   double min_ligament = std::numeric_limits<double>::infinity();  ///< between holes, mm
   double configured_min_ligament = 0;
-  int tool_clusters = 0, boolean_runs = 0;  ///< of the verified boolean step
+  int tool_clusters = 0, boolean_runs = 0;  ///< of the verified boolean step(s)
+  int drilled_holes = 0;  ///< holes cut by direct drilling (drill_holes.hpp); the rest went through booleans
   std::vector<std::pair<std::string, double>> seconds;  ///< stage times
   nlohmann::json to_json() const;
 };
