@@ -2,6 +2,8 @@
 
 #include <BRepBndLib.hxx>
 #include <BRepTopAdaptor_FClass2d.hxx>
+#include <IntCurvesFace_Intersector.hxx>
+#include <gp_Lin.hxx>
 #include <BRep_Tool.hxx>
 #include <Geom_BSplineSurface.hxx>
 #include <Geom_RectangularTrimmedSurface.hxx>
@@ -118,6 +120,7 @@ struct Workspace {
   const Part* part = nullptr;
   std::vector<std::unique_ptr<WallSurface>> walls;
   std::vector<std::unique_ptr<BRepTopAdaptor_FClass2d>> classifiers;
+  std::vector<std::unique_ptr<IntCurvesFace_Intersector>> intersectors;
   WallSurface& wall(int s) {
     auto& w = walls[static_cast<std::size_t>(s)];
     if (!w) w = std::make_unique<WallSurface>(part->surfaces[static_cast<std::size_t>(s)]);
@@ -129,6 +132,13 @@ struct Workspace {
       c = std::make_unique<BRepTopAdaptor_FClass2d>(
           TopoDS::Face(part->faces[static_cast<std::size_t>(f)].face.Oriented(TopAbs_FORWARD)), 1e-9);
     return c->Perform(gp_Pnt2d(u, v));
+  }
+  // Whether the segment p + t d, t in [0, length], meets face f (any surface type).
+  bool meets(int f, const Eigen::Vector3d& p, const Eigen::Vector3d& d, double length) {
+    auto& x = intersectors[static_cast<std::size_t>(f)];
+    if (!x) x = std::make_unique<IntCurvesFace_Intersector>(part->faces[static_cast<std::size_t>(f)].face, 1e-7);
+    x->Perform(gp_Lin(pnt(p), gp_Dir(d.x(), d.y(), d.z())), 0, length);
+    return x->IsDone() ? x->NbPnt() > 0 : true;
   }
   // IN or ON the face (a point on the boundary counts as reaching it).
   bool inside(int f, double u, double v) { return state(f, u, v) != TopAbs_OUT; }
@@ -167,17 +177,28 @@ void plan_hole(Workspace& ws, HolePlan& h, const DrillOptions& o) {
   const Part& part = *ws.part;
   const HoleCylinder& c = h.cyl;
   const double reach = c.radius + o.margin;
-  std::vector<int> faces, surfaces;
+  std::vector<int> faces, surfaces, other;
   for (int f = 0; f < static_cast<int>(part.faces.size()); ++f) {
     const FaceInfo& fi = part.faces[static_cast<std::size_t>(f)];
     if (fi.box.IsOut(h.box)) continue;
     if (fi.surface < 0) {
-      h.reason = "comes near face '" + fi.name + "', which is not a B-spline face";
-      return;
+      other.push_back(f);
+      continue;
     }
     faces.push_back(f);
     if (std::find(surfaces.begin(), surfaces.end(), fi.surface) == surfaces.end()) surfaces.push_back(fi.surface);
   }
+  // Faces that are not B-splines (planes, surfaces of revolution, inlet cylinders) must stay out of
+  // reach: the axis and the lines of the margin ring meet none of them within the tool (OCCT's
+  // line/face intersector).
+  for (int f : other)
+    for (int k = -1; k < 8; ++k) {
+      const Eigen::Vector3d p = k < 0 ? c.o : c.ruling(2 * kPi * k / 8, reach);
+      if (ws.meets(f, p, c.d, c.length)) {
+        h.reason = "it meets face '" + part.faces[static_cast<std::size_t>(f)].name + "' (not a B-spline face)";
+        return;
+      }
+    }
   // Along the axis: exactly two faces, the entry and the exit.
   const std::vector<LineHit> axis = line_hits(ws, surfaces, faces, c.o, c.d, c.length);
   if (axis.size() != 2) {
@@ -306,6 +327,7 @@ void plan_holes(const Part& part, std::vector<HolePlan>& plans, const std::vecto
     w.part = &part;
     w.walls.resize(part.surfaces.size());
     w.classifiers.resize(part.faces.size());
+    w.intersectors.resize(part.faces.size());
   }
   for_each_index(static_cast<int>(plans.size()), o.parallel,
                  [&](int i, int k) { plan_hole(ws[static_cast<std::size_t>(k)], plans[static_cast<std::size_t>(i)], o); });

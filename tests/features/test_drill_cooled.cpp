@@ -15,13 +15,13 @@ using namespace cg;
 BOOST_AUTO_TEST_CASE(film_holes_drilled_into_the_chambers) {
   const test::CooledBlade& c = test::cooled_example("");
   features::FilmFieldOptions fo;
-  fo.count = 60;
+  fo.count = 40;
   const std::vector<features::CylindricalHole> holes = features::film_hole_field(c.model, c.cooled.blade, fo);
-  BOOST_TEST_REQUIRE(holes.size() == 60u);
+  BOOST_TEST_REQUIRE(holes.size() == 40u);
   features::DrillOptions o;
   o.verify_solid = true;
   const features::DrillResult r = features::drill_holes(c.cooled.blade, holes, o);
-  BOOST_TEST(r.drilled == 60);
+  BOOST_TEST(r.drilled == 40);
   BOOST_TEST(r.check.all_passed(), r.check.failed_names());
   double removed = 0;
   for (const auto& h : r.holes) {

@@ -198,6 +198,29 @@ BOOST_AUTO_TEST_CASE(a_tool_starting_inside_the_wall_is_not_drilled_across_the_c
   BOOST_TEST(r.fallback.check.all_passed(), r.fallback.check.failed_names());
 }
 
+BOOST_AUTO_TEST_CASE(each_precondition_decides_by_its_option) {
+  // The sample holes meet the walls at 30 deg (entry) and are >= ~1 mm apart: they qualify with the
+  // defaults, not with a minimum incidence of 40 deg.
+  const Fixture& f = hollow();
+  const std::vector<features::CylindricalHole> holes(f.holes.begin(), f.holes.begin() + 6);
+  for (const std::string& reason : features::drill_fallback_reasons(f.hb.part, holes)) BOOST_TEST(reason.empty(), reason);
+  features::DrillOptions steep;
+  steep.min_incidence_deg = 40;
+  for (const std::string& reason : features::drill_fallback_reasons(f.hb.part, holes, steep))
+    BOOST_TEST(reason.find("minimum incidence angle") != std::string::npos, reason);
+  // Two holes 0.6 mm apart (D 0.5 mm: a 0.1 mm ligament) qualify with the default 0.02 mm margin and
+  // fall back together with a 0.2 mm margin.
+  features::CylindricalHole twin = holes[1];
+  twin.name = "twin";
+  twin.origin += 0.6 * twin.axis.cross(Eigen::Vector3d::UnitZ()).normalized();
+  const std::vector<features::CylindricalHole> pair{holes[1], twin};
+  for (const std::string& reason : features::drill_fallback_reasons(f.hb.part, pair)) BOOST_TEST(reason.empty(), reason);
+  features::DrillOptions wide;
+  wide.margin = 0.2;
+  for (const std::string& reason : features::drill_fallback_reasons(f.hb.part, pair, wide))
+    BOOST_TEST(reason.find("within the margin of hole") != std::string::npos, reason);
+}
+
 BOOST_AUTO_TEST_CASE(bad_holes_are_rejected) {
   const Fixture& f = hollow();
   auto with = [&](auto change) {
