@@ -68,6 +68,7 @@ FilmCoolingResult build_film_cooling(const blade::BladeModel& model, const brep:
     out.blade = std::move(cut.blade);
     out.check = cut.check;
     out.blade_checked = cut.checked;
+    out.holes_cut = true;
     const std::vector<std::pair<std::string, double>> seconds = rep.seconds;
     rep = std::move(cut.report);
     rep.configured_min_ligament = def.limits.min_ligament;

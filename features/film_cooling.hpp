@@ -28,8 +28,9 @@ struct FilmCoolingResult {
   std::vector<brep::NamedBody> inserts;  ///< "insert_1", ...
   FilmReport report;
   brep::SolidCheck check;                ///< of the blade after the holes (verify_solid, run by the step)
-  /// true: `check` is verify_solid of `blade` after the last boolean step; false: no holes were cut,
-  /// or all were drilled directly (checked locally), and the build's verify stage checks the blade.
+  bool holes_cut = false;  ///< false: `blade` is the input blade, unchanged
+  /// true: `check` is verify_solid of `blade` after its last step; false when holes were drilled after the
+  /// last boolean step (checked locally, drill_holes.hpp): the build's verify stage checks the blade.
   bool blade_checked = false;
   std::vector<brep::SolidCheck> insert_checks;
 };

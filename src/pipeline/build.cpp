@@ -53,7 +53,7 @@ BuildResult run_build(const config::Config& config, const BuildOptions& options,
     stages.run("film", "film cooling holes and impingement inserts", [&] {
       features::FilmCoolingResult film = apply_film(config.cooling, r.model, *cooled, progress);
       r.part.front().geometry = std::move(film.blade);
-      if (film.blade_checked) known_checks[0] = film.check;
+      if (film.holes_cut) known_checks[0] = film.blade_checked ? std::optional(film.check) : std::nullopt;
       for (std::size_t i = 0; i < film.inserts.size(); ++i) {
         r.part.push_back(std::move(film.inserts[i]));
         known_checks.push_back(film.insert_checks[i]);
