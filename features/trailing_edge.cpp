@@ -228,6 +228,13 @@ TrailingEdgeBuild build_trailing_edge(const blade::BladeModel& model, const Core
   if (!def.trailing_edge) return out;
   const TrailingEdgeDefinition& te = *def.trailing_edge;
   const bool cutback = te.type == TrailingEdgeType::PressureSideCutback;
+  // A centreline slot removes a piece of the wall's periodic seam when the seam lies at the TE: OCCT's
+  // boolean then warns (BOPAlgo_AlertFaceBuilderUnusedEdges) on every slot, measured on the example, so
+  // the verified path would refuse every slot. Say so up front.
+  if (!cutback && std::abs(std::abs(model.seam) - 1.0) < 1e-12)
+    throw PassageInputError(field("type"), "centreline slots need the wall's seam away from the trailing edge (OCCT's "
+                                           "boolean fails where a slot cuts the seam): set blade.seam, e.g. 0.9, or use "
+                                           "\"pressure_side_cutback\"");
   const blade::BladeCoordinates coords(model);
   const SpanLine line = crease_line(model, coords, def, core, te.span_margin);
 
