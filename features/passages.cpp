@@ -64,13 +64,6 @@ PassagesResult build_passages(const blade::BladeModel& model, const brep::NamedS
   for (const auto& t : br.cut.tools) out.report.tools.push_back({t.feature, t.expected_volume, t.measured_volume, t.passed, "cut"});
   measure_passages(model, out.blade, def, core ? &*core : nullptr, radial ? &*radial : nullptr, out.report);
   lap("checks");
-  // Turbulators, pin fins and TE slots after the passage checks: those measure the smooth chambers.
-  if (core) {
-    out.blade = apply_wall_feature_tools(out.blade, out.wall_features, out.report);
-    // The last step verified the final solid.
-    if (!out.wall_features.steps.empty()) out.check = out.wall_features.steps.back().check;
-    t0 = std::chrono::steady_clock::now();
-  }
   std::string failed;
   for (const auto& t : out.report.thickness)
     if (!t.passed)
@@ -79,6 +72,13 @@ PassagesResult build_passages(const blade::BladeModel& model, const brep::NamedS
   if (!out.report.all_chambers_fed)
     failed += (failed.empty() ? "" : "; ") + std::to_string(out.report.closed_cavities) + " closed cavities (no inlet)";
   if (!failed.empty()) throw FeatureFailure("design checks of the cooling passages failed: " + failed);
+  // Turbulators, pin fins and TE slots after the passage checks (those measure the smooth chambers; a
+  // failed design check stops the build before these booleans).
+  if (core) {
+    out.blade = apply_wall_feature_tools(out.blade, out.wall_features, out.report);
+    // The last step verified the final solid.
+    if (!out.wall_features.steps.empty()) out.check = out.wall_features.steps.back().check;
+  }
   if (core) out.core = std::make_shared<const CoreBuild>(std::move(*core));
   return out;
 }

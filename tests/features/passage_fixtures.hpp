@@ -35,6 +35,8 @@
 #include <string>
 #include <vector>
 
+#include "brep/temp_files.hpp"
+#include "export/step_writer.hpp"
 #include "features/passages.hpp"
 #include "src/brep/blade_solid.hpp"
 #include "src/config/builtin_example.hpp"
@@ -223,6 +225,14 @@ inline StepReadBack read_step_names(const std::filesystem::path& file) {
   app->Close(doc);
   out.ok = true;
   return out;
+}
+
+/// Writes `s` as STEP (AP214, its face names) into a temporary directory and reads it back.
+inline StepReadBack step_round_trip(const brep::NamedShape& s, const std::string& tag) {
+  TempDir dir(tag);
+  const auto file = dir.path / "blade.step";
+  io::write_step(file, s.shape, s.faces, {io::StepSchema::AP214, "hpt_rotor"});
+  return read_step_names(file);
 }
 
 /// Allowed deviation of a measured thickness: 1 % or 0.01 mm, whichever is larger (issue 9).

@@ -232,10 +232,7 @@ BOOST_AUTO_TEST_CASE(cross_sections_of_every_chamber) {
 
 BOOST_AUTO_TEST_CASE(step_round_trip_keeps_solid_and_names) {
   const auto& r = rotor().cooled;
-  test::TempDir dir("passages_step");
-  const auto file = dir.path / "blade.step";
-  io::write_step(file, r.blade.shape, r.blade.faces, {io::StepSchema::AP214, "hpt_rotor"});
-  const test::StepReadBack rb = test::read_step_names(file);
+  const test::StepReadBack rb = test::step_round_trip(r.blade, "passages_step");
   BOOST_TEST_REQUIRE(rb.ok);
   BOOST_TEST_REQUIRE(rb.free_shapes == 1);
   const TopoDS_Shape back = rb.shape;

@@ -16,8 +16,6 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "brep/temp_files.hpp"
-#include "export/step_writer.hpp"
 #include "features/passage_fixtures.hpp"
 
 using namespace cg;
@@ -185,10 +183,7 @@ BOOST_AUTO_TEST_CASE(pin_diameter_on_the_built_solid) {
 
 BOOST_AUTO_TEST_CASE(feature_names_in_the_step_file) {
   const auto& r = rotor().cooled;
-  test::TempDir dir("wall_features_step");
-  const auto file = dir.path / "blade.step";
-  io::write_step(file, r.blade.shape, r.blade.faces, {io::StepSchema::AP214, "hpt_rotor"});
-  const test::StepReadBack rb = test::read_step_names(file);
+  const test::StepReadBack rb = test::step_round_trip(r.blade, "wall_features_step");
   BOOST_TEST_REQUIRE(rb.ok);
   for (const char* prefix : {"turbulator_", "te_slot_", "pin_fin_"}) {
     std::set<std::string> in_step, ours;

@@ -8,6 +8,7 @@
 #include <functional>
 #include <nlohmann/json.hpp>
 
+
 #include "features/trailing_edge.hpp"
 #include "features/turbulators.hpp"
 #include "src/config/builtin_example.hpp"
@@ -138,4 +139,14 @@ BOOST_AUTO_TEST_CASE(trailing_edge_that_does_not_fit) {
   // Too many pin rows reach the last rib's fillet.
   expect_geometry_error([](json& d) { core_of(d)["trailing_edge"]["pin_fins"]["rows"] = 12; },
                         "cooling.core.trailing_edge.pin_fins.rows", {"reaches rib 3"});
+}
+
+BOOST_AUTO_TEST_CASE(centreline_slots_are_refused) {
+  // OCCT's boolean warns on every centreline slot (it contains the chamber's crease; measured:
+  // BOPAlgo_AlertFaceBuilderUnusedEdges), so they are refused before any work.
+  expect_geometry_error(
+      [](json& d) {
+        core_of(d)["trailing_edge"] = {{"type", "centreline"}, {"slot_height", 0.4}, {"slot_width", 1.0}, {"count", 4}};
+      },
+      "cooling.core.trailing_edge.type", {"not supported yet", "crease"});
 }
