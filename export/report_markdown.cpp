@@ -112,6 +112,44 @@ void mesh_section(std::ostringstream& o, const json& m) {
   if (!rows.empty()) table(o, {"surface group", "faces", "triangles"}, rows);
 }
 
+// Film cooling (model.cooling.film, features/film_report.hpp): rows, chambers fed, inserts, every hole.
+// A null ligament means no other hole (or obstacle) is near: "-".
+void film_section(std::ostringstream& o, const json& f) {
+  const auto lig = [](const json& v) { return v.is_null() ? std::string("-") : num(v); };
+  o << "## Film cooling\n\n" << num(f.value("hole_count", 0)) << " holes; least ligament between holes "
+    << lig(f.value("min_ligament_mm", json())) << " mm (configured minimum " << num(f.value("configured_min_ligament_mm", 0.0))
+    << " mm). Coverage = mean breakout width / pitch along the row.\n\n";
+  std::vector<std::vector<std::string>> rows;
+  for (const auto& r : f.value("rows", json::array()))
+    rows.push_back({cell(r.value("name", "")), num(r.value("holes", 0)), num(r.value("pitch_mm", 0.0)),
+                    num(r.value("breakout_width_mm", 0.0)), num(r.value("coverage", 0.0)), lig(r.value("min_ligament_mm", json())),
+                    num(r.value("metering_area_mm2", 0.0))});
+  table(o, {"row", "holes", "pitch mm", "breakout width mm", "coverage", "min ligament mm", "metering area mm²"}, rows);
+  rows.clear();
+  for (const auto& c : f.value("chambers", json::array()))
+    rows.push_back({cell(c.value("chamber", "")), num(c.value("holes", 0)), num(c.value("metering_area_mm2", 0.0))});
+  if (!rows.empty()) table(o, {"chamber", "holes fed", "total metering area mm²"}, rows);
+  rows.clear();
+  for (const auto& i : f.value("inserts", json::array()))
+    rows.push_back({cell(i.value("name", "")), cell(i.value("chamber", "")), num(i.value("gap_mm", 0.0)),
+                    num(i.value("measured_gap_mm", 0.0)), num(i.value("sheet_thickness_mm", 0.0)),
+                    num(i.value("measured_sheet_min_mm", 0.0)) + " - " + num(i.value("measured_sheet_max_mm", 0.0)),
+                    num(i.value("jet_holes", 0)), num(i.value("jet_area_mm2", 0.0))});
+  if (!rows.empty())
+    table(o, {"insert", "chamber", "gap Z mm", "measured gap mm", "sheet mm", "measured sheet mm", "jets", "jet area mm²"}, rows);
+  rows.clear();
+  for (const auto& h : f.value("holes", json::array()))
+    rows.push_back({"`" + cell(h.value("name", "")) + "`", cell(h.value("chamber", "")), cell(h.value("shape", "")),
+                    num(h.value("diameter_mm", 0.0)), num(h.value("inclination_deg", 0.0), 1), num(h.value("length_mm", 0.0)),
+                    num(h.value("length_d", 0.0), 2), num(h.value("metering_area_mm2", 0.0)),
+                    num(h.value("footprint_area_mm2", 0.0)), num(h.value("expected_volume_mm3", 0.0), 4),
+                    num(h.value("measured_volume_mm3", json()), 4)});
+  if (!rows.empty())
+    table(o, {"hole", "chamber", "shape", "D mm", "inclination deg", "L mm", "L/D", "metering area mm²", "exit footprint mm²",
+              "volume mm³ (expected)", "volume mm³ (measured)"},
+          rows);
+}
+
 }  // namespace
 
 std::string report_markdown(const json& r) {
@@ -171,6 +209,8 @@ std::string report_markdown(const json& r) {
         o << "```\n" << rows.dump(2) << "\n```\n\n";
     }
   }
+  if (model.is_object() && model.contains("cooling") && model.at("cooling").is_object() && model.at("cooling").contains("film"))
+    film_section(o, model.at("cooling").at("film"));
   if (r.contains("sections") && !r.at("sections").empty()) sections(o, r.at("sections"));
   if (r.contains("mesh")) mesh_section(o, r.at("mesh"));
   if (r.contains("outputs") || r.contains("notes")) {

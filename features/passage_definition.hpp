@@ -53,12 +53,57 @@ struct InletDefinition {
   double pressure_chord = std::numeric_limits<double>::quiet_NaN();
 };
 
+/// Which chamber walls carry turbulators.
+enum class TurbulatorWalls { Both, Suction, Pressure };
+
+/// Rib turbulators on the suction- and/or pressure-side wall of one chamber: transverse ribs of
+/// rectangular cross-section standing on the inner wall (fused onto the blade: material added).
+struct TurbulatorDefinition {
+  int chamber = 1;                  ///< 1-based, numbered from the LE
+  TurbulatorWalls walls = TurbulatorWalls::Both;
+  double height = 0;                ///< mm, e: normal to the inner wall, into the chamber
+  double width = 0;                 ///< mm, across the turbulator (along the passage axis at 90 deg)
+  double pitch = 0;                 ///< mm, P: along the passage axis (span), centre to centre
+  double angle_deg = 90;            ///< angle to the passage axis (span direction), [30, 90]
+  bool staggered = false;           ///< pressure-side row shifted by pitch / 2 against the suction side
+  double end_gap = 0.2;             ///< mm, clear gap between a turbulator end and a rib fillet / the LE
+  double span_margin = 1.0;         ///< mm, clear span between the turbulators and the end walls / U-bends
+};
+
+/// Pin fins across the last chamber upstream of the trailing-edge slots, staggered rows.
+struct PinFinDefinition {
+  double diameter = 0;           ///< mm
+  double spanwise_pitch = 0;     ///< mm, S: between pins of one row
+  double streamwise_pitch = 0;   ///< mm, X: between rows
+  int rows = 1;
+  double slot_gap = 0.5;         ///< mm, clear gap between the last row and the slots' inlet
+};
+
+enum class TrailingEdgeType { Centreline, PressureSideCutback };
+
+/// Coolant ejection from the last chamber through the trailing edge: slots through the TE centreline, or
+/// a pressure-side cutback (slots under a pressure-side lip, the pressure wall cut back to the lip).
+struct TrailingEdgeDefinition {
+  TrailingEdgeType type = TrailingEdgeType::PressureSideCutback;
+  double slot_height = 0;      ///< mm, H: normal to the slot floor
+  double slot_width = 0;       ///< mm, spanwise width of a slot at its inlet (and under the lip)
+  double pitch = 0;            ///< mm, spanwise slot pitch; 0: from `count`
+  int count = 0;               ///< slots (when pitch = 0)
+  double lip_thickness = 0;    ///< mm, cutback: pressure-side lip over the slot at the cutback
+  double cutback_length = 0;   ///< mm, cutback: from the lip to the TE (along the exit direction)
+  double land_taper_deg = 0;   ///< deg, cutback: each land side turns by this angle, lands widen to the TE
+  double span_margin = 1.0;    ///< mm, clear span between the outermost slots and the end walls
+  std::optional<PinFinDefinition> pin_fins;
+};
+
 /// The hollow core: inner wall, end walls, ribs (LE to TE), inlets.
 struct CoreDefinition {
   blade::ThicknessField wall_thickness;
   EndWallDefinition tip_cap, hub_floor;
   std::vector<RibDefinition> ribs;  ///< sorted from the LE to the TE
   std::vector<InletDefinition> inlets;
+  std::vector<TurbulatorDefinition> turbulators;  ///< per chamber (at most one entry per chamber)
+  std::optional<TrailingEdgeDefinition> trailing_edge;  ///< slots (and pin fins) from the last chamber
   double tolerance = 1e-3;  ///< mm, inner wall and rib surfaces against their exact definitions
 };
 

@@ -8,6 +8,7 @@
 #include "features/passage_boolean.hpp"
 #include "features/passage_checks.hpp"
 #include "features/radial_passages.hpp"
+#include "features/wall_features.hpp"
 
 namespace cg::features {
 
@@ -15,7 +16,10 @@ void validate_passages(const blade::BladeModel& model, const PassagesDefinition&
   if (def.core && !def.radial_passages.empty())
     throw PassageInputError("radial_passages", "radial passages cannot be combined with a core (they would cut "
                                                "through its chambers); use one or the other");
-  if (def.core) check_core_definition(model, *def.core);
+  if (def.core) {
+    check_core_definition(model, *def.core);
+    check_wall_feature_definitions(*def.core);
+  }
   if (!def.radial_passages.empty()) build_radial_passages(model, def.radial_passages);  // checks, cheap tools
 }
 
@@ -41,6 +45,8 @@ PassagesResult build_passages(const blade::BladeModel& model, const brep::NamedS
     for (const auto& [stage, s] : core->seconds) out.report.seconds.emplace_back("core_" + stage, s);
     interior = core->interior_tools;
     cuts = core->cut_tools;
+    // Turbulator, pin and slot tools now: their input errors come before the expensive booleans.
+    out.wall_features = build_wall_feature_tools(model, *def.core, *core, out.report);
     t0 = std::chrono::steady_clock::now();
   }
   if (!def.radial_passages.empty()) {
@@ -66,6 +72,14 @@ PassagesResult build_passages(const blade::BladeModel& model, const brep::NamedS
   if (!out.report.all_chambers_fed)
     failed += (failed.empty() ? "" : "; ") + std::to_string(out.report.closed_cavities) + " closed cavities (no inlet)";
   if (!failed.empty()) throw FeatureFailure("design checks of the cooling passages failed: " + failed);
+  // Turbulators, pin fins and TE slots after the passage checks (those measure the smooth chambers; a
+  // failed design check stops the build before these booleans).
+  if (core) {
+    out.blade = apply_wall_feature_tools(out.blade, out.wall_features, out.report);
+    // The last step verified the final solid.
+    if (!out.wall_features.steps.empty()) out.check = out.wall_features.steps.back().check;
+  }
+  if (core) out.core = std::make_shared<const CoreBuild>(std::move(*core));
   return out;
 }
 

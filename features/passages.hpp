@@ -2,18 +2,27 @@
 // Internal cooling passages of a blade, end to end: core (chambers, ribs, fillets, turnarounds, inlets)
 // and radial passages built as named tools (core_passages.hpp, radial_passages.hpp), applied to the blade
 // (passage_boolean.hpp), then measured on the built solid (passage_checks.hpp).
+#include <memory>
+
 #include "features/passage_definition.hpp"
 #include "features/passage_report.hpp"
+#include "features/wall_features.hpp"
 #include "src/blade/blade_surface.hpp"
 #include "src/brep/named_shape.hpp"
 #include "src/brep/verify.hpp"
 
 namespace cg::features {
 
+struct CoreBuild;
+
 struct PassagesResult {
   brep::NamedShape blade;  ///< the cooled blade, every face named
   PassageReport report;
   brep::SolidCheck check;  ///< verify_solid of the cooled blade (run after the last boolean step)
+  WallFeatureBuild wall_features;  ///< turbulators, slots, pins: placement and boolean step reports
+  /// The core's tools and geometry (inner wall, chambers, ribs, end walls) when a core was built: what
+  /// later features (film holes, inserts: film_cavity.hpp) are placed against.
+  std::shared_ptr<const CoreBuild> core;
 };
 
 /// The checks of build_passages that need no solid (definition, inner wall crossing, rib placement,

@@ -6,6 +6,7 @@
 #include <limits>
 #include <string>
 
+#include "src/analyze/gauss_legendre.hpp"
 #include "src/core/error.hpp"
 #include "src/core/format.hpp"
 #include "src/core/newton.hpp"
@@ -20,26 +21,7 @@ constexpr int kGaussPoints = 10;
 // once to full precision rather than typed in).
 struct GaussRule {
   std::array<double, kGaussPoints> x, w;
-  GaussRule() {
-    const int n = kGaussPoints;
-    for (int i = 0; i < n; ++i) {
-      double z = std::cos(M_PI * (i + 0.75) / (n + 0.5)), dp = 0;
-      for (int it = 0; it < 100; ++it) {
-        double p0 = 1, p1 = z;  // Legendre recurrence up to P_n
-        for (int k = 2; k <= n; ++k) {
-          const double p2 = ((2 * k - 1) * z * p1 - (k - 1) * p0) / k;
-          p0 = p1;
-          p1 = p2;
-        }
-        dp = n * (z * p1 - p0) / (z * z - 1);
-        const double dz = p1 / dp;
-        z -= dz;
-        if (std::abs(dz) < 1e-16) break;
-      }
-      x[static_cast<std::size_t>(i)] = z;
-      w[static_cast<std::size_t>(i)] = 2 / ((1 - z * z) * dp * dp);
-    }
-  }
+  GaussRule() { gauss_legendre(kGaussPoints, x.data(), w.data()); }
 };
 
 const GaussRule& gauss() {

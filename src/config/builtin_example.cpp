@@ -40,8 +40,24 @@ const char* builtin_example_json() {
         {"suction_chord": 0.68, "pressure_chord": -0.66, "thickness": 1.0, "fillet_radius": 0.5,
           "turnaround": {"end": "hub", "gap": 2.5, "tip_radius": 0.5}}
       ],
-      "inlets": [{"chamber": 1, "end": "hub", "diameter": 2.0}, {"chamber": 2, "end": "hub", "diameter": 2.5}]
-    }
+      "inlets": [{"chamber": 1, "end": "hub", "diameter": 2.0}, {"chamber": 2, "end": "hub", "diameter": 2.5}],
+      "turbulators": [
+        {"chamber": 2, "walls": "pressure", "height": 0.4, "width": 0.5, "pitch": 5.0, "angle_deg": 90},
+        {"chamber": 3, "walls": "pressure", "height": 0.4, "width": 0.5, "pitch": 5.0, "angle_deg": 60}
+      ],
+      "trailing_edge": {"type": "pressure_side_cutback", "slot_height": 0.4, "slot_width": 1.2, "pitch": 2.5,
+        "lip_thickness": 0.3, "cutback_length": 0.6, "land_taper_deg": 3.0,
+        "pin_fins": {"diameter": 0.8, "spanwise_pitch": 2.5, "streamwise_pitch": 1.6, "rows": 2}}
+    },
+    "showerhead": {"rows": 3, "diameter": 0.5, "row_spacing_d": 4, "pitch_d": 6, "radial_angle_deg": 30, "toward": "tip",
+                   "span_start": 0.1, "span_end": 0.9, "chamber": 1},
+    "film_rows": [
+      {"shape": "7-7-7", "diameter": 0.33, "chord": -0.16, "span_start": 0.1, "span_end": 0.9, "chamber": 1},
+      {"diameter": 0.4, "chord": -0.8, "pitch_d": 5, "inclination_deg": 35, "span_start": 0.1, "span_end": 0.9, "chamber": 4},
+      {"diameter": 0.4, "chord": 0.17, "pitch_d": 5, "inclination_deg": 35, "span_start": 0.1, "span_end": 0.9, "chamber": 1},
+      {"diameter": 0.4, "chord": 0.35, "pitch_d": 5, "inclination_deg": 30, "compound_deg": 15, "span_start": 0.1, "span_end": 0.9, "chamber": 2},
+      {"diameter": 0.4, "chord": 0.57, "pitch_d": 5, "inclination_deg": 30, "span_start": 0.1, "span_end": 0.9, "chamber": 3}
+    ]
   },
   "output": {"step_schema": "AP214"}
 }

@@ -5,6 +5,7 @@
 
 #include "src/blade/section.hpp"
 #include "src/config/config_error.hpp"
+#include "src/config/cooling_film_config.hpp"
 
 namespace cg::config {
 namespace {
@@ -87,8 +88,63 @@ features::InletDefinition inlet(const Field& f) {
   return in;
 }
 
+features::TurbulatorDefinition turbulator(const Field& f) {
+  f.expect_object({"chamber", "walls", "height", "width", "pitch", "angle_deg", "arrangement", "end_gap", "span_margin"});
+  features::TurbulatorDefinition t;
+  t.chamber = f.at("chamber").integer(1, 100);
+  if (f.has("walls")) {
+    static const features::TurbulatorWalls walls[] = {features::TurbulatorWalls::Both, features::TurbulatorWalls::Suction,
+                                                      features::TurbulatorWalls::Pressure};
+    t.walls = walls[f.at("walls").choice({"both", "suction", "pressure"})];
+  }
+  t.height = f.at("height").number(positive(5), "mm");
+  t.width = f.at("width").number(positive(10), "mm");
+  t.pitch = f.at("pitch").number(positive(100), "mm");
+  t.angle_deg = f.number_or("angle_deg", t.angle_deg, closed(30, 90), "deg");
+  if (f.has("arrangement")) t.staggered = f.at("arrangement").choice({"inline", "staggered"}) == 1;
+  t.end_gap = f.number_or("end_gap", t.end_gap, closed(0, 10), "mm");
+  t.span_margin = f.number_or("span_margin", t.span_margin, closed(0, 50), "mm");
+  return t;
+}
+
+features::TrailingEdgeDefinition trailing_edge(const Field& f) {
+  f.expect_object({"type", "slot_height", "slot_width", "pitch", "count", "lip_thickness", "cutback_length",
+                   "land_taper_deg", "span_margin", "pin_fins"});
+  features::TrailingEdgeDefinition te;
+  te.type = f.at("type").choice({"pressure_side_cutback", "centreline"}) == 0
+                ? features::TrailingEdgeType::PressureSideCutback
+                : features::TrailingEdgeType::Centreline;
+  const bool cutback = te.type == features::TrailingEdgeType::PressureSideCutback;
+  te.slot_height = f.at("slot_height").number(positive(10), "mm");
+  te.slot_width = f.at("slot_width").number(positive(50), "mm");
+  if (f.has("pitch") == f.has("count")) fail(f.path(), "give exactly one of \"pitch\" and \"count\"");
+  if (f.has("pitch")) te.pitch = f.at("pitch").number(positive(100), "mm");
+  if (f.has("count")) te.count = f.at("count").integer(1, 500);
+  for (const char* k : {"lip_thickness", "cutback_length", "land_taper_deg"})
+    if (!cutback && f.has(k)) fail(f.path() + "." + k, "only for \"type\": \"pressure_side_cutback\"");
+  if (cutback) {
+    te.lip_thickness = f.at("lip_thickness").number(positive(10), "mm");
+    te.cutback_length = f.at("cutback_length").number(positive(50), "mm");
+    te.land_taper_deg = f.number_or("land_taper_deg", 0, Range{0, 45, false, true}, "deg");
+  }
+  te.span_margin = f.number_or("span_margin", te.span_margin, closed(0, 50), "mm");
+  if (f.has("pin_fins")) {
+    const Field p = f.at("pin_fins");
+    p.expect_object({"diameter", "spanwise_pitch", "streamwise_pitch", "rows", "slot_gap"});
+    features::PinFinDefinition pf;
+    pf.diameter = p.at("diameter").number(positive(10), "mm");
+    pf.spanwise_pitch = p.at("spanwise_pitch").number(positive(100), "mm");
+    pf.streamwise_pitch = p.at("streamwise_pitch").number(positive(100), "mm");
+    pf.rows = p.integer_or("rows", 1, 1, 20);
+    pf.slot_gap = p.number_or("slot_gap", pf.slot_gap, closed(0, 20), "mm");
+    te.pin_fins = pf;
+  }
+  return te;
+}
+
 features::CoreDefinition core(const Field& f) {
-  f.expect_object({"wall_thickness", "tip_cap", "hub_floor", "ribs", "inlets", "tolerance"});
+  f.expect_object({"wall_thickness", "tip_cap", "hub_floor", "ribs", "inlets", "tolerance", "turbulators",
+                   "trailing_edge"});
   features::CoreDefinition c;
   c.wall_thickness = wall_thickness(f.at("wall_thickness"));
   c.tip_cap = end_wall(f.at("tip_cap"));
@@ -104,6 +160,12 @@ features::CoreDefinition core(const Field& f) {
     for (std::size_t i = 0; i < n; ++i) c.inlets.push_back(inlet(ins.item(i)));
   }
   c.tolerance = f.number_or("tolerance", c.tolerance, closed(1e-6, 0.1), "mm");
+  if (f.has("turbulators")) {
+    const Field tf = f.at("turbulators");
+    const std::size_t n = tf.expect_array(0, 100);
+    for (std::size_t i = 0; i < n; ++i) c.turbulators.push_back(turbulator(tf.item(i)));
+  }
+  if (f.has("trailing_edge")) c.trailing_edge = trailing_edge(f.at("trailing_edge"));
   return c;
 }
 
@@ -185,10 +247,14 @@ std::vector<features::RadialPassageDefinition> radial_passages(const Field& f, c
 }  // namespace
 
 CoolingConfig parse_cooling(const Field& f, const std::filesystem::path& base_dir) {
-  f.expect_object({"core", "radial_passages"});
+  static_assert(kFilmCoolingKeys.size() == 4, "the film keys are listed here too");
+  f.expect_object({"core", "radial_passages", "film_rows", "showerhead", "inserts", "film_limits"});
   CoolingConfig c;
   if (f.has("core")) c.passages.core = core(f.at("core"));
   if (f.has("radial_passages")) c.passages.radial_passages = radial_passages(f.at("radial_passages"), base_dir, c.source_files);
+  c.film = parse_film_cooling(f);
+  if (!c.film.empty() && !c.passages.core)
+    fail(f.path(), "film rows, a showerhead and inserts need \"core\": the chambers they feed from or sit in");
   return c;
 }
 

@@ -7,6 +7,8 @@
 //   "cooling": {
 //     "core": {...},             internal passages: wall, end walls, ribs, turnarounds, inlets
 //     "radial_passages": ...     straight passages through the span (C3X-type vanes)
+//     "film_rows", "showerhead", "inserts", "film_limits": film cooling and impingement
+//                                (cooling_film_config.hpp)
 //   }
 // Errors that need the blade (a rib outside the core, ribs closer than their thickness, a wall too thick
 // for the blade, an inlet that does not fit ...) are found when the features are built and reported as
@@ -17,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "features/film_definition.hpp"
 #include "features/passage_definition.hpp"
 #include "src/blade/blade_surface.hpp"
 #include "src/config/config_error.hpp"
@@ -26,8 +29,9 @@ namespace cg::config {
 
 struct CoolingConfig {
   features::PassagesDefinition passages;  ///< "core" and "radial_passages"
+  features::FilmCoolingDefinition film;   ///< "film_rows", "showerhead", "inserts", "film_limits"
   std::vector<std::string> source_files;  ///< table files read (resolved paths), for the input hash
-  bool empty() const { return passages.empty(); }
+  bool empty() const { return passages.empty() && film.empty(); }
 };
 
 /// Parses the "cooling" object at `f` (relative files resolved against base_dir). Throws ConfigError.

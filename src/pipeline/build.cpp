@@ -39,23 +39,39 @@ BuildResult run_build(const config::Config& config, const BuildOptions& options,
     r.uncooled = {solid.solid, solid.faces};
     r.part.push_back({"blade", {solid.solid, std::move(solid.faces)}});
   });
-  std::optional<brep::SolidCheck> cooled_check;
-  if (!config.cooling.empty())
+  // Checks the feature stages already ran on a body with the default options, by body index.
+  std::vector<std::optional<brep::SolidCheck>> known_checks(1);
+  std::optional<features::PassagesResult> cooled;
+  if (!config.cooling.passages.empty())
     stages.run("cooling", "cooling features (chambers, ribs, passages)", [&] {
-      features::PassagesResult cooled = apply_cooling(config.cooling, r.model, r.part.front().geometry);
-      r.part.front().geometry = std::move(cooled.blade);
-      r.cooling = std::move(cooled.report);
-      cooled_check = cooled.check;
+      cooled = apply_cooling(config.cooling, r.model, r.part.front().geometry);
+      r.part.front().geometry = cooled->blade;
+      r.cooling = cooled->report;
+      known_checks[0] = cooled->check;
     });
+  if (!config.cooling.film.empty())
+    stages.run("film", "film cooling holes and impingement inserts", [&] {
+      features::FilmCoolingResult film = apply_film(config.cooling, r.model, *cooled, progress);
+      r.part.front().geometry = std::move(film.blade);
+      if (film.holes_cut) known_checks[0] = film.blade_checked ? std::optional(film.check) : std::nullopt;
+      for (std::size_t i = 0; i < film.inserts.size(); ++i) {
+        r.part.push_back(std::move(film.inserts[i]));
+        known_checks.push_back(film.insert_checks[i]);
+      }
+      r.film = std::move(film.report);
+    });
+  cooled.reset();
   stages.run("verify", "checks (BRepCheck, free edges, closed mesh, volume)", [&] {
     brep::VerifyOptions vo = options.verify;
     vo.progress = progress;
-    // The cooling stage verified the cooled blade with the default options after its last step.
+    // The feature stages verified their bodies with the default options after their last step.
     const brep::VerifyOptions defaults;
-    const bool reuse = cooled_check && vo.mesh_relative_deflection == defaults.mesh_relative_deflection &&
+    const bool reuse = vo.mesh_relative_deflection == defaults.mesh_relative_deflection &&
                        vo.mesh_angular_deflection == defaults.mesh_angular_deflection;
-    for (std::size_t i = 0; i < r.part.size(); ++i)
-      r.checks.push_back(i == 0 && reuse ? *cooled_check : brep::verify_solid(r.part[i].geometry.shape, vo));
+    for (std::size_t i = 0; i < r.part.size(); ++i) {
+      const bool known = reuse && i < known_checks.size() && known_checks[i];
+      r.checks.push_back(known ? *known_checks[i] : brep::verify_solid(r.part[i].geometry.shape, vo));
+    }
   });
   return r;
 }

@@ -10,6 +10,8 @@
 //   solid        blade surface trimmed to the flow path (brep::build_blade_solid) -> Part bodies[0]
 //   cooling      the configured cooling features built into bodies[0] (src/pipeline/cooling.hpp; only
 //                when the config has a "cooling" section); its last boolean step verifies the blade
+//   film         film holes and impingement inserts (when "cooling" has film_rows, showerhead or inserts),
+//                against the core of the cooling stage; inserts become bodies insert_1, ... of the Part
 //   verify       brep::verify_solid on every body of the Part (the cooled blade's check is reused)
 // A later stage slots in as one more StageRunner::run call in run_build (e.g. cooling features applied
 // to bodies[0].geometry between "solid" and "verify"); outputs are added in output_formats.cpp.
@@ -17,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "features/film_report.hpp"
 #include "features/passage_report.hpp"
 #include "src/blade/blade_surface.hpp"
 #include "src/brep/named_shape.hpp"
@@ -53,6 +56,8 @@ struct BuildResult {
   std::vector<StageTiming> timings;
   /// What the cooling stage measured (design checks, passage sections, volumes); none when uncooled.
   std::optional<features::PassageReport> cooling;
+  /// What the film stage measured (per hole, row, chamber, insert); none without film input.
+  std::optional<features::FilmReport> film;
 
   /// Every check of every body passed.
   bool valid() const;

@@ -1,5 +1,9 @@
 #include "src/pipeline/cooling.hpp"
 
+#include "features/film_cavity.hpp"
+#include "features/film_rows.hpp"
+#include "src/config/cooling_film_config.hpp"
+
 namespace cg::pipeline {
 
 void validate_cooling(const config::CoolingConfig& cooling, const blade::BladeModel& model) {
@@ -7,6 +11,11 @@ void validate_cooling(const config::CoolingConfig& cooling, const blade::BladeMo
     features::validate_passages(model, cooling.passages);
   } catch (const features::PassageInputError& e) {
     throw config::cooling_error(e);
+  }
+  try {
+    if (cooling.film.has_holes()) features::place_film_holes(model, cooling.film);  // ms: rows on the outer wall
+  } catch (const features::FilmInputError& e) {
+    throw config::film_error(e);
   }
 }
 
@@ -16,6 +25,19 @@ features::PassagesResult apply_cooling(const config::CoolingConfig& cooling, con
     return features::build_passages(model, blade, cooling.passages);
   } catch (const features::PassageInputError& e) {
     throw config::cooling_error(e);
+  }
+}
+
+features::FilmCoolingResult apply_film(const config::CoolingConfig& cooling, const blade::BladeModel& model,
+                                       const features::PassagesResult& cooled, ProgressSink* progress) {
+  if (!cooled.core || !cooling.passages.core)
+    throw config::ConfigError("cooling: film rows, a showerhead and inserts need \"core\": the chambers they feed from or sit in");
+  try {
+    return features::build_film_cooling(model, cooled.blade,
+                                        features::film_cavity_of_core(model, *cooling.passages.core, *cooled.core),
+                                        cooling.film, progress);
+  } catch (const features::FilmInputError& e) {
+    throw config::film_error(e);
   }
 }
 

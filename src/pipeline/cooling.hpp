@@ -1,18 +1,28 @@
 #pragma once
-// The cooling stage of a build: the configured cooling features ("cooling" in the config) built into the
-// blade solid (features/passages.hpp). Input the blade cannot take becomes ConfigError naming the field
-// below "cooling" (cooling_config.hpp); failed booleans and design checks stay features::FeatureFailure.
+// The cooling stages of a build: the configured cooling features ("cooling" in the config) built into the
+// blade solid: internal passages (features/passages.hpp), then film holes and impingement inserts against
+// the core the passages built (features/film_cooling.hpp, film_cavity.hpp). Input the blade cannot take
+// becomes ConfigError naming the field below "cooling" (cooling_config.hpp, cooling_film_config.hpp);
+// failed booleans and design checks stay features::FeatureFailure.
+#include "features/film_cooling.hpp"
 #include "features/passages.hpp"
 #include "src/blade/blade_surface.hpp"
 #include "src/brep/named_shape.hpp"
 #include "src/config/cooling_config.hpp"
+#include "src/core/progress.hpp"
 
 namespace cg::pipeline {
 
-/// The cooling checks that need the blade model but no solid (features::validate_passages), as ConfigError.
+/// The cooling checks that need the blade model but no solid (features::validate_passages, film holes
+/// placed on their rows: span range, positions, pitch), as ConfigError.
 void validate_cooling(const config::CoolingConfig& cooling, const blade::BladeModel& model);
 
 features::PassagesResult apply_cooling(const config::CoolingConfig& cooling, const blade::BladeModel& model,
                                        const brep::NamedShape& blade);
+
+/// The film stage: the film rows, showerhead and inserts of `cooling` built into `cooled` (the result of
+/// apply_cooling, which must have built a core). Film input the blade cannot take: ConfigError.
+features::FilmCoolingResult apply_film(const config::CoolingConfig& cooling, const blade::BladeModel& model,
+                                       const features::PassagesResult& cooled, ProgressSink* progress = nullptr);
 
 }  // namespace cg::pipeline

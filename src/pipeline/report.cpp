@@ -119,6 +119,7 @@ io::ReportContent report_content(const config::Config& c, const BuildResult& r, 
   rc.model = report_model(c, r.model);
   rc.model["source"] = c.source_file.empty() ? "<built-in example>" : c.source_file;
   if (r.cooling) rc.model["cooling"] = r.cooling->to_json();
+  if (r.film) rc.model["cooling"]["film"] = r.film->to_json();
   for (const StageTiming& s : timings) rc.timings_s[s.stage] = s.seconds;
   rc.outputs = outputs;
   return rc;

@@ -21,6 +21,7 @@
 #include <set>
 #include <sstream>
 
+#include "brep/step_read_back.hpp"
 #include "brep/synthetic_blade.hpp"
 #include "brep/temp_files.hpp"
 #include "export/atomic_file.hpp"
@@ -43,31 +44,7 @@ brep::BladeSolid sample_solid() {
 }
 
 // Face names found on the sub-shape labels of the free shapes of a STEP file read through XCAF.
-std::multiset<std::string> xcaf_face_names(const fs::path& file) {
-  STEPCAFControl_Controller::Init();
-  Interface_Static::SetIVal("read.stepcaf.subshapes.name", 1);
-  Handle(TDocStd_Application) app = XCAFApp_Application::GetApplication();
-  Handle(TDocStd_Document) doc;
-  app->NewDocument("MDTV-XCAF", doc);
-  STEPCAFControl_Reader reader;
-  reader.SetNameMode(true);
-  std::multiset<std::string> names;
-  if (reader.ReadFile(file.string().c_str()) == IFSelect_RetDone && reader.Transfer(doc)) {
-    const Handle(XCAFDoc_ShapeTool) tool = XCAFDoc_DocumentTool::ShapeTool(doc->Main());
-    TDF_LabelSequence free_shapes;
-    tool->GetFreeShapes(free_shapes);
-    for (const TDF_Label& l : free_shapes) {
-      TDF_LabelSequence subs;
-      XCAFDoc_ShapeTool::GetSubShapes(l, subs);
-      for (const TDF_Label& s : subs) {
-        Handle(TDataStd_Name) n;
-        if (s.FindAttribute(TDataStd_Name::GetID(), n)) names.insert(TCollection_AsciiString(n->Get()).ToCString());
-      }
-    }
-  }
-  app->Close(doc);
-  return names;
-}
+std::multiset<std::string> xcaf_face_names(const fs::path& file) { return test::read_step_back(file).names; }
 
 void round_trip(io::StepSchema schema) {
   const auto solid = sample_solid();

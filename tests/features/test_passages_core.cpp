@@ -12,16 +12,8 @@
 #include <TopTools_HSequenceOfShape.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
-#include <Interface_Static.hxx>
-#include <STEPCAFControl_Controller.hxx>
-#include <STEPCAFControl_Reader.hxx>
-#include <TDataStd_Name.hxx>
-#include <TDocStd_Document.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
-#include <XCAFApp_Application.hxx>
-#include <XCAFDoc_DocumentTool.hxx>
-#include <XCAFDoc_ShapeTool.hxx>
 #include <gp_Pln.hxx>
 
 #include <set>
@@ -37,7 +29,14 @@ using test::cooled_example;
 
 namespace {
 
-const test::CooledBlade& rotor() { return cooled_example(""); }
+// The built-in example's core without its turbulators, slots and pin fins (their own test,
+// test_passages_wall_features.cpp, builds them): this test measures the passages and stays cheap.
+const test::CooledBlade& rotor() {
+  return test::cooled_builtin_variant("core only", [](nlohmann::json& d) {
+    d["cooling"]["core"].erase("turbulators");
+    d["cooling"]["core"].erase("trailing_edge");
+  });
+}
 const features::CoreDefinition& core() { return *rotor().config.cooling.passages.core; }
 
 }  // namespace
@@ -233,33 +232,13 @@ BOOST_AUTO_TEST_CASE(cross_sections_of_every_chamber) {
 
 BOOST_AUTO_TEST_CASE(step_round_trip_keeps_solid_and_names) {
   const auto& r = rotor().cooled;
-  test::TempDir dir("passages_step");
-  const auto file = dir.path / "blade.step";
-  io::write_step(file, r.blade.shape, r.blade.faces, {io::StepSchema::AP214, "hpt_rotor"});
-  STEPCAFControl_Controller::Init();
-  Interface_Static::SetIVal("read.stepcaf.subshapes.name", 1);
-  Handle(TDocStd_Application) app = XCAFApp_Application::GetApplication();
-  Handle(TDocStd_Document) doc;
-  app->NewDocument("MDTV-XCAF", doc);
-  STEPCAFControl_Reader reader;
-  reader.SetNameMode(true);
-  BOOST_TEST_REQUIRE(reader.ReadFile(file.string().c_str()) == IFSelect_RetDone);
-  BOOST_TEST_REQUIRE(reader.Transfer(doc));
-  const Handle(XCAFDoc_ShapeTool) tool = XCAFDoc_DocumentTool::ShapeTool(doc->Main());
-  TDF_LabelSequence free_shapes;
-  tool->GetFreeShapes(free_shapes);
-  BOOST_TEST_REQUIRE(free_shapes.Length() == 1);
-  const TopoDS_Shape back = tool->GetShape(free_shapes.Value(1));
-  std::multiset<std::string> names, ours;
-  TDF_LabelSequence subs;
-  XCAFDoc_ShapeTool::GetSubShapes(free_shapes.Value(1), subs);
-  for (const TDF_Label& s : subs) {
-    Handle(TDataStd_Name) n;
-    if (s.FindAttribute(TDataStd_Name::GetID(), n)) names.insert(TCollection_AsciiString(n->Get()).ToCString());
-  }
-  app->Close(doc);
+  const test::StepReadBack rb = test::step_round_trip(r.blade, "passages_step");
+  BOOST_TEST_REQUIRE(rb.ok);
+  BOOST_TEST_REQUIRE(rb.free_shapes == 1);
+  const TopoDS_Shape back = rb.shape;
+  std::multiset<std::string> ours;
   for (const auto& f : r.blade.faces) ours.insert(f.name);
-  BOOST_TEST(names == ours);
+  BOOST_TEST(rb.names == ours);
   int solids = 0;
   for (TopExp_Explorer e(back, TopAbs_SOLID); e.More(); e.Next()) ++solids;
   BOOST_TEST(solids == 1);

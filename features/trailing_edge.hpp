@@ -1,0 +1,72 @@
+#pragma once
+// Trailing-edge cooling: ejection slots from the last chamber through the trailing edge, either along
+// the TE centreline or as a pressure-side cutback, and a staggered pin-fin bank upstream of the slots.
+//
+// Frame per span s (mm, blade-relative: it moves with the section): the inner wall's crease C (the
+// chamber's TE end, blade/inner_wall.hpp) and the TE point P (chord +-1).
+//  - centreline: origin C, x along C -> P, the slot |y| <= H / 2 (refused for now: OCCT's boolean fails
+//    where the slot contains the crease; the geometry and volumes below are built and were checked);
+//  - pressure-side cutback: origin A = the suction-side foot of the crease, x along the suction surface's
+//    tangent there (towards the TE), y towards the pressure side; the slot floor is the plane
+//    y = y_f with y_f = y_ps(x_c) - lip - H, x_c = L - cutback_length (L: x of the TE point, y_ps the
+//    pressure surface), so under the lip the slot is H high and the lip `lip_thickness` thick; from x_c
+//    to the TE everything above the floor is removed (the cutback), between lands whose sides turn by
+//    land_taper_deg (slots narrow, lands widen towards the TE).
+//  z along the span. A slot starts inside the chamber where its whole inlet face (+0.05 mm) lies in the
+//  chamber, and runs 1 mm past the TE.
+// Pins: cylinders of diameter D along y across the last chamber, from half the wall thickness inside the
+// suction-side wall to half inside the pressure-side wall, in rows at x = x0 - slot_gap - D / 2 - r X
+// (x0 the slots' inlet), spanwise pitch S, odd rows shifted by S / 2 (staggered).
+// Slots and pins lie between the end walls, span_margin clear of them; positions along the crease line
+// at equal arc length (pitch or count, centred).
+// Expected volumes (independent of OCCT's boolean): slots = the tool's part inside the material, pins =
+// the cylinder's part inside the chamber, both by Gauss-Legendre quadrature of exact line / surface
+// crossings (ruled_block.hpp, wall_lines.hpp).
+// Face names: te_slot_<nn>, pin_fin_<nnn> (from 01 / 001, hub to tip; pins row by row from the slots).
+#include <string>
+#include <vector>
+
+#include "features/core_passages.hpp"
+#include "features/passage_definition.hpp"
+#include "features/verified_boolean.hpp"
+#include "features/wall_lines.hpp"
+
+namespace cg::features {
+
+struct SlotInfo {
+  std::string name;
+  double span = 0;
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero(), x = Eigen::Vector3d::UnitX(), y = Eigen::Vector3d::UnitY(),
+                  z = Eigen::Vector3d::UnitZ();  ///< the slot's frame (see the header comment)
+  double floor_y = 0, height = 0, width = 0;     ///< mm, the slot's floor, height and width at its inlet
+  double x_inlet = 0, x_lip = 0, x_end = 0;      ///< mm along x: inlet face, lip (cutback) or TE, tool end
+  double removed_volume = 0;                     ///< mm^3, expected
+};
+
+struct PinInfo {
+  std::string name;
+  double span = 0;
+  int row = 0;
+  Eigen::Vector3d base = Eigen::Vector3d::Zero(), axis = Eigen::Vector3d::UnitY();  ///< suction-side end, unit axis
+  double length = 0, diameter = 0;  ///< mm (tool length, end to end)
+  double chamber_length = 0;        ///< mm, across the chamber along the axis (at the axis)
+  double added_volume = 0;          ///< mm^3, expected
+};
+
+struct TrailingEdgeBuild {
+  std::vector<FeatureTool> slot_tools, pin_tools;
+  std::vector<SlotInfo> slots;
+  std::vector<PinInfo> pins;
+};
+
+/// Checks without geometry: sizes, slot pitch > slot width, count, taper (PassageInputError with
+/// "core.trailing_edge.<field>").
+void check_trailing_edge_definition(const CoreDefinition& def);
+
+/// Builds the slot and pin tools. Throws PassageInputError when they do not fit (the slot does not fit
+/// the chamber, no suction-side wall left under the cutback, cutback longer than the TE region, pins
+/// reaching the last rib), FeatureFailure for OCCT failures.
+TrailingEdgeBuild build_trailing_edge(const blade::BladeModel& model, const CoreDefinition& def, const CoreBuild& core,
+                                      WallLines& lines);
+
+}  // namespace cg::features

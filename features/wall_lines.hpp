@@ -1,0 +1,85 @@
+#pragma once
+// Straight lines through the hollow blade: where a segment crosses the outer wall (the blade surface)
+// and the core's inner wall, from the exact NURBS surfaces the B-rep faces carry (ray casting,
+// src/algo/ray_surface.hpp). The turbulators, pin fins and trailing-edge slots use it to place their
+// tools and for the independent expectation of the volume each tool adds or removes: that volume is
+// the integral, over the tool's cross-section, of the length of each line inside the material (or inside
+// the chamber), by Gauss-Legendre quadrature; it shares nothing with OCCT's boolean.
+#include <Eigen/Core>
+#include <utility>
+#include <vector>
+
+#include "src/algo/ray_surface.hpp"
+#include "src/core/bspline_surface.hpp"
+
+namespace cg::features {
+
+/// Where a point lies in the hollow blade.
+enum class Region { Outside, Material, Chamber, Any /* only as an expected end region: no check */ };
+
+/// Intervals [t0, t1] of a segment's parameter t in [0, 1].
+using Intervals = std::vector<std::pair<double, double>>;
+
+/// Segment queries against the outer and the inner wall. One per thread (ray casters keep work buffers);
+/// the inner surface must outlive it.
+class WallLines {
+ public:
+  WallLines(const BSplineSurface<3>& outer, const BSplineSurface<3>& inner);
+
+  /// Sorted parameters t in [0, 1] where a + t (b - a) crosses the outer / the inner wall.
+  std::vector<double> outer_crossings(const Eigen::Vector3d& a, const Eigen::Vector3d& b);
+  std::vector<double> inner_crossings(const Eigen::Vector3d& a, const Eigen::Vector3d& b);
+
+  /// The parts of the segment a -> b in `wanted`, given the region of a (each crossing of the outer wall
+  /// toggles outside / inside the blade, each crossing of the inner wall material / chamber). `end`
+  /// receives the region reached at b, so a caller can check its assumption about both ends.
+  /// chamber = false: the segment cannot reach the chamber, the inner wall is not searched.
+  Intervals intervals(const Eigen::Vector3d& a, const Eigen::Vector3d& b, Region start, Region wanted, Region* end = nullptr,
+                      bool chamber = true);
+
+  /// Unit normal of the inner wall where the segment a -> b first crosses it (zero when it does not).
+  Eigen::Vector3d inner_normal(const Eigen::Vector3d& a, const Eigen::Vector3d& b);
+
+ private:
+  std::vector<double> crossings(RaySurfaceCaster& caster, const Eigen::Vector3d& a, const Eigen::Vector3d& b);
+  RaySurfaceCaster outer_, inner_;
+  const BSplineSurface<3>* inner_surface_;
+};
+
+/// Total length fraction of intervals (sum of t1 - t0).
+double total(const Intervals& iv);
+
+/// 8-point Gauss-Legendre rule mapped onto [a, b] in n equal cells: calls f(x, weight).
+template <class F>
+void gauss_legendre(double a, double b, int cells, F f);
+
+/// Integral of f(rho, phi) over the disc of radius r: Gauss-Legendre (8 points) in rho, `angles` equal
+/// steps in phi (the trapezoidal rule, spectrally accurate for the smooth periodic integrand).
+template <class F>
+double disc_integral(double r, F f, int angles = 32);
+
+// ---------------------------------------------------------------------------------------------------
+
+namespace detail {
+extern const double kGauss8Nodes[8];
+extern const double kGauss8Weights[8];
+}  // namespace detail
+
+template <class F>
+void gauss_legendre(double a, double b, int cells, F f) {
+  const double h = (b - a) / cells;
+  for (int c = 0; c < cells; ++c)
+    for (int i = 0; i < 8; ++i) f(a + h * (c + 0.5 * (detail::kGauss8Nodes[i] + 1)), 0.5 * h * detail::kGauss8Weights[i]);
+}
+
+template <class F>
+double disc_integral(double r, F f, int angles) {
+  constexpr double kTwoPi = 6.283185307179586476925;
+  double sum = 0;
+  gauss_legendre(0.0, r, 1, [&](double rho, double w) {
+    for (int k = 0; k < angles; ++k) sum += w * rho * (kTwoPi / angles) * f(rho, kTwoPi * k / angles);
+  });
+  return sum;
+}
+
+}  // namespace cg::features

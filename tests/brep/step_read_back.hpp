@@ -1,0 +1,54 @@
+#pragma once
+// A STEP file read back through XCAF with names: its free shapes and the names on their sub-shape
+// labels (the face names write_step stores). For tests that check a round trip.
+#include <Interface_Static.hxx>
+#include <STEPCAFControl_Controller.hxx>
+#include <STEPCAFControl_Reader.hxx>
+#include <TDataStd_Name.hxx>
+#include <TDocStd_Document.hxx>
+#include <XCAFApp_Application.hxx>
+#include <XCAFDoc_DocumentTool.hxx>
+#include <XCAFDoc_ShapeTool.hxx>
+
+#include <filesystem>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace cg::test {
+
+struct StepReadBack {
+  bool ok = false;                         ///< read and transferred
+  std::vector<TopoDS_Shape> free_shapes;   ///< top-level shapes
+  std::multiset<std::string> names;        ///< names of the free shapes' sub-shape labels
+};
+
+inline StepReadBack read_step_back(const std::filesystem::path& file) {
+  StepReadBack r;
+  STEPCAFControl_Controller::Init();
+  Interface_Static::SetIVal("read.stepcaf.subshapes.name", 1);
+  Handle(TDocStd_Application) app = XCAFApp_Application::GetApplication();
+  Handle(TDocStd_Document) doc;
+  app->NewDocument("MDTV-XCAF", doc);
+  STEPCAFControl_Reader reader;
+  reader.SetNameMode(true);
+  if (reader.ReadFile(file.string().c_str()) == IFSelect_RetDone && reader.Transfer(doc)) {
+    r.ok = true;
+    const Handle(XCAFDoc_ShapeTool) tool = XCAFDoc_DocumentTool::ShapeTool(doc->Main());
+    TDF_LabelSequence free_shapes;
+    tool->GetFreeShapes(free_shapes);
+    for (const TDF_Label& l : free_shapes) {
+      r.free_shapes.push_back(tool->GetShape(l));
+      TDF_LabelSequence subs;
+      XCAFDoc_ShapeTool::GetSubShapes(l, subs);
+      for (const TDF_Label& s : subs) {
+        Handle(TDataStd_Name) n;
+        if (s.FindAttribute(TDataStd_Name::GetID(), n)) r.names.insert(TCollection_AsciiString(n->Get()).ToCString());
+      }
+    }
+  }
+  app->Close(doc);
+  return r;
+}
+
+}  // namespace cg::test

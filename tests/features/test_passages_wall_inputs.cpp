@@ -1,0 +1,152 @@
+// Bad turbulator, trailing-edge slot and pin-fin input: every case gets an error naming its field below
+// "cooling" and the allowed range (or the limit the blade sets, with the span where it fails).
+// Range errors come from the config reader, definition errors from validate (no solid), geometry
+// errors from building the tools on the example's core (built once; no booleans run).
+#define BOOST_TEST_MODULE passages_wall_inputs
+#include <boost/test/unit_test.hpp>
+
+#include <functional>
+#include <nlohmann/json.hpp>
+
+
+#include "features/trailing_edge.hpp"
+#include "features/turbulators.hpp"
+#include "src/config/builtin_example.hpp"
+#include "src/config/config.hpp"
+#include "src/config/cooling_config.hpp"
+#include "src/pipeline/cooling.hpp"
+
+using namespace cg;
+using nlohmann::json;
+
+namespace {
+
+json example() { return json::parse(config::builtin_example_json()); }
+json& core_of(json& d) { return d["cooling"]["core"]; }
+
+const blade::BladeModel& model() {
+  static const blade::BladeModel m = config::build_model(config::builtin_example_config());
+  return m;
+}
+
+// The message starts with the field path and contains every detail.
+void check_message(const std::string& m, const std::string& path, const std::vector<std::string>& details) {
+  BOOST_TEST_MESSAGE(m);
+  BOOST_TEST(m.rfind(path, 0) == 0u, "message does not start with " << path << ": " << m);
+  for (const auto& d : details) BOOST_TEST(m.find(d) != std::string::npos, "message lacks \"" << d << "\": " << m);
+}
+
+// Config reader and validate (no solid): a ConfigError starting with `path`, containing every detail.
+void expect_config_error(const std::function<void(json&)>& edit, const std::string& path,
+                         const std::vector<std::string>& details) {
+  json doc = example();
+  edit(doc);
+  try {
+    const config::Config c = config::parse_config(doc, COOLINGGEN_SOURCE_DIR "/data/examples", "t");
+    pipeline::validate_cooling(c.cooling, model());
+    BOOST_ERROR("no error for " << path);
+  } catch (const config::ConfigError& e) {
+    check_message(e.what(), path, details);
+  }
+}
+
+// Geometry: the tools built on the example's core with an edited definition.
+const features::CoreBuild& core_build() {
+  static const features::CoreBuild b =
+      features::build_core_tools(model(), *config::builtin_example_config().cooling.passages.core);
+  return b;
+}
+
+void expect_geometry_error(const std::function<void(json&)>& edit, const std::string& path,
+                           const std::vector<std::string>& details) {
+  json doc = example();
+  edit(doc);
+  const config::Config c = config::parse_config(doc, COOLINGGEN_SOURCE_DIR "/data/examples", "t");
+  const features::CoreDefinition& def = *c.cooling.passages.core;
+  try {
+    pipeline::validate_cooling(c.cooling, model());  // passes: only the blade can tell
+    features::WallLines lines(model().surface, core_build().inner_wall.surface);
+    features::build_turbulators(model(), def, core_build(), lines);
+    features::build_trailing_edge(model(), def, core_build(), lines);
+    BOOST_ERROR("no error for " << path);
+  } catch (const features::PassageInputError& e) {
+    check_message(config::cooling_error(e).what(), path, details);
+  }
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(turbulator_sizes_and_angle_out_of_range) {
+  expect_config_error([](json& d) { core_of(d)["turbulators"][0]["height"] = -0.4; }, "cooling.core.turbulators[0].height",
+                      {"(0, 5]"});
+  expect_config_error([](json& d) { core_of(d)["turbulators"][0]["width"] = 0; }, "cooling.core.turbulators[0].width",
+                      {"(0, 10]"});
+  expect_config_error([](json& d) { core_of(d)["turbulators"][1]["pitch"] = -5; }, "cooling.core.turbulators[1].pitch",
+                      {"(0, 100]"});
+  expect_config_error([](json& d) { core_of(d)["turbulators"][0]["angle_deg"] = 20; },
+                      "cooling.core.turbulators[0].angle_deg", {"[30, 90]"});
+  expect_config_error([](json& d) { core_of(d)["turbulators"][0]["angle_deg"] = 95; },
+                      "cooling.core.turbulators[0].angle_deg", {"[30, 90]"});
+  expect_config_error([](json& d) { core_of(d)["turbulators"][0]["arrangement"] = "zigzag"; },
+                      "cooling.core.turbulators[0].arrangement", {"inline", "staggered"});
+}
+
+BOOST_AUTO_TEST_CASE(turbulator_pitch_below_width_and_wrong_chamber) {
+  expect_config_error([](json& d) { core_of(d)["turbulators"][0]["pitch"] = 0.4; }, "cooling.core.turbulators[0].pitch",
+                      {"width / sin(angle)", "0.5"});
+  // At 60 deg a 0.5 mm wide turbulator covers 0.577 mm of the axis.
+  expect_config_error([](json& d) { core_of(d)["turbulators"][1]["pitch"] = 0.55; },
+                      "cooling.core.turbulators[1].pitch", {"0.57735"});
+  expect_config_error([](json& d) { core_of(d)["turbulators"][0]["chamber"] = 1; }, "cooling.core.turbulators[0].chamber",
+                      {"[2, 3]"});
+  expect_config_error([](json& d) { core_of(d)["turbulators"][0]["chamber"] = 4; }, "cooling.core.turbulators[0].chamber",
+                      {"[2, 3]"});
+  expect_config_error([](json& d) { core_of(d)["turbulators"][1]["chamber"] = 2; }, "cooling.core.turbulators[1].chamber",
+                      {"has turbulators already"});
+}
+
+BOOST_AUTO_TEST_CASE(slot_and_pin_sizes) {
+  expect_config_error([](json& d) { core_of(d)["trailing_edge"]["pitch"] = 1.0; }, "cooling.core.trailing_edge.pitch",
+                      {"slot_width = 1.2"});
+  expect_config_error([](json& d) { core_of(d)["trailing_edge"]["slot_height"] = -0.4; },
+                      "cooling.core.trailing_edge.slot_height", {"(0, 10]"});
+  expect_config_error([](json& d) { core_of(d)["trailing_edge"]["count"] = 10; }, "cooling.core.trailing_edge",
+                      {"exactly one of \"pitch\" and \"count\""});
+  expect_config_error([](json& d) { core_of(d)["trailing_edge"]["land_taper_deg"] = 30; },
+                      "cooling.core.trailing_edge.land_taper_deg", {"closes the slots"});
+  expect_config_error([](json& d) { core_of(d)["trailing_edge"]["type"] = "centreline"; },
+                      "cooling.core.trailing_edge.lip_thickness", {"only for"});
+  expect_config_error([](json& d) { core_of(d)["trailing_edge"]["pin_fins"]["diameter"] = -0.8; },
+                      "cooling.core.trailing_edge.pin_fins.diameter", {"(0, 10]"});
+  expect_config_error([](json& d) { core_of(d)["trailing_edge"]["pin_fins"]["spanwise_pitch"] = 0.5; },
+                      "cooling.core.trailing_edge.pin_fins.spanwise_pitch", {"diameter = 0.8"});
+  expect_config_error([](json& d) { core_of(d)["trailing_edge"]["pin_fins"]["streamwise_pitch"] = 0.8; },
+                      "cooling.core.trailing_edge.pin_fins.streamwise_pitch", {"diameter = 0.8"});
+}
+
+BOOST_AUTO_TEST_CASE(turbulator_taller_than_its_chamber) {
+  expect_geometry_error([](json& d) { core_of(d)["turbulators"][0]["height"] = 2.5; },
+                        "cooling.core.turbulators[0].height", {"taller than its chamber", "at span", "must be <"});
+}
+
+BOOST_AUTO_TEST_CASE(trailing_edge_that_does_not_fit) {
+  // The lip must lie downstream of the last chamber's end (this blade's TE region is ~1 mm long).
+  expect_geometry_error([](json& d) { core_of(d)["trailing_edge"]["cutback_length"] = 3.0; },
+                        "cooling.core.trailing_edge.cutback_length", {"must be <", "at span"});
+  // Slot and lip thicker than the TE region: no suction-side wall left under the cutback.
+  expect_geometry_error([](json& d) { core_of(d)["trailing_edge"]["slot_height"] = 3.0; },
+                        "cooling.core.trailing_edge.slot_height", {"suction-side wall", "at span"});
+  // Too many pin rows reach the last rib's fillet.
+  expect_geometry_error([](json& d) { core_of(d)["trailing_edge"]["pin_fins"]["rows"] = 12; },
+                        "cooling.core.trailing_edge.pin_fins.rows", {"reaches rib 3"});
+}
+
+BOOST_AUTO_TEST_CASE(centreline_slots_are_refused) {
+  // OCCT's boolean warns on every centreline slot (it contains the chamber's crease; measured:
+  // BOPAlgo_AlertFaceBuilderUnusedEdges), so they are refused before any work.
+  expect_geometry_error(
+      [](json& d) {
+        core_of(d)["trailing_edge"] = {{"type", "centreline"}, {"slot_height", 0.4}, {"slot_width", 1.0}, {"count", 4}};
+      },
+      "cooling.core.trailing_edge.type", {"not supported yet", "crease"});
+}
