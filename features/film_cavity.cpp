@@ -1,5 +1,12 @@
 #include "features/film_cavity.hpp"
 
+#include <BRepBndLib.hxx>
+#include <BRepBuilderAPI_MakeVertex.hxx>
+#include <BRepClass3d_SolidClassifier.hxx>
+#include <BRepExtrema_DistShapeShape.hxx>
+#include <Bnd_Box.hxx>
+#include <gp_Pnt.hxx>
+
 #include <algorithm>
 #include <cmath>
 
@@ -82,7 +89,46 @@ brep::EndTrim end_trim(const blade::BladeModel& model, SpanEnd end, const EndWal
   return EndWall(model, end, (wall.open ? 0.0 : wall.thickness) + extra).trim();
 }
 
+// Signed distance to a tool solid (a turbulator, a pin fin, a slot): exact (BRepExtrema, sign by the
+// solid classifier) within `near` mm of the tool's box, the distance to the box beyond (a lower bound
+// > 0, all a hole check needs there), so the many far pairs cost a box test each.
+class ToolDistance {
+ public:
+  explicit ToolDistance(const TopoDS_Shape& solid, double near = 2.0) : solid_(solid), near_(near) {
+    Bnd_Box box;
+    BRepBndLib::Add(solid, box);
+    box.Get(lo_.x(), lo_.y(), lo_.z(), hi_.x(), hi_.y(), hi_.z());
+  }
+  double operator()(const Vec3& p) const {
+    const Vec3 outside = (lo_ - p).cwiseMax(p - hi_).cwiseMax(0.0);
+    const double d_box = outside.norm();
+    if (d_box > near_) return d_box;
+    const gp_Pnt q(p.x(), p.y(), p.z());
+    BRepClass3d_SolidClassifier inside(solid_, q, 1e-7);
+    if (inside.State() == TopAbs_IN) return -1e-3;  // inside: any negative value (the check only asks <= 0)
+    BRepExtrema_DistShapeShape d(BRepBuilderAPI_MakeVertex(q).Vertex(), solid_);
+    return d.IsDone() ? d.Value() : d_box;
+  }
+
+ private:
+  TopoDS_Shape solid_;
+  double near_;
+  Vec3 lo_, hi_;
+};
+
 }  // namespace
+
+void add_wall_feature_obstacles(HoleTarget& target, const WallFeatureBuild& walls) {
+  const auto add = [&](const std::vector<FeatureTool>& tools) {
+    for (const FeatureTool& t : tools) {
+      auto d = std::make_shared<ToolDistance>(t.shape.shape);
+      target.obstacles.push_back({t.feature, [d](const Vec3& p) { return (*d)(p); }, true, ""});
+    }
+  };
+  add(walls.turbulators.tools);
+  add(walls.trailing_edge.pin_tools);
+  add(walls.trailing_edge.slot_tools);
+}
 
 FilmCavity film_cavity_of_core(const blade::BladeModel& model, const CoreDefinition& def, const CoreBuild& core) {
   FilmCavity cav;

@@ -33,9 +33,9 @@ features::FilmCoolingResult apply_film(const config::CoolingConfig& cooling, con
   if (!cooled.core || !cooling.passages.core)
     throw config::ConfigError("cooling: film rows, a showerhead and inserts need \"core\": the chambers they feed from or sit in");
   try {
-    return features::build_film_cooling(model, cooled.blade,
-                                        features::film_cavity_of_core(model, *cooling.passages.core, *cooled.core),
-                                        cooling.film, progress);
+    features::FilmCavity cavity = features::film_cavity_of_core(model, *cooling.passages.core, *cooled.core);
+    features::add_wall_feature_obstacles(cavity.target, cooled.wall_features);
+    return features::build_film_cooling(model, cooled.blade, std::move(cavity), cooling.film, progress);
   } catch (const features::FilmInputError& e) {
     throw config::film_error(e);
   }

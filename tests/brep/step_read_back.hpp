@@ -11,6 +11,7 @@
 #include <XCAFDoc_ShapeTool.hxx>
 
 #include <filesystem>
+#include <map>
 #include <set>
 #include <string>
 #include <vector>
@@ -21,6 +22,8 @@ struct StepReadBack {
   bool ok = false;                         ///< read and transferred
   std::vector<TopoDS_Shape> free_shapes;   ///< top-level shapes
   std::multiset<std::string> names;        ///< names of the free shapes' sub-shape labels
+  std::multiset<std::string> face_names;   ///< the names on face labels
+  std::map<std::string, TopoDS_Shape> named_solids;  ///< solid labels by name (bodies)
 };
 
 inline StepReadBack read_step_back(const std::filesystem::path& file) {
@@ -43,7 +46,12 @@ inline StepReadBack read_step_back(const std::filesystem::path& file) {
       XCAFDoc_ShapeTool::GetSubShapes(l, subs);
       for (const TDF_Label& s : subs) {
         Handle(TDataStd_Name) n;
-        if (s.FindAttribute(TDataStd_Name::GetID(), n)) r.names.insert(TCollection_AsciiString(n->Get()).ToCString());
+        if (!s.FindAttribute(TDataStd_Name::GetID(), n)) continue;
+        const std::string name = TCollection_AsciiString(n->Get()).ToCString();
+        r.names.insert(name);
+        const TopoDS_Shape shape = XCAFDoc_ShapeTool::GetShape(s);
+        if (shape.ShapeType() == TopAbs_FACE) r.face_names.insert(name);
+        if (shape.ShapeType() == TopAbs_SOLID) r.named_solids[name] = shape;
       }
     }
   }

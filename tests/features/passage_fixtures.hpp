@@ -11,18 +11,10 @@
 #include <BRep_Tool.hxx>
 #include <GProp_GProps.hxx>
 #include <GeomLProp_SLProps.hxx>
-#include <Interface_Static.hxx>
-#include <STEPCAFControl_Controller.hxx>
-#include <STEPCAFControl_Reader.hxx>
-#include <TDataStd_Name.hxx>
-#include <TDocStd_Document.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
 #include <TopoDS.hxx>
-#include <XCAFApp_Application.hxx>
-#include <XCAFDoc_DocumentTool.hxx>
-#include <XCAFDoc_ShapeTool.hxx>
 #include <TopoDS_Compound.hxx>
 
 #include <cmath>
@@ -37,6 +29,7 @@
 
 #include "brep/temp_files.hpp"
 #include "export/step_writer.hpp"
+#include "brep/step_read_back.hpp"
 #include "features/passages.hpp"
 #include "src/brep/blade_solid.hpp"
 #include "src/config/builtin_example.hpp"
@@ -192,47 +185,12 @@ inline double volume(const TopoDS_Shape& s) {
   return p.Mass();
 }
 
-/// A STEP file read back with OCCT (XCAF): its one free shape and the names of its sub-shapes (faces).
-struct StepReadBack {
-  bool ok = false;
-  int free_shapes = 0;
-  TopoDS_Shape shape;
-  std::multiset<std::string> names;
-};
-inline StepReadBack read_step_names(const std::filesystem::path& file) {
-  StepReadBack out;
-  STEPCAFControl_Controller::Init();
-  Interface_Static::SetIVal("read.stepcaf.subshapes.name", 1);
-  Handle(TDocStd_Application) app = XCAFApp_Application::GetApplication();
-  Handle(TDocStd_Document) doc;
-  app->NewDocument("MDTV-XCAF", doc);
-  STEPCAFControl_Reader reader;
-  reader.SetNameMode(true);
-  if (reader.ReadFile(file.string().c_str()) != IFSelect_RetDone || !reader.Transfer(doc)) return out;
-  const Handle(XCAFDoc_ShapeTool) tool = XCAFDoc_DocumentTool::ShapeTool(doc->Main());
-  TDF_LabelSequence free_shapes;
-  tool->GetFreeShapes(free_shapes);
-  out.free_shapes = free_shapes.Length();
-  if (out.free_shapes >= 1) {
-    out.shape = tool->GetShape(free_shapes.Value(1));
-    TDF_LabelSequence subs;
-    XCAFDoc_ShapeTool::GetSubShapes(free_shapes.Value(1), subs);
-    for (const TDF_Label& s : subs) {
-      Handle(TDataStd_Name) n;
-      if (s.FindAttribute(TDataStd_Name::GetID(), n)) out.names.insert(TCollection_AsciiString(n->Get()).ToCString());
-    }
-  }
-  app->Close(doc);
-  out.ok = true;
-  return out;
-}
-
 /// Writes `s` as STEP (AP214, its face names) into a temporary directory and reads it back.
 inline StepReadBack step_round_trip(const brep::NamedShape& s, const std::string& tag) {
   TempDir dir(tag);
   const auto file = dir.path / "blade.step";
   io::write_step(file, s.shape, s.faces, {io::StepSchema::AP214, "hpt_rotor"});
-  return read_step_names(file);
+  return read_step_back(file);
 }
 
 /// Allowed deviation of a measured thickness: 1 % or 0.01 mm, whichever is larger (issue 9).

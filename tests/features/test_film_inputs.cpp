@@ -8,6 +8,9 @@
 
 #include <string>
 
+#include <BRepPrimAPI_MakeBox.hxx>
+
+#include "features/film_cavity.hpp"
 #include "features/film_holes.hpp"
 #include "features/film_rows.hpp"
 #include "src/blade/blade_coordinates.hpp"
@@ -168,6 +171,30 @@ BOOST_AUTO_TEST_CASE(hole_too_close_to_a_rib) {
   BOOST_TEST(field == "film_rows[0].chord", what);
   BOOST_TEST(has(what, "rib_1"), what);
   const auto [f2, w2] = attempt(rows({test::film_row(0.30)}), t);
+  BOOST_TEST(f2 == "", w2);
+}
+
+// Turbulators, pin fins and slots of the passages are obstacles too (add_wall_feature_obstacles, exact
+// distance to the tool solid near it): a 4 mm block on the suction wall under the row at chord 0.35
+// stops it naming the row's position field and the feature; the same block under the pressure side does
+// not touch the row.
+BOOST_AUTO_TEST_CASE(hole_onto_a_turbulator) {
+  const blade::BladeCoordinates bc(vane().model);
+  const auto with_block_at = [&](double chord) {
+    const Eigen::Vector3d c = bc.frame(0.5, chord).point;
+    WallFeatureBuild walls;
+    FeatureTool block;
+    block.feature = "turbulator_1_001";
+    block.shape.shape = BRepPrimAPI_MakeBox(gp_Pnt(c.x() - 2, c.y() - 2, c.z() - 2), 4, 4, 4).Shape();
+    walls.turbulators.tools.push_back(block);
+    HoleTarget t = vane().target;
+    add_wall_feature_obstacles(t, walls);
+    return attempt(rows({test::film_row(0.35)}), t);
+  };
+  const auto [field, what] = with_block_at(0.33);
+  BOOST_TEST(field == "film_rows[0].chord", what);
+  BOOST_TEST(has(what, "turbulator_1_001"), what);
+  const auto [f2, w2] = with_block_at(-0.35);
   BOOST_TEST(f2 == "", w2);
 }
 

@@ -14,18 +14,10 @@
 #include <BRepExtrema_DistShapeShape.hxx>
 #include <BRep_Builder.hxx>
 #include <IFSelect_ReturnStatus.hxx>
-#include <Interface_Static.hxx>
-#include <STEPCAFControl_Controller.hxx>
-#include <STEPCAFControl_Reader.hxx>
 #include <TCollection_AsciiString.hxx>
 #include <TDF_LabelSequence.hxx>
-#include <TDataStd_Name.hxx>
-#include <TDocStd_Document.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS_Compound.hxx>
-#include <XCAFApp_Application.hxx>
-#include <XCAFDoc_DocumentTool.hxx>
-#include <XCAFDoc_ShapeTool.hxx>
 
 #include <functional>
 #include <map>
@@ -33,6 +25,7 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
+#include "brep/step_read_back.hpp"
 #include "brep/temp_files.hpp"
 #include "src/brep/verify.hpp"
 #include "src/config/builtin_example.hpp"
@@ -221,33 +214,10 @@ BOOST_AUTO_TEST_CASE(step_read_back_with_bodies_and_hole_names) {
   c.output.formats = {"step"};
   test::TempDir dir("film_step");
   pipeline::write_outputs(c, r, dir.path / "out");
-  STEPCAFControl_Controller::Init();
-  Interface_Static::SetIVal("read.stepcaf.subshapes.name", 1);
-  Handle(TDocStd_Application) app = XCAFApp_Application::GetApplication();
-  Handle(TDocStd_Document) doc;
-  app->NewDocument("MDTV-XCAF", doc);
-  STEPCAFControl_Reader reader;
-  reader.SetNameMode(true);
-  BOOST_TEST_REQUIRE(reader.ReadFile((dir.path / "out" / "blade.step").string().c_str()) == IFSelect_RetDone);
-  BOOST_TEST_REQUIRE(reader.Transfer(doc));
-  const Handle(XCAFDoc_ShapeTool) tool = XCAFDoc_DocumentTool::ShapeTool(doc->Main());
-  TDF_LabelSequence free_shapes;
-  tool->GetFreeShapes(free_shapes);
-  std::multiset<std::string> faces;
-  std::map<std::string, TopoDS_Shape> solids;
-  for (const TDF_Label& l : free_shapes) {
-    TDF_LabelSequence subs;
-    XCAFDoc_ShapeTool::GetSubShapes(l, subs);
-    for (const TDF_Label& s : subs) {
-      Handle(TDataStd_Name) n;
-      if (!s.FindAttribute(TDataStd_Name::GetID(), n)) continue;
-      const std::string name = TCollection_AsciiString(n->Get()).ToCString();
-      const TopoDS_Shape shape = XCAFDoc_ShapeTool::GetShape(s);
-      if (shape.ShapeType() == TopAbs_FACE) faces.insert(name);
-      if (shape.ShapeType() == TopAbs_SOLID) solids[name] = shape;
-    }
-  }
-  app->Close(doc);
+  const test::StepReadBack back = test::read_step_back(dir.path / "out" / "blade.step");
+  BOOST_TEST_REQUIRE(back.ok);
+  const std::multiset<std::string>& faces = back.face_names;
+  const std::map<std::string, TopoDS_Shape>& solids = back.named_solids;
   BOOST_TEST_REQUIRE(solids.size() == 2u);
   for (const char* body : {"blade", "insert_1"}) {
     BOOST_TEST_REQUIRE(solids.count(body) == 1u, body);

@@ -234,8 +234,8 @@ BOOST_AUTO_TEST_CASE(step_round_trip_keeps_solid_and_names) {
   const auto& r = rotor().cooled;
   const test::StepReadBack rb = test::step_round_trip(r.blade, "passages_step");
   BOOST_TEST_REQUIRE(rb.ok);
-  BOOST_TEST_REQUIRE(rb.free_shapes == 1);
-  const TopoDS_Shape back = rb.shape;
+  BOOST_TEST_REQUIRE(rb.free_shapes.size() == 1u);
+  const TopoDS_Shape back = rb.free_shapes.front();
   std::multiset<std::string> ours;
   for (const auto& f : r.blade.faces) ours.insert(f.name);
   BOOST_TEST(rb.names == ours);
