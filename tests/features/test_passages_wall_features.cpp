@@ -22,13 +22,16 @@ using namespace cg;
 
 namespace {
 
-// The built-in example with fewer turbulators, slots and pins (larger pitches; the same kinds: inline
-// 90 deg and staggered 60 deg turbulators, a tapered cutback, two staggered pin rows), so the test stays
-// under a minute; bench_cooled_build builds the full example.
+// The built-in example with fewer turbulators, slots and pins (larger pitches, a tapered cutback, two
+// staggered pin rows), so the test stays under a minute (bench_cooled_build builds the full example).
+// The example's turbulators sit on the pressure walls only (its film rows use the suction walls of
+// those passes); here both walls carry them: inline 90 deg in chamber 2, staggered 60 deg in chamber 3.
 const test::CooledBlade& rotor() {
   return test::cooled_builtin_variant("lighter wall features", [](nlohmann::json& d) {
     auto& c = d["cooling"]["core"];
-    for (auto& t : c["turbulators"]) t["pitch"] = 12.0;
+    for (auto& t : c["turbulators"]) t["pitch"] = 12.0, t["walls"] = "both";
+    c["turbulators"][0]["arrangement"] = "inline";
+    c["turbulators"][1]["arrangement"] = "staggered";
     c["trailing_edge"]["pitch"] = 6.0;
     c["trailing_edge"]["pin_fins"]["spanwise_pitch"] = 6.0;
   });

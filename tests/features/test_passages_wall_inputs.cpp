@@ -21,7 +21,13 @@ using nlohmann::json;
 
 namespace {
 
-json example() { return json::parse(config::builtin_example_json()); }
+// The built-in example with turbulators on both walls of each pass (the example has them on the
+// pressure walls only), as the input checks were written for.
+json example() {
+  json d = json::parse(config::builtin_example_json());
+  for (auto& t : d["cooling"]["core"]["turbulators"]) t["walls"] = "both";
+  return d;
+}
 json& core_of(json& d) { return d["cooling"]["core"]; }
 
 const blade::BladeModel& model() {
