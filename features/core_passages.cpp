@@ -333,11 +333,16 @@ CoreBuild build_core_tools(const blade::BladeModel& model, const CoreDefinition&
     split.SetTools(tools);
     split.SetRunParallel(true);
     split.Build();
+    // Seen when a rib meets the inner wall where the core is thinner than the rib with its fillets, or
+    // at a very acute angle (e.g. a rib near the trailing-edge crease): name the input that moves it.
+    const std::string hint =
+        " (cooling.core.ribs: a rib probably meets the inner wall where the core is thinner than the rib "
+        "with its fillets, or at a very acute angle; move it away from the trailing edge or make it thinner)";
     if (!split.IsDone() || split.HasErrors())
-      throw FeatureFailure("splitting the core by the ribs failed: " + alerts(*split.GetReport(), Message_Fail));
+      throw FeatureFailure("splitting the core by the ribs failed: " + alerts(*split.GetReport(), Message_Fail) + hint);
     if (split.HasWarnings())
       throw FeatureFailure("splitting the core by the ribs raised BOPAlgo warnings: " +
-                           alerts(*split.GetReport(), Message_Warning));
+                           alerts(*split.GetReport(), Message_Warning) + hint);
     names = names.carried(split, split.Shape());
     cells = solids_of(split.Shape());
   }

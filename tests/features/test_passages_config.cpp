@@ -100,6 +100,26 @@ BOOST_AUTO_TEST_CASE(ribs_outside_overlapping_or_out_of_order) {
                "cooling.core.ribs[1].pressure_chord", {"from the LE to the TE"});
 }
 
+// A rib inside the core but where it is too thin for the rib and its fillets (suction chord 0.94, next
+// to the trailing-edge crease): OCCT's core split warns, and the failure names the ribs to move.
+BOOST_AUTO_TEST_CASE(rib_where_the_core_is_too_thin) {
+  json doc = example();
+  doc["cooling"].erase("film_rows");
+  doc["cooling"].erase("showerhead");
+  core(doc).erase("turbulators");
+  core(doc).erase("trailing_edge");
+  core(doc)["ribs"][2]["suction_chord"] = 0.94;
+  const config::Config c = config::parse_config(doc, COOLINGGEN_SOURCE_DIR "/data/examples", "t");
+  try {
+    pipeline::apply_cooling(c.cooling, built(doc).model, built(doc).blade);
+    BOOST_ERROR("no error for a rib at suction chord 0.94");
+  } catch (const features::FeatureFailure& e) {
+    const std::string m = e.what();
+    BOOST_TEST(m.find("cooling.core.ribs") != std::string::npos, m);
+    BOOST_TEST(m.find("splitting the core by the ribs") != std::string::npos, m);
+  }
+}
+
 BOOST_AUTO_TEST_CASE(wall_too_thick_for_the_blade) {
   // The tip LE radius is 1.3 mm: a 1.6 mm wall folds there.
   expect_error(example(), [](json& d) { core(d)["wall_thickness"] = 1.6; },
