@@ -24,6 +24,7 @@
 
 #include "adaptors/occt_convert.hpp"
 #include "src/core/error.hpp"
+#include "src/algo/segment_distance.hpp"
 
 namespace cg::features::drill_detail {
 namespace {
@@ -284,16 +285,6 @@ void plan_hole(Workspace& ws, HolePlan& h, const DrillOptions& o) {
   if (!std::isfinite(h.quadrature)) h.reason = "the volume quadrature could not follow the walls";
 }
 
-// Smallest distance between segments [p0, p0 + d0 l0] and [p1, p1 + d1 l1] (unit d).
-double segment_distance(const Eigen::Vector3d& p0, const Eigen::Vector3d& d0, double l0, const Eigen::Vector3d& p1,
-                        const Eigen::Vector3d& d1, double l1) {
-  const Eigen::Vector3d w = p0 - p1;
-  const double b = d0.dot(d1), dd = d0.dot(w), e = d1.dot(w), den = 1 - b * b;
-  double s = den > 1e-12 ? std::clamp((b * e - dd) / den, 0.0, l0) : 0.0;
-  double t = std::clamp(e + b * s, 0.0, l1);
-  s = std::clamp(b * t - dd, 0.0, l0);
-  return (p0 + s * d0 - p1 - t * d1).norm();
-}
 
 }  // namespace
 
@@ -343,7 +334,7 @@ void plan_holes(const Part& part, std::vector<HolePlan>& plans, const std::vecto
       HolePlan& q = plans[static_cast<std::size_t>(order[b])];
       if (q.box.CornerMin().X() > p.box.CornerMax().X()) break;
       if (p.box.IsOut(q.box)) continue;
-      const double dist = segment_distance(p.cyl.o, p.cyl.d, p.cyl.length, q.cyl.o, q.cyl.d, q.cyl.length);
+      const double dist = segment_distance(p.cyl.o, p.cyl.o + p.cyl.length * p.cyl.d, q.cyl.o, q.cyl.o + q.cyl.length * q.cyl.d);
       if (dist < p.cyl.radius + q.cyl.radius + o.margin) {
         near[static_cast<std::size_t>(order[a])] = holes[static_cast<std::size_t>(order[b])].name;
         near[static_cast<std::size_t>(order[b])] = holes[static_cast<std::size_t>(order[a])].name;
