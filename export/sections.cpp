@@ -20,14 +20,12 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
-#include <atomic>
-#include <exception>
-#include <thread>
 #include <cmath>
 #include <map>
 
 #include "adaptors/occt_convert.hpp"
 #include "export/atomic_file.hpp"
+#include "src/core/parallel.hpp"
 
 namespace cg::io {
 namespace {
@@ -347,25 +345,11 @@ std::vector<SectionCut> cut_sections(const brep::Part& part, const std::vector<S
   std::vector<TopoDS_Face> tools;
   for (const SectionSurface& s : surfaces) tools.push_back(cutting_face(s, 10 * size + 1));
   std::vector<std::vector<SectionCurve>> curves(tasks);
-  std::vector<std::exception_ptr> errors(tasks);
-  std::atomic<std::size_t> next{0};
-  const auto work = [&] {
-    for (std::size_t k; (k = next++) < tasks;) {
-      const std::size_t si = k / part.size(), b = k % part.size();
-      try {
-        curves[k] = section_curves(bodies[b], static_cast<int>(b), part[b].name, surfaces[si], tools[si], size, deflection);
-      } catch (...) {
-        errors[k] = std::current_exception();
-      }
-    }
-  };
-  const unsigned threads = std::max(1u, std::min<unsigned>(std::thread::hardware_concurrency(), static_cast<unsigned>(tasks)));
-  std::vector<std::thread> pool;
-  for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work);
-  work();
-  for (std::thread& t : pool) t.join();
-  for (const std::exception_ptr& e : errors)
-    if (e) std::rethrow_exception(e);
+  for_each_index(static_cast<int>(tasks), true, [&](int k, int) {
+    const std::size_t si = static_cast<std::size_t>(k) / part.size(), b = static_cast<std::size_t>(k) % part.size();
+    curves[static_cast<std::size_t>(k)] =
+        section_curves(bodies[b], static_cast<int>(b), part[b].name, surfaces[si], tools[si], size, deflection);
+  });
 
   std::vector<SectionCut> cuts;
   for (std::size_t si = 0; si < surfaces.size(); ++si) {

@@ -17,11 +17,10 @@
 #include <gp_Pnt2d.hxx>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <exception>
-#include <thread>
 #include <vector>
+
+#include "src/core/parallel.hpp"
 
 namespace cg::brep {
 namespace {
@@ -122,45 +121,30 @@ SolidIntegrals integrate_solid(const TopoDS_Shape& shape, double eps, bool paral
   for (TopExp_Explorer f(shape, TopAbs_FACE); f.More(); f.Next()) add(TopoDS::Face(f.Current()), origin, false);
   r.pieces = static_cast<int>(items.size());
 
-  // Largest first, taken by the next free thread: the walls with many holes do not end up last.
+  // Largest first, each taken by the next free thread: the walls with many holes do not end up last.
   std::vector<std::size_t> order(items.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return items[a].cost > items[b].cost; });
-  std::atomic<std::size_t> next{0};
-  std::exception_ptr failure;
-  std::atomic<bool> failed{false};
-  const auto work = [&] {
+  for_each_index(static_cast<int>(order.size()), parallel, [&](int k, int) {
+    Item& it = items[order[static_cast<std::size_t>(k)]];
     BRepGProp_Face bf;
     BRepGProp_Domain bd;
-    for (std::size_t k; !failed && (k = next++) < order.size();) {
-      Item& it = items[order[k]];
-      try {
-        bf.Load(it.face);
-        bd.Init(it.face);
-        if (it.volume) {
-          BRepGProp_Vinert g;
-          g.SetLocation(it.origin);
-          g.Perform(bf, bd, eps);
-          it.value = g.Mass();
-          it.error = g.GetEpsilon();
-        } else {
-          BRepGProp_Sinert g;
-          g.SetLocation(it.origin);
-          g.Perform(bf, bd, eps);
-          it.value = g.Mass();
-          it.error = g.GetEpsilon();
-        }
-      } catch (...) {
-        if (!failed.exchange(true)) failure = std::current_exception();
-      }
+    bf.Load(it.face);
+    bd.Init(it.face);
+    if (it.volume) {
+      BRepGProp_Vinert g;
+      g.SetLocation(it.origin);
+      g.Perform(bf, bd, eps);
+      it.value = g.Mass();
+      it.error = g.GetEpsilon();
+    } else {
+      BRepGProp_Sinert g;
+      g.SetLocation(it.origin);
+      g.Perform(bf, bd, eps);
+      it.value = g.Mass();
+      it.error = g.GetEpsilon();
     }
-  };
-  const unsigned threads = parallel ? std::max(1u, std::min(std::thread::hardware_concurrency(), 8u)) : 1u;
-  std::vector<std::thread> pool;
-  for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work);
-  work();
-  for (std::thread& t : pool) t.join();
-  if (failure) std::rethrow_exception(failure);
+  });
   // Summed in the fixed order of the faces: the same result however the threads ran.
   for (const Item& it : items) {
     if (it.volume) {
