@@ -59,7 +59,16 @@ TeFrame te_frame(const blade::BladeCoordinates& coords, const CoreDefinition& de
     f.o = a.point;
     f.x = a.chord_tangent;  // LE -> TE on the suction side
   }
-  const Vec3 t = coords.frame(s, 1.0).span_tangent;
+  // z: the span direction; for a centreline slot the crease's own tangent, so the crease lies on the
+  // slot's mid-plane y = 0 across the slot's width (up to its curvature) and the kink it puts in the
+  // removed-volume integrand stays on one quadrature break.
+  Vec3 t = coords.frame(s, 1.0).span_tangent;
+  if (te.type == TrailingEdgeType::Centreline) {
+    const double ds = 1e-4;
+    const Vec3 t_crease = blade::inner_wall_crease(coords, def.wall_thickness, std::min(s + ds, 1.0)).crease -
+                          blade::inner_wall_crease(coords, def.wall_thickness, std::max(s - ds, 0.0)).crease;
+    t = t_crease.dot(t) > 0 ? t_crease : Vec3(-t_crease);
+  }
   f.z = (t - t.dot(f.x) * f.x).normalized();
   f.y = f.z.cross(f.x);
   if ((coords.frame(s, cr.pressure_chord).point - f.o).dot(f.y) < 0) {
@@ -212,14 +221,9 @@ TrailingEdgeBuild build_trailing_edge(const blade::BladeModel& model, const Core
   if (!def.trailing_edge) return out;
   const TrailingEdgeDefinition& te = *def.trailing_edge;
   const bool cutback = te.type == TrailingEdgeType::PressureSideCutback;
-  // A centreline slot contains the chamber's crease (the inner wall's C0 edge at the TE end): OCCT's
-  // boolean warned (BOPAlgo_AlertFaceBuilderUnusedEdges) on every such slot of the example, with the
-  // wall's seam at the TE or moved to chord 0.9, and passed once the slot was moved 0.25 mm off the
-  // crease. The verified path would refuse every slot, so refuse the type up front.
-  if (!cutback)
-    throw PassageInputError(field("type"), "centreline slots are not supported yet: a slot along the centreline "
-                                           "contains the chamber's crease, where OCCT's boolean fails; use "
-                                           "\"pressure_side_cutback\"");
+  // A centreline slot cuts through the chamber's crease, a false seam of the part (features/false_seams.hpp):
+  // the slot step repairs it first.
+  out.through_crease = !cutback;
   const blade::BladeCoordinates coords(model);
   const SpanLine line = crease_line(model, coords, def, core, te.span_margin);
 
@@ -281,10 +285,16 @@ TrailingEdgeBuild build_trailing_edge(const blade::BladeModel& model, const Core
     } else {
       info.x_lip = f.te_x;
       info.floor_y = -0.5 * te.slot_height;
+      // At least 0.1 mm of wall on both sides of the slot at the crease (where the TE region is thickest
+      // along the slot; downstream the slot leaves the blade through the TE's rounding).
       const Across c = across(lines, f, f.crease_x, 0.0, true);
-      if (!c.ok || c.lo > info.floor_y - 0.1 || c.hi < info.floor_y + te.slot_height + 0.1)
+      if (!c.ok) throw FeatureFailure(name + ": cannot find the blade's walls across the crease");
+      const double h_max = 2 * (std::min(-c.lo, c.hi) - 0.1);
+      if (!(te.slot_height <= h_max))
         throw PassageInputError(field("slot_height"), name + ": the slot leaves less than 0.1 mm of wall on a side at the "
-                                                             "chamber's end at span " + fmt(s) + "; reduce slot_height");
+                                                             "chamber's end at span " + fmt(s) + " (the blade is " +
+                                                             fmt(c.hi - c.lo) + " mm thick there); must be <= " +
+                                                             fmt(std::max(h_max, 0.0)) + " mm here, got " + fmt(te.slot_height));
     }
     const double y0 = info.floor_y, y1 = y0 + te.slot_height, h = te.slot_height;
     const Inlet in = inlet_station(lines, f, f.crease_x, y0, h, w, cutback);

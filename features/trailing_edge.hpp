@@ -57,6 +57,9 @@ struct TrailingEdgeBuild {
   std::vector<FeatureTool> slot_tools, pin_tools;
   std::vector<SlotInfo> slots;
   std::vector<PinInfo> pins;
+  /// Centreline slots cut through the inner wall's crease: the part's false seam there must be repaired
+  /// before the slot step (features/false_seams.hpp).
+  bool through_crease = false;
 };
 
 /// Checks without geometry: sizes, slot pitch > slot width, count, taper (PassageInputError with
