@@ -305,16 +305,21 @@ TrailingEdgeBuild build_trailing_edge(const blade::BladeModel& model, const Core
     } else {
       info.x_lip = f.te_x;
       info.floor_y = -0.5 * te.slot_height;
-      // At least 0.1 mm of wall on both sides of the slot at the crease (where the TE region is thickest
-      // along the slot; downstream the slot leaves the blade through the TE's rounding).
-      const Across c = across(lines, f, f.crease_x, 0.0, true);
-      if (!c.ok) throw FeatureFailure(name + ": cannot find the blade's walls across the crease");
-      const double h_max = 2 * (std::min(-c.lo, c.hi) - 0.1);
+      // At least 0.1 mm of wall on both sides of the slot over the first half of the way from the crease
+      // to the TE (the blade's flanks; the second half holds the TE's rounding, through which the slot
+      // leaves the blade).
+      double h_max = HUGE_VAL;
+      for (int k = 0; k <= 4; ++k) {
+        const double x = f.crease_x + 0.5 * (f.te_x - f.crease_x) * k / 4.0;
+        const Across c = across(lines, f, x, 0.0, true);
+        if (!c.ok) throw FeatureFailure(name + ": cannot find the blade's walls across the slot");
+        h_max = std::min(h_max, 2 * (std::min(-c.lo, c.hi) - 0.1));
+      }
       if (!(te.slot_height <= h_max))
-        throw PassageInputError(field("slot_height"), name + ": the slot leaves less than 0.1 mm of wall on a side at the "
-                                                             "chamber's end at span " + fmt(s) + " (the blade is " +
-                                                             fmt(c.hi - c.lo) + " mm thick there); must be <= " +
-                                                             fmt(std::max(h_max, 0.0)) + " mm here, got " + fmt(te.slot_height));
+        throw PassageInputError(field("slot_height"), name + ": the slot leaves less than 0.1 mm of wall on a side between "
+                                                             "the chamber's end and the TE at span " + fmt(s) +
+                                                             "; must be <= " + fmt(std::max(h_max, 0.0)) +
+                                                             " mm here, got " + fmt(te.slot_height));
     }
     const double y0 = info.floor_y, y1 = y0 + te.slot_height, h = te.slot_height;
     // Centreline: each land side turns by land_taper_deg from the crease (x = 0, slot width w) on, so
