@@ -60,6 +60,8 @@ bool timed_build(const config::Config& c, const char* what) {
   for (const auto& s : w.timings) std::printf("  %-12s %7.3f s\n", s.stage.c_str(), s.seconds);
   if (r.cooling)
     for (const auto& [stage, s] : r.cooling->seconds) std::printf("    cooling/%-24s %7.3f s\n", stage.c_str(), s);
+  if (r.film)
+    for (const auto& [stage, s] : r.film->seconds) std::printf("    film/%-27s %7.3f s\n", stage.c_str(), s);
   std::error_code ec;
   fs::remove_all(dir, ec);
   return r.valid() && (!r.cooling || r.cooling->passed());

@@ -1,6 +1,17 @@
 #include "export/iges_writer.hpp"
 
+#include <BRepBuilderAPI_Copy.hxx>
 #include <BRepBuilderAPI_NurbsConvert.hxx>
+#include <BRepTools_NurbsConvertModification.hxx>
+#include <BRep_Tool.hxx>
+#include <Geom2dConvert.hxx>
+#include <Geom2d_BSplineCurve.hxx>
+#include <Geom2d_TrimmedCurve.hxx>
+#include <Geom_BSplineCurve.hxx>
+#include <Geom_BSplineSurface.hxx>
+#include <Geom_BezierCurve.hxx>
+#include <Geom_Line.hxx>
+#include <Geom_TrimmedCurve.hxx>
 #include <IGESCAFControl_Writer.hxx>
 #include <TopoDS.hxx>
 #include <IGESControl_Controller.hxx>
@@ -27,14 +38,59 @@ void set_param(const char* name, int value) {
 // OCCT writes analytic surfaces as IGES analytic entities (planes 108, cylinders as surfaces of
 // revolution 120): convert every surface and curve to its exact rational B-spline form first, so the
 // file holds only 144/142/128/126. The face names follow the conversion history.
+// BRepTools_NurbsConvertModification recomputes every pcurve on a face it converts -- B-spline faces
+// included, whose surface it only copies -- by projecting the edge's 3D curve onto the surface
+// (ProjLib_ComputeApproxOnPolarSurface) and then measures the new tolerance; on the cooled blade, with
+// its film-hole loops of up to 512 spans, that was ~70 % of the IGES time. On a B-spline face whose
+// edge keeps its parametrisation (3D curve absent, a B-spline, Bezier or line: converted without
+// reparametrisation) the existing pcurve is still exact: it is kept, in B-spline form. Everything
+// else (analytic surfaces, conic edges whose parameter changes) goes through OCCT's conversion.
+class KeepBSplineFaces : public BRepTools_NurbsConvertModification {
+ public:
+  Standard_Boolean NewCurve2d(const TopoDS_Edge& e, const TopoDS_Face& f, const TopoDS_Edge& new_e, const TopoDS_Face& new_f,
+                              Handle(Geom2d_Curve)& c, Standard_Real& tol) override {
+    TopLoc_Location sl, cl;
+    const Handle(Geom_Surface) s = BRep_Tool::Surface(f, sl);
+    double f3 = 0, l3 = 0, f2 = 0, l2 = 0;
+    const Handle(Geom_Curve) c3 = BRep_Tool::Curve(e, cl, f3, l3);
+    const Handle(Geom2d_Curve) c2 = BRep_Tool::CurveOnSurface(e, f, f2, l2);
+    const bool keeps = !BRep_Tool::Degenerated(e) && !c2.IsNull() && s->IsKind(STANDARD_TYPE(Geom_BSplineSurface)) &&
+                       (c3.IsNull() || keeps_parameter(c3));
+    if (!keeps) return BRepTools_NurbsConvertModification::NewCurve2d(e, f, new_e, new_f, c, tol);
+    c = c2->IsKind(STANDARD_TYPE(Geom2d_BSplineCurve)) ? Handle(Geom2d_Curve)::DownCast(c2->Copy())
+                                                         : Geom2dConvert::CurveToBSplineCurve(new Geom2d_TrimmedCurve(c2, f2, l2));
+    tol = BRep_Tool::Tolerance(e);
+    return Standard_True;
+  }
+
+ private:
+  static bool keeps_parameter(Handle(Geom_Curve) c) {
+    while (c->IsKind(STANDARD_TYPE(Geom_TrimmedCurve))) c = Handle(Geom_TrimmedCurve)::DownCast(c)->BasisCurve();
+    return c->IsKind(STANDARD_TYPE(Geom_BSplineCurve)) || c->IsKind(STANDARD_TYPE(Geom_BezierCurve)) ||
+           c->IsKind(STANDARD_TYPE(Geom_Line));
+  }
+};
+
+// BRepBuilderAPI_NurbsConvert (the modifier and its vertex tolerance correction) with the modification above.
+class NurbsConvertKeepingBSplines : public BRepBuilderAPI_NurbsConvert {
+ public:
+  explicit NurbsConvertKeepingBSplines(const TopoDS_Shape& shape) {
+    myModification = new KeepBSplineFaces();
+    Perform(shape);
+  }
+};
+
+// The conversion runs on a copy of the topology (geometry shared): OCCT's modifier updates the vertices
+// and edges it keeps (their parameters on the new curves), and other exporters read the part meanwhile.
 brep::Part nurbs_part(const brep::Part& part) {
   brep::Part out;
   for (const brep::NamedBody& body : part) {
-    BRepBuilderAPI_NurbsConvert convert(body.geometry.shape, /*Copy=*/true);
+    BRepBuilderAPI_Copy copy(body.geometry.shape, /*copyGeom=*/false, /*copyMesh=*/false);
+    NurbsConvertKeepingBSplines convert(copy.Shape());
     if (!convert.IsDone()) throw ExportError("IGES: conversion of body \"" + body.name + "\" to B-splines failed");
     brep::NamedBody b{body.name, {convert.Shape(), {}}};
     for (const brep::NamedFace& f : body.geometry.faces)
-      b.geometry.faces.push_back({TopoDS::Face(convert.ModifiedShape(f.face)), f.name});
+      b.geometry.faces.push_back({TopoDS::Face(convert.ModifiedShape(copy.ModifiedShape(f.face))), f.name});
     out.push_back(std::move(b));
   }
   return out;

@@ -12,18 +12,16 @@
 #include <string>
 #include <vector>
 
+#include "src/core/parallel.hpp"
 #include "features/drill_hole_geometry.hpp"
 #include "features/drill_hole_topology.hpp"
 #include "features/drill_holes.hpp"
 
 namespace cg::features::drill_detail {
 
-/// Worker threads: one per core when parallel, else 1.
-int worker_count(bool parallel);
-
-/// Runs f(i, worker) for i in [0, n) on up to worker_count(parallel) threads (worker < that count);
-/// rethrows the first exception.
-void for_each_index(int n, bool parallel, const std::function<void(int, int)>& f);
+// Parallel work items (src/core/parallel.hpp).
+using ::cg::for_each_index;
+using ::cg::worker_count;
 
 /// A face of the (patched) part.
 struct FaceInfo {

@@ -1,6 +1,7 @@
 #include "src/pipeline/handoff_formats.hpp"
 
 #include <algorithm>
+#include <future>
 #include <mutex>
 
 #include "export/atomic_file.hpp"
@@ -23,45 +24,65 @@ namespace {
 constexpr double kDeg = 3.14159265358979323846 / 180;
 
 // What the formats of one build result share. The cache holds the blade's TShape, so a later result
-// can never reuse its address and be mistaken for this one.
+// can never reuse its address and be mistaken for this one. The triangulation and the sections are
+// made in the background from the start of write_outputs (prepare_shared_outputs): they use all cores
+// while the STEP and IGES writers, which run on one, write theirs.
 struct Shared {
   std::mutex mutex;
   Handle(TopoDS_TShape) owner;
-  bool have_triangles = false, have_sections = false;
-  io::PartTriangles triangles;
-  std::vector<io::SectionCut> sections;
+  std::shared_future<io::PartTriangles> triangles;
+  std::shared_future<std::vector<io::SectionCut>> sections;
   std::vector<std::string> notes;
 };
 
 Shared& shared_for(const BuildResult& r) {
   static Shared s;
   const Handle(TopoDS_TShape)& t = r.part.front().geometry.shape.TShape();
+  std::lock_guard<std::mutex> lock(s.mutex);
   if (s.owner != t) {
+    if (s.triangles.valid()) s.triangles.wait();  // a background job of an earlier result still reads it
+    if (s.sections.valid()) s.sections.wait();
     s.owner = t;
-    s.have_triangles = s.have_sections = false;
     s.triangles = {};
-    s.sections.clear();
+    s.sections = {};
     s.notes.clear();
   }
   return s;
 }
 
-const io::PartTriangles& triangles(const config::Config& c, const BuildResult& r) {
+bool selected(const config::Config& c, std::initializer_list<const char*> names) {
+  for (const char* n : names)
+    if (std::find(c.output.formats.begin(), c.output.formats.end(), n) != c.output.formats.end()) return true;
+  return false;
+}
+
+// Starts the triangulation / the sections in the background when not yet started. They only read the
+// part (each works on a copy of the shapes it meshes or cuts).
+void start_triangles(const config::Config& c, const BuildResult& r) {
   Shared& s = shared_for(r);
-  if (!s.have_triangles) {
-    s.triangles = io::triangulate_part(r.part, {c.output.stl_deflection, c.output.stl_angular_deflection_deg * kDeg});
-    s.have_triangles = true;
-  }
-  return s.triangles;
+  std::lock_guard<std::mutex> lock(s.mutex);
+  if (s.triangles.valid()) return;
+  const io::TriangulationOptions o{c.output.stl_deflection, c.output.stl_angular_deflection_deg * kDeg};
+  s.triangles = std::async(std::launch::async, [&part = r.part, o] { return io::triangulate_part(part, o); }).share();
+}
+
+void start_sections(const config::Config& c, const BuildResult& r) {
+  Shared& s = shared_for(r);
+  std::lock_guard<std::mutex> lock(s.mutex);
+  if (s.sections.valid()) return;
+  s.sections = std::async(std::launch::async, [&r, spans = c.output.section_spans] {
+                 return io::cut_sections(r.part, io::blade_section_surfaces(r.model, spans));
+               }).share();
+}
+
+const io::PartTriangles& triangles(const config::Config& c, const BuildResult& r) {
+  start_triangles(c, r);
+  return shared_for(r).triangles.get();  // rethrows the triangulation's error
 }
 
 const std::vector<io::SectionCut>& sections(const config::Config& c, const BuildResult& r) {
-  Shared& s = shared_for(r);
-  if (!s.have_sections) {
-    s.sections = io::cut_sections(r.part, io::blade_section_surfaces(r.model, c.output.section_spans));
-    s.have_sections = true;
-  }
-  return s.sections;
+  start_sections(c, r);
+  return shared_for(r).sections.get();
 }
 
 std::string product(const config::Config& c) { return c.output.product_name.empty() ? c.name : c.output.product_name; }
@@ -144,10 +165,22 @@ std::vector<OutputFormat> handoff_formats() {
 void add_handoff_report(const config::Config& c, const BuildResult& r, io::ReportContent& report) {
   if (r.part.empty()) return;
   Shared& s = shared_for(r);
-  const bool want = std::find(c.output.formats.begin(), c.output.formats.end(), "sections") != c.output.formats.end() ||
-                    std::find(c.output.formats.begin(), c.output.formats.end(), "report_md") != c.output.formats.end();
-  if (want && r.valid()) report.extra["sections"] = io::sections_json(sections(c, r));
+  if (selected(c, {"sections", "report_md"}) && r.valid()) report.extra["sections"] = io::sections_json(sections(c, r));
   if (!s.notes.empty()) report.extra["notes"] = s.notes;
+}
+
+void prepare_shared_outputs(const config::Config& c, const BuildResult& r) {
+  if (r.part.empty() || !r.valid()) return;
+  if (selected(c, {"stl", "vtk", "preview"})) start_triangles(c, r);
+  if (selected(c, {"sections", "report_md"})) start_sections(c, r);
+}
+
+void finish_shared_outputs(const BuildResult& r) noexcept {
+  if (r.part.empty()) return;
+  Shared& s = shared_for(r);
+  // Errors stay in the futures: the format that needs the result reports them.
+  if (s.triangles.valid()) s.triangles.wait();
+  if (s.sections.valid()) s.sections.wait();
 }
 
 }  // namespace cg::pipeline

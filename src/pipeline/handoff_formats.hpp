@@ -1,7 +1,8 @@
 #pragma once
 // The hand-off output formats after STEP (README, Outputs): iges, brep, stl, vtk, preview, sections,
 // report_md, as entries of output_formats(). They share one triangulation (stl, vtk, preview) and one
-// set of section cuts (sections, report_md, report.json) per build result, made on first use.
+// set of section cuts (sections, report_md, report.json) per build result, made in the background from
+// the start of write_outputs or on first use.
 #include <vector>
 
 #include "export/report.hpp"
@@ -15,5 +16,11 @@ std::vector<OutputFormat> handoff_formats();
 /// Adds the hand-off sections to a report: "sections" (passage area, wetted perimeter and hydraulic
 /// diameter along span, when the sections were cut in this run) and "notes" (outputs skipped and why).
 void add_handoff_report(const config::Config& config, const BuildResult& result, io::ReportContent& report);
+
+/// Starts the shared triangulation and section cuts of the selected formats in the background (both
+/// use all cores; the STEP and IGES writers one): the formats then pick up the finished work.
+void prepare_shared_outputs(const config::Config& config, const BuildResult& result);
+/// Waits for the background work of `result` (before the result may go away).
+void finish_shared_outputs(const BuildResult& result) noexcept;
 
 }  // namespace cg::pipeline

@@ -57,6 +57,13 @@ WrittenOutputs write_outputs(const config::Config& c, const BuildResult& r, cons
   out.directory = dir;
   StageRunner stages(progress, out.timings);
   OutputDirectory od(dir, kReportFile, owned);
+  // The triangulation and the sections start now and overlap the single-threaded STEP and IGES writers;
+  // the guard waits for them however this function ends (they read `r`).
+  prepare_shared_outputs(c, r);
+  struct Finish {
+    const BuildResult& r;
+    ~Finish() { finish_shared_outputs(r); }
+  } finish{r};
   if (r.valid())
     for (const OutputFormat& f : output_formats()) {
       bool selected = false;

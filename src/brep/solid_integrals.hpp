@@ -1,0 +1,31 @@
+#pragma once
+// Volume and area of a solid by BRepGProp's adaptive Gauss integration, face by face on all cores, with
+// faces holding many holes integrated hole by hole.
+//
+// Why hole by hole: BRepGProp integrates a face through its boundary (Green's theorem): at every Gauss
+// point of every boundary edge it integrates the surface's integrand in u from the face's lowest u
+// parameter to the point, across every knot span on the way. A small hole's loop in a large wall thus
+// costs as much as a strip across the whole wall (measured: 3 s each for the volume and the area of a
+// blade wall with 170 film-hole loops, 100 ms for the same wall without them). A closed loop's
+// contribution does not depend on where the strips start (the difference is the loop integral of a
+// function of v alone, zero for a closed loop), so each inner wire that is closed in the face's
+// parameter plane is integrated as a face of its own (same surface, same orientation, only that wire:
+// strips start at the loop), and the rest of the face (its outer wire and any other wires) as another.
+// The sum is the same integral over the same edges and pcurves; each piece meets the requested
+// relative accuracy on its own.
+#include <TopoDS_Shape.hxx>
+
+namespace cg::brep {
+
+struct SolidIntegrals {
+  double volume = 0;        ///< mm^3, faces of the closed shells (BRepGProp::VolumeProperties, OnlyClosed)
+  double volume_error = 0;  ///< largest relative error estimate of a piece (as BRepGProp returns it)
+  double area = 0;          ///< mm^2, every face (BRepGProp::SurfaceProperties)
+  int pieces = 0;           ///< faces integrated (faces plus the inner wires split off)
+};
+
+/// Volume of the closed shells and area of all faces of `shape` at relative accuracy `eps` (per piece).
+/// `parallel`: pieces on all cores. Throws Standard_Failure where BRepGProp does.
+SolidIntegrals integrate_solid(const TopoDS_Shape& shape, double eps, bool parallel = true);
+
+}  // namespace cg::brep
