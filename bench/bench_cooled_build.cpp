@@ -70,6 +70,13 @@ bool timed_build(const config::Config& c, const char* what) {
   return r.valid() && (!r.cooling || r.cooling->passed());
 }
 
+void print_steps(const features::WallFeatureBuild& wb) {
+  for (std::size_t k = 0; k < wb.steps.size(); ++k)
+    std::printf("    %-12s boolean %.3f (intersect %.3f) / measure %.3f / verify %.3f s, %d boolean run(s)\n",
+                wb.step_names[k].c_str(), wb.steps[k].seconds_boolean, wb.steps[k].seconds_intersect,
+                wb.steps[k].seconds_measure, wb.steps[k].seconds_verify, wb.steps[k].boolean_runs);
+}
+
 // Turbulators, pin fins and slots into the blade with its chambers: our three verified BooleanSteps
 // against OCCT's plain multi-tool Fuse (turbulators and pins) then Cut (slots) of the same tools, with the
 // same final checks; the two results' volumes must agree.
@@ -92,11 +99,7 @@ bool wall_features_against_occt(const blade::BladeModel& model, const features::
     std::printf("tools CPU %.3f s\n", cpu_tools);
     std::printf("turbulators + pin fins + slots: tools %.3f s, ours %.3f s, volume %.6f mm^3; expected %.12g / %.12g / "
                 "%.12g mm^3\n", t_tools, t_ours, volume(ours.shape), e[0], e[1], e[2]);
-    for (std::size_t k = 0; k < wb.steps.size(); ++k)
-      std::printf("    %-12s boolean %.3f (intersect %.3f) / expected %.3f / measure %.3f / verify %.3f s, %d run(s)\n",
-                  wb.step_names[k].c_str(), wb.steps[k].seconds_boolean, wb.steps[k].seconds_intersect,
-                  wb.steps[k].seconds_expected, wb.steps[k].seconds_measure, wb.steps[k].seconds_verify,
-                  wb.steps[k].boolean_runs);
+    print_steps(wb);
     return true;
   }
   t0 = std::chrono::steady_clock::now();
@@ -131,16 +134,12 @@ bool wall_features_against_occt(const blade::BladeModel& model, const features::
   const double t_occt = seconds_since(t0);
   const double v_ours = volume(ours.shape), v_occt = done ? volume(occt) : 0;
   const bool agree = done && std::abs(v_ours - v_occt) <= 1e-6 * v_occt;
-  std::printf("turbulators + pin fins + slots (%zu + %zu + %zu tools; tools built in %.3f s): ours (3 verified steps) "
+  std::printf("turbulators + pin fins + slots (%zu + %zu + %zu tools; tools built in %.3f s): ours (3 checked steps, verify_solid once) "
               "%.3f s, OCCT Fuse + Cut + checks %.3f s, ratio %.2fx; volumes %.6f / %.6f mm^3 %s; OCCT result checks %s\n",
               wb.turbulators.tools.size(), wb.trailing_edge.pin_tools.size(), wb.trailing_edge.slot_tools.size(), t_tools,
               t_ours, t_occt, t_occt / t_ours, v_ours, v_occt, agree ? "agree" : "DISAGREE",
               occt_check.all_passed() ? "pass" : occt_check.failed_names().c_str());
-  for (std::size_t k = 0; k < wb.steps.size(); ++k)
-    std::printf("    %-12s boolean %.3f (intersect %.3f) / expected %.3f / measure %.3f / verify %.3f s, %d boolean run(s)\n",
-                wb.step_names[k].c_str(), wb.steps[k].seconds_boolean, wb.steps[k].seconds_intersect,
-                wb.steps[k].seconds_expected, wb.steps[k].seconds_measure, wb.steps[k].seconds_verify,
-                wb.steps[k].boolean_runs);
+  print_steps(wb);
   return agree;
 }
 
