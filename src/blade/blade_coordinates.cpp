@@ -33,8 +33,30 @@ BladeCoordinates::BladeCoordinates(const BladeModel& model) : model_(&model) {
 BladeCoordinates::~BladeCoordinates() = default;
 
 const SpanSection& BladeCoordinates::section(double span) const {
-  if (!cached_ || cached_->span() != span) cached_.emplace(*model_, span);
-  return *cached_;
+  ++clock_;
+  if (last_hit_ < cache_.size() && cache_[last_hit_].span == span) {
+    cache_[last_hit_].last_used = clock_;
+    return *cache_[last_hit_].section;
+  }
+  for (std::size_t i = 0; i < cache_.size(); ++i)
+    if (cache_[i].span == span) {
+      cache_[i].last_used = clock_;
+      last_hit_ = i;
+      return *cache_[i].section;
+    }
+  // Built before the cache changes, so a throwing span (outside the domain) leaves it as it was.
+  auto made = std::make_unique<const SpanSection>(*model_, span);
+  if (cache_.size() < kSectionCacheSize) {
+    cache_.push_back({span, clock_, std::move(made)});
+    last_hit_ = cache_.size() - 1;
+  } else {
+    last_hit_ = static_cast<std::size_t>(
+        std::min_element(cache_.begin(), cache_.end(),
+                         [](const CachedSection& a, const CachedSection& b) { return a.last_used < b.last_used; }) -
+        cache_.begin());
+    cache_[last_hit_] = {span, clock_, std::move(made)};
+  }
+  return *cache_[last_hit_].section;
 }
 
 BladeFrame BladeCoordinates::frame_at(double u, double v) const {

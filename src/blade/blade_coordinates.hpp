@@ -11,8 +11,11 @@
 // The wall's periodic seam is the iso-line u = 0 (seam_u()), at chordwise coordinate seam_chordwise(span)
 // (+1, the middle of the TE, by default).
 #include <Eigen/Core>
+#include <cstddef>
+#include <cstdint>
 #include <memory>
-#include <optional>
+#include <optional>  // (kept for includers)
+#include <vector>
 
 #include "src/blade/blade_surface.hpp"
 #include "src/blade/span_section.hpp"
@@ -45,7 +48,7 @@ struct BladeLocateResult {
   double u = 0, v = 0;  // surface parameters of the foot point
 };
 
-/// One per thread (it caches the section of the last span used and reuses the projector's work
+/// One per thread (it caches the sections of the spans used last and reuses the projector's work
 /// buffers); the model must outlive it.
 class BladeCoordinates {
  public:
@@ -62,8 +65,12 @@ class BladeCoordinates {
   /// point() while depth is below the local half-thickness and radius of curvature (the closest surface
   /// point is then the one the point was built from).
   BladeLocateResult locate(const Eigen::Vector3d& p) const;
-  /// The section at a span (the one definition of chord and LE/TE, span_section.hpp).
+  /// The section at a span (the one definition of chord and LE/TE, span_section.hpp). Sections are
+  /// cached per span (exact match, the kSectionCacheSize spans used last): callers alternate between a
+  /// few spans (a rib between its two walls, a difference quotient across the span), and every section
+  /// costs an arc-length table. The reference stays valid until kSectionCacheSize other spans are used.
   const SpanSection& section(double span) const;
+  static constexpr std::size_t kSectionCacheSize = 48;
 
   /// The seam: surface u = 0, at this chordwise coordinate on the given span.
   static constexpr double seam_u() { return 0.0; }
@@ -76,7 +83,14 @@ class BladeCoordinates {
   const BladeModel* model_;
   double normal_sign_ = 1;  // +1 when S_u x S_v points outward
   std::unique_ptr<SurfaceProjector> projector_;
-  mutable std::optional<SpanSection> cached_;
+  struct CachedSection {
+    double span = 0;
+    std::uint64_t last_used = 0;  // cache clock at the last use (least recently used goes first)
+    std::unique_ptr<const SpanSection> section;  // owned apart, so references survive other insertions
+  };
+  mutable std::vector<CachedSection> cache_;
+  mutable std::size_t last_hit_ = 0;  // index of the entry used last (checked first)
+  mutable std::uint64_t clock_ = 0;
 };
 
 }  // namespace cg::blade

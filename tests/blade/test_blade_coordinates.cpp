@@ -7,11 +7,13 @@
 
 #include <cmath>
 #include <random>
+#include <vector>
 
 #include "blade/blade_fixtures.hpp"
 #include "src/algo/project_point_curve.hpp"
 #include "src/blade/blade_coordinates.hpp"
 #include "src/blade/span_section.hpp"
+#include "src/core/error.hpp"
 
 using namespace cg;
 using namespace cg::blade;
@@ -157,4 +159,39 @@ BOOST_AUTO_TEST_CASE(configured_seam) {
   BOOST_TEST(std::abs(bc.seam_chordwise(0.5) - 0.5) < 1e-3);
   for (double s : {0.0, 1.0}) BOOST_TEST(std::abs(bc.seam_chordwise(s) - 0.5) < 0.05);
   BOOST_TEST((bc.frame(0.5, bc.seam_chordwise(0.5)).point - m.surface.point(0.0, 0.5)).norm() < 1e-9);
+}
+
+// The per-span section cache: frames from one object that alternates between many spans (more than the
+// cache holds, so entries are evicted and rebuilt) are bit-identical to frames from a fresh object per
+// call, and a section reference stays valid while fewer than kSectionCacheSize other spans are used.
+BOOST_AUTO_TEST_CASE(section_cache_gives_the_frames_of_fresh_objects) {
+  const BladeModel m = build_blade(hpt_rotor());
+  const BladeCoordinates cached(m);
+  const int nspans = static_cast<int>(BladeCoordinates::kSectionCacheSize) + 7;
+  std::vector<double> spans;
+  for (int k = 0; k < nspans; ++k) spans.push_back(-0.02 + 1.04 * k / (nspans - 1));
+  std::mt19937 rng(31);
+  std::uniform_int_distribution<int> pick(0, nspans - 1);
+  std::uniform_real_distribution<double> chord(-1.0, 1.0);
+  int mismatches = 0;
+  for (int k = 0; k < 400; ++k) {
+    // Alternate: a pair of nearby spans (the typical difference quotient), then a random one.
+    const double s = k % 3 == 2 ? spans[static_cast<std::size_t>(pick(rng))] : 0.4 + 1e-6 * (k % 2);
+    const double c = chord(rng);
+    const BladeFrame a = cached.frame(s, c);
+    const BladeFrame b = BladeCoordinates(m).frame(s, c);
+    mismatches += !(a.point == b.point && a.normal == b.normal && a.span_tangent == b.span_tangent &&
+                    a.chord_tangent == b.chord_tangent && a.u == b.u && a.v == b.v);
+  }
+  BOOST_TEST(mismatches == 0);
+  // A reference survives the use of kSectionCacheSize - 1 other spans.
+  const SpanSection& first = cached.section(0.123);
+  const double u = first.u_at_chordwise(0.3);
+  for (std::size_t k = 1; k < BladeCoordinates::kSectionCacheSize; ++k) cached.section(0.5 + 1e-3 * k);
+  BOOST_TEST(first.span() == 0.123);
+  BOOST_TEST(first.u_at_chordwise(0.3) == u);
+  BOOST_TEST(&cached.section(0.123) == &first);
+  // A span outside the surface's domain throws and leaves the cache usable.
+  BOOST_CHECK_THROW(cached.section(5.0), InvalidGeometry);
+  BOOST_TEST(cached.frame(0.4, 0.2).point == BladeCoordinates(m).frame(0.4, 0.2).point);
 }
