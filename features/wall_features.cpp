@@ -2,6 +2,8 @@
 
 #include <chrono>
 
+#include "features/false_seams.hpp"
+
 namespace cg::features {
 namespace {
 
@@ -61,6 +63,12 @@ brep::NamedShape apply_wall_feature_tools(const brep::NamedShape& blade, WallFea
     auto t0 = std::chrono::steady_clock::now();
     for (const Group& g : groups) {
       if (g.tools->empty()) continue;
+      if (g.tools == &b.trailing_edge.slot_tools && b.trailing_edge.through_crease) {
+        current = repair_false_seams(current).shape;  // centreline slots cut through the crease
+        const auto t = std::chrono::steady_clock::now();
+        seconds.emplace_back("te_crease_repair", std::chrono::duration<double>(t - t0).count());
+        t0 = t;
+      }
       BooleanOptions options;
       options.verify_result = verify_each;
       BooleanStep step(g.op, options);
