@@ -7,6 +7,8 @@
 //                                 Fuse + Cut of the same tools)
 //   bench_cooled_build --quick    the C3X vane with its ten radial passages, and one closed chamber in it
 //   bench_cooled_build CONFIG     any config with a "cooling" section
+//   bench_cooled_build --wall     the built-in example's chambers and wall features only, ours only (no
+//                                 full build, no OCCT comparison: for profiling the cooling booleans)
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepAlgoAPI_Fuse.hxx>
 #include <Message.hxx>
@@ -21,6 +23,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <filesystem>
 #include <string>
 
@@ -37,6 +40,8 @@ namespace fs = std::filesystem;
 using namespace cg;
 
 namespace {
+
+bool g_compare_occt = true;  // off with --wall
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -67,6 +72,13 @@ bool timed_build(const config::Config& c, const char* what) {
   return r.valid() && (!r.cooling || r.cooling->passed());
 }
 
+void print_steps(const features::WallFeatureBuild& wb) {
+  for (std::size_t k = 0; k < wb.steps.size(); ++k)
+    std::printf("    %-12s boolean %.3f (intersect %.3f) / measure %.3f / verify %.3f s, %d boolean run(s)\n",
+                wb.step_names[k].c_str(), wb.steps[k].seconds_boolean, wb.steps[k].seconds_intersect,
+                wb.steps[k].seconds_measure, wb.steps[k].seconds_verify, wb.steps[k].boolean_runs);
+}
+
 // Turbulators, pin fins and slots into the blade with its chambers: our three verified BooleanSteps
 // against OCCT's plain multi-tool Fuse (turbulators and pins) then Cut (slots) of the same tools, with the
 // same final checks; the two results' volumes must agree.
@@ -74,11 +86,24 @@ bool wall_features_against_occt(const blade::BladeModel& model, const features::
                                 const features::CoreBuild& cb, const brep::NamedShape& with_chambers) {
   features::PassageReport report;
   auto t0 = std::chrono::steady_clock::now();
+  const std::clock_t c0 = std::clock();
   features::WallFeatureBuild wb = features::build_wall_feature_tools(model, core, cb, report);
-  const double t_tools = seconds_since(t0);
+  const double t_tools = seconds_since(t0), cpu_tools = double(std::clock() - c0) / CLOCKS_PER_SEC;
+  for (const auto& [stage, sec] : report.seconds) std::printf("    %-24s %7.3f s\n", stage.c_str(), sec);
   t0 = std::chrono::steady_clock::now();
   const brep::NamedShape ours = features::apply_wall_feature_tools(with_chambers, wb, report);
   const double t_ours = seconds_since(t0);
+  if (!g_compare_occt) {
+    double e[3] = {0, 0, 0};
+    for (const auto& t : wb.turbulators.tools) e[0] += t.expected_volume;
+    for (const auto& t : wb.trailing_edge.pin_tools) e[1] += t.expected_volume;
+    for (const auto& t : wb.trailing_edge.slot_tools) e[2] += t.expected_volume;
+    std::printf("tools CPU %.3f s\n", cpu_tools);
+    std::printf("turbulators + pin fins + slots: tools %.3f s, ours %.3f s, volume %.6f mm^3; expected %.12g / %.12g / "
+                "%.12g mm^3\n", t_tools, t_ours, volume(ours.shape), e[0], e[1], e[2]);
+    print_steps(wb);
+    return true;
+  }
   t0 = std::chrono::steady_clock::now();
   TopTools_ListOfShape args, fuse_tools, cut_tools;
   args.Append(with_chambers.shape);
@@ -111,15 +136,12 @@ bool wall_features_against_occt(const blade::BladeModel& model, const features::
   const double t_occt = seconds_since(t0);
   const double v_ours = volume(ours.shape), v_occt = done ? volume(occt) : 0;
   const bool agree = done && std::abs(v_ours - v_occt) <= 1e-6 * v_occt;
-  std::printf("turbulators + pin fins + slots (%zu + %zu + %zu tools; tools built in %.3f s): ours (3 verified steps) "
+  std::printf("turbulators + pin fins + slots (%zu + %zu + %zu tools; tools built in %.3f s): ours (3 checked steps, verify_solid once) "
               "%.3f s, OCCT Fuse + Cut + checks %.3f s, ratio %.2fx; volumes %.6f / %.6f mm^3 %s; OCCT result checks %s\n",
               wb.turbulators.tools.size(), wb.trailing_edge.pin_tools.size(), wb.trailing_edge.slot_tools.size(), t_tools,
               t_ours, t_occt, t_occt / t_ours, v_ours, v_occt, agree ? "agree" : "DISAGREE",
               occt_check.all_passed() ? "pass" : occt_check.failed_names().c_str());
-  for (std::size_t k = 0; k < wb.steps.size(); ++k)
-    std::printf("    %-12s boolean %.3f / measure %.3f / verify %.3f s, %d boolean run(s)\n", wb.step_names[k].c_str(),
-                wb.steps[k].seconds_boolean, wb.steps[k].seconds_measure, wb.steps[k].seconds_verify,
-                wb.steps[k].boolean_runs);
+  print_steps(wb);
   return agree;
 }
 
@@ -133,6 +155,10 @@ bool voids_against_cut(const blade::BladeModel& model, const features::CoreDefin
   features::PassageBooleanReport rep;
   const brep::NamedShape ours = features::apply_passage_tools(blade, cb.interior_tools, {}, rep);
   const double t_ours = seconds_since(t0);
+  if (!g_compare_occt) {
+    std::printf("chambers into the blade (%zu tools): ours (voids + checks) %.3f s\n", cb.interior_tools.size(), t_ours);
+    return core.turbulators.empty() && !core.trailing_edge ? true : wall_features_against_occt(model, core, cb, ours);
+  }
   t0 = std::chrono::steady_clock::now();
   BRepAlgoAPI_Cut cut;
   TopTools_ListOfShape args, tools;
@@ -161,7 +187,8 @@ int main(int argc, char** argv) {
   // OCCT's data exchange prints transfer statistics through the default messenger; keep stdout ours.
   for (const Handle(Message_Printer)& p : Message::DefaultMessenger()->Printers()) p->SetTraceLevel(Message_Fail);
   const std::string arg = argc > 1 ? argv[1] : "";
-  const bool quick = arg == "--quick";
+  const bool quick = arg == "--quick", wall_only = arg == "--wall";
+  g_compare_occt = !wall_only;
   bool ok = true;
   try {
     if (quick) {
@@ -176,8 +203,8 @@ int main(int argc, char** argv) {
       core.inlets = {in};
       ok &= voids_against_cut(config::build_model(v), core);
     } else {
-      const config::Config c = arg.empty() ? config::builtin_example_config() : config::load_config_file(arg);
-      ok &= timed_build(c, c.name.c_str());
+      const config::Config c = arg.empty() || wall_only ? config::builtin_example_config() : config::load_config_file(arg);
+      if (!wall_only) ok &= timed_build(c, c.name.c_str());
       if (c.cooling.passages.core) {
         features::CoreDefinition core = *c.cooling.passages.core;
         if (!core.hub_floor.open && !core.tip_cap.open) ok &= voids_against_cut(config::build_model(c), core);

@@ -10,6 +10,7 @@
 #include <TopoDS_Solid.hxx>
 
 #include <chrono>
+#include <memory>
 #include <cmath>
 
 #include "features/face_names.hpp"
@@ -39,19 +40,28 @@ brep::NamedShape apply_passage_tools(const brep::NamedShape& part, const std::ve
     for (TopExp_Explorer e(solids.front(), TopAbs_SHELL); e.More(); e.Next()) bb.Add(result, e.Current());
     BRepClass3d_SolidClassifier in_part;
     in_part.Load(solids.front());
+    // Distance between the boundaries (faces: between solids BRepExtrema reports 0 for a solid inside
+    // another), from the outer wall and from the other faces of the part separately: the first is the
+    // outer wall's minimum thickness the design checks report. (BRepExtrema's multi-threaded mode: the
+    // face pairs on both cores.)
+    TopoDS_Compound wall, ends;
+    bb.MakeCompound(wall);
+    bb.MakeCompound(ends);
+    for (const brep::NamedFace& f : part.faces) bb.Add(f.name == "blade_wall" ? wall : ends, f.face);
+    auto distance = [](const TopoDS_Shape& a, const TopoDS_Shape& b) {
+      auto d = std::make_unique<BRepExtrema_DistShapeShape>();
+      d->SetMultiThread(true);
+      d->LoadS1(a);
+      d->LoadS2(b);
+      d->Perform();
+      return d;
+    };
     for (const FeatureTool& t : interior) {
       const std::vector<TopoDS_Shape> ts = solids_of(t.shape.shape);
       if (ts.size() != 1) throw FeatureFailure(t.feature + ": an interior tool must be one solid");
-      // Distance between the boundaries (faces: between solids BRepExtrema reports 0 for a solid inside
-      // another), from the outer wall and from the other faces of the part separately: the first is the
-      // outer wall's minimum thickness the design checks report.
-      TopoDS_Compound wall, ends;
-      bb.MakeCompound(wall);
-      bb.MakeCompound(ends);
-      for (const brep::NamedFace& f : part.faces) bb.Add(f.name == "blade_wall" ? wall : ends, f.face);
       TopExp_Explorer tool_shell(ts.front(), TopAbs_SHELL);
-      BRepExtrema_DistShapeShape dw(wall, tool_shell.Current());
-      BRepExtrema_DistShapeShape de(ends, tool_shell.Current());
+      const auto pdw = distance(wall, tool_shell.Current()), pde = distance(ends, tool_shell.Current());
+      const BRepExtrema_DistShapeShape &dw = *pdw, &de = *pde;
       if (!dw.IsDone() || !de.IsDone())
         throw FeatureFailure(t.feature + ": cannot measure its distance to the blade's boundary");
       const double d = std::min(dw.Value(), de.Value());

@@ -146,6 +146,7 @@ class Engine {
     const BooleanRun run = run_boolean(part.shape, shapes, op_, opt_.parallel, progress->Start());
     progress->throw_if_stopped();
     report_.seconds_boolean += since(t);
+    report_.seconds_intersect += run.seconds_intersect;
     if (run.result.IsNull() || !run.errors.empty()) {
       a.failure = "OCCT boolean failed (" + join(run.errors) + ")";
       return a;

@@ -102,6 +102,7 @@ struct BooleanStepReport {
   /// Wall-clock seconds per stage: disjoint, expected, patches, boolean, measure, verify.
   double seconds_disjoint = 0, seconds_expected = 0, seconds_patches = 0, seconds_boolean = 0,
          seconds_measure = 0, seconds_verify = 0;
+  double seconds_intersect = 0;  ///< of seconds_boolean: OCCT's intersection phase (BOPAlgo_PaveFiller)
 };
 
 /// Algorithm object: collect tools, apply them to a part once, read the report.

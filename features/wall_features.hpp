@@ -32,8 +32,12 @@ WallFeatureBuild build_wall_feature_tools(const blade::BladeModel& model, const 
                                           const CoreBuild& core, PassageReport& report);
 
 /// Applies the tools of `build` to `blade` (the blade with its chambers): one BooleanStep per group
-/// (turbulators: Fuse, pin fins: Fuse, slots: Cut). Appends stage times and per-tool volume checks to
-/// `report`, the step reports to `build`. Throws FeatureFailure when a step fails.
+/// (turbulators: Fuse, pin fins: Fuse, slots: Cut), each with its cheap checks and per-tool volume
+/// checks, and brep::verify_solid once on the result (the last step report's `check`); only when that
+/// fails are the steps redone with verify_solid after each, to name the group and tools to blame.
+/// (One boolean for all groups was measured slower: OCCT then intersects the tools with each other,
+/// 69 s against 28 s for the three steps' intersections on the example.) Appends stage times and
+/// per-tool volume checks to `report`, the step reports to `build`. Throws FeatureFailure when a step fails.
 brep::NamedShape apply_wall_feature_tools(const brep::NamedShape& blade, WallFeatureBuild& build, PassageReport& report);
 
 }  // namespace cg::features

@@ -6,9 +6,13 @@
 // the integral, over the tool's cross-section, of the length of each line inside the material (or inside
 // the chamber), by Gauss-Legendre quadrature; it shares nothing with OCCT's boolean.
 #include <Eigen/Core>
+#include <map>
+#include <memory>
+#include <tuple>
 #include <utility>
 #include <vector>
 
+#include "src/algo/bounding_spans.hpp"
 #include "src/algo/ray_surface.hpp"
 #include "src/core/bspline_surface.hpp"
 
@@ -19,6 +23,31 @@ enum class Region { Outside, Material, Chamber, Any /* only as an expected end r
 
 /// Intervals [t0, t1] of a segment's parameter t in [0, 1].
 using Intervals = std::vector<std::pair<double, double>>;
+
+/// Ray casting against the part of a surface near a segment. A ray caster visits every Bézier patch of
+/// its surface per ray (the blade walls have hundreds), while a feature's lines meet a few: each query
+/// goes to a caster of the rectangle of patches whose pole boxes reach the segment's box (grown by one
+/// patch all round), cached by rectangle, so the lines of one tool share one small caster. The patches
+/// are the surface's own Bézier patches (the sub-surface is their Bézier form, same geometry), and a
+/// crossing lies in the convex hull of the poles of its patch, so no crossing is lost; queries whose
+/// patches wrap over a periodic seam, or cover most of the surface, use the whole surface.
+class LocalCaster {
+ public:
+  explicit LocalCaster(const BSplineSurface<3>& surface);
+  /// The caster for the segment a -> b (valid until the next call).
+  RaySurfaceCaster& for_segment(const Eigen::Vector3d& a, const Eigen::Vector3d& b);
+  /// Queries answered by a local caster / by the whole surface (for the tests and the bench).
+  int local_queries = 0, full_queries = 0;
+
+ private:
+  int pu_, pv_, cols_ = 0, rows_ = 0;
+  bool periodic_u_, periodic_v_;
+  double tol_;
+  std::vector<SurfaceBezierPatch<3>> patches_;  // u-major: column iu, row iv at iu * rows_ + iv
+  RaySurfaceCaster full_;
+  std::map<std::tuple<int, int, int, int>, std::unique_ptr<RaySurfaceCaster>> cache_;
+  std::vector<char> col_hit_, row_hit_;
+};
 
 /// Segment queries against the outer and the inner wall. One per thread (ray casters keep work buffers);
 /// the inner surface must outlive it.
@@ -41,8 +70,8 @@ class WallLines {
   Eigen::Vector3d inner_normal(const Eigen::Vector3d& a, const Eigen::Vector3d& b);
 
  private:
-  std::vector<double> crossings(RaySurfaceCaster& caster, const Eigen::Vector3d& a, const Eigen::Vector3d& b);
-  RaySurfaceCaster outer_, inner_;
+  std::vector<double> crossings(LocalCaster& caster, const Eigen::Vector3d& a, const Eigen::Vector3d& b);
+  LocalCaster outer_, inner_;
   const BSplineSurface<3>* inner_surface_;
 };
 
