@@ -1,0 +1,46 @@
+#pragma once
+// Independent work items on the machine's cores (std::thread; no OCCT or TBB in the kernel).
+#include <algorithm>
+#include <atomic>
+#include <exception>
+#include <thread>
+#include <vector>
+
+namespace cg {
+
+/// Worker threads for parallel loops: one per core (at least 1).
+inline int parallel_workers() { return std::max(1, static_cast<int>(std::thread::hardware_concurrency())); }
+
+/// Runs f(i, worker) for every i in [0, n) on up to `workers` threads (worker in [0, workers): give
+/// each worker its own non-thread-safe state). Items are taken in order as workers become free. When
+/// items throw, the remaining ones are skipped and the exception of the lowest item index is rethrown,
+/// so the error does not depend on the scheduling.
+template <class F>
+void parallel_for(int n, int workers, F&& f) {
+  workers = std::clamp(workers, 1, std::max(n, 1));
+  if (workers == 1) {
+    for (int i = 0; i < n; ++i) f(i, 0);
+    return;
+  }
+  std::atomic<int> next{0};
+  std::vector<std::exception_ptr> errors(static_cast<std::size_t>(n));
+  std::atomic<bool> failed{false};
+  auto run = [&](int worker) {
+    for (int i = next++; i < n && !failed; i = next++) {
+      try {
+        f(i, worker);
+      } catch (...) {
+        errors[static_cast<std::size_t>(i)] = std::current_exception();
+        failed = true;
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int w = 1; w < workers; ++w) pool.emplace_back(run, w);
+  run(0);
+  for (std::thread& t : pool) t.join();
+  for (const std::exception_ptr& e : errors)
+    if (e) std::rethrow_exception(e);
+}
+
+}  // namespace cg
