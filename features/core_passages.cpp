@@ -28,6 +28,7 @@
 #include "src/blade/format.hpp"
 #include "src/brep/blade_solid.hpp"
 #include "src/core/newton.hpp"
+#include "src/core/parallel.hpp"
 
 namespace cg::features {
 namespace {
@@ -307,21 +308,41 @@ CoreBuild build_core_tools(const blade::BladeModel& model, const CoreDefinition&
 
   // 2. Ribs and chambers.
   out.chambers = chambers_of(coords, def);
-  RibEnds ends;
-  ends.hub_through_span = out.inner_wall.surface.first_v();
-  ends.tip_through_span = out.inner_wall.surface.last_v();
-  ends.hub_wall = out.hub_floor ? &*out.hub_floor : nullptr;
-  ends.tip_wall = out.tip_cap ? &*out.tip_cap : nullptr;
-  int turnarounds = 0;
-  for (std::size_t i = 0; i < def.ribs.size(); ++i) {
-    const int j = def.ribs[i].turnaround ? ++turnarounds : 0;
+  // The ribs are independent: built in parallel, each worker with its own coordinates and end walls
+  // (both cache evaluation state); the error of the first failing rib is reported.
+  std::vector<int> turnaround_of(def.ribs.size(), 0);
+  for (std::size_t i = 0, j = 0; i < def.ribs.size(); ++i)
+    if (def.ribs[i].turnaround) turnaround_of[i] = static_cast<int>(++j);
+  struct RibWorker {
+    std::unique_ptr<blade::BladeCoordinates> coords;
+    std::optional<EndWall> hub, tip;
+    RibEnds ends;
+  };
+  const int rib_workers = std::min(parallel_workers(), std::max(1, static_cast<int>(def.ribs.size())));
+  std::vector<RibWorker> rib_worker(static_cast<std::size_t>(rib_workers));
+  for (RibWorker& w : rib_worker) {
+    w.coords = std::make_unique<blade::BladeCoordinates>(model);
+    if (out.hub_floor) w.hub.emplace(*out.hub_floor);
+    if (out.tip_cap) w.tip.emplace(*out.tip_cap);
+    w.ends.hub_through_span = out.inner_wall.surface.first_v();
+    w.ends.tip_through_span = out.inner_wall.surface.last_v();
+    w.ends.hub_wall = w.hub ? &*w.hub : nullptr;
+    w.ends.tip_wall = w.tip ? &*w.tip : nullptr;
+  }
+  std::vector<std::optional<RibTube>> tubes(def.ribs.size());
+  parallel_for(static_cast<int>(def.ribs.size()), rib_workers, [&](int k, int wk) {
+    const std::size_t i = static_cast<std::size_t>(k);
+    const RibWorker& w = rib_worker[static_cast<std::size_t>(wk)];
     try {
-      out.ribs.push_back(build_rib_tube(coords, def.wall_thickness, def.ribs[i], static_cast<int>(i) + 1, j, ends,
-                                        def.tolerance));
+      tubes[i] = build_rib_tube(*w.coords, def.wall_thickness, def.ribs[i], k + 1, turnaround_of[i], w.ends,
+                                def.tolerance);
     } catch (const InvalidGeometry& e) {
       throw PassageInputError("core.ribs[" + std::to_string(i) + "]" + (def.ribs[i].turnaround ? ".turnaround" : ""),
                               e.what());
     }
+  });
+  for (auto& t : tubes) {
+    out.ribs.push_back(std::move(*t));
     names.add(out.ribs.back().faces);
   }
   out.seconds.emplace_back("ribs", sw.lap());
