@@ -59,7 +59,16 @@ TeFrame te_frame(const blade::BladeCoordinates& coords, const CoreDefinition& de
     f.o = a.point;
     f.x = a.chord_tangent;  // LE -> TE on the suction side
   }
-  const Vec3 t = coords.frame(s, 1.0).span_tangent;
+  // z: the span direction; for a centreline slot the crease's own tangent, so the crease lies on the
+  // slot's mid-plane y = 0 across the slot's width (up to its curvature) and the kink it puts in the
+  // removed-volume integrand stays on one quadrature break.
+  Vec3 t = coords.frame(s, 1.0).span_tangent;
+  if (te.type == TrailingEdgeType::Centreline) {
+    const double ds = 1e-4;
+    const Vec3 t_crease = blade::inner_wall_crease(coords, def.wall_thickness, std::min(s + ds, 1.0)).crease -
+                          blade::inner_wall_crease(coords, def.wall_thickness, std::max(s - ds, 0.0)).crease;
+    t = t_crease.dot(t) > 0 ? t_crease : Vec3(-t_crease);
+  }
   f.z = (t - t.dot(f.x) * f.x).normalized();
   f.y = f.z.cross(f.x);
   if ((coords.frame(s, cr.pressure_chord).point - f.o).dot(f.y) < 0) {
@@ -137,24 +146,44 @@ std::vector<double> centred(double lo, double hi, double pitch, int count) {
 }
 
 // The slot's inlet: the first station x upstream of x_from where the chamber holds the inlet face
-// (height H, width w, 0.05 mm clear all round). centred: the face is centred in the chamber at z = 0
-// (the channel then tilts to the slot under the lip); otherwise it spans [y0, y0 + H].
+// (height H, width w - 2 x taper at station x, 0.05 mm clear all round). centred: the face is centred in
+// the chamber at z = 0 (the channel then tilts to the slot under the lip); otherwise it spans [y0, y0 + H].
 struct Inlet {
   double x = std::nan(""), y = 0;
 };
-Inlet inlet_station(WallLines& lines, const TeFrame& f, double x_from, double y0, double h, double w, bool centred) {
+Inlet inlet_station(WallLines& lines, const TeFrame& f, double x_from, double y0, double h, double w, double taper,
+                    bool centred) {
   for (double x = x_from - 0.2; x > x_from - 30; x -= 0.1) {
+    const double wx = w - 2 * x * taper;
     const Across mid = across(lines, f, x, 0.0, false);
     if (!mid.ok) continue;
     const double y = centred ? 0.5 * (mid.lo + mid.hi) - 0.5 * h : y0;
     bool fits = true;
-    for (double z : {-0.5 * w, 0.0, 0.5 * w}) {
+    for (double z : {-0.5 * wx, 0.0, 0.5 * wx}) {
       const Across c = across(lines, f, x, z, false);
       fits = fits && c.ok && c.lo < y - 0.05 && c.hi > y + h + 0.05;
     }
     if (fits) return {x, y};
   }
   return {};
+}
+
+// A tapered centreline slot: still open where it leaves the blade (w_out > 0 at the tool's end, 1 mm past
+// the TE) and apart from its neighbours at the inlet, where it is widest (w_in < pitch).
+void check_centreline_widths(const TrailingEdgeDefinition& te, const std::string& name, double s, double pitch,
+                             int count, double x_in, double x_out, double w_in, double w_out) {
+  const double w = te.slot_width;
+  if (!(w_out > 0))
+    throw PassageInputError(field("land_taper_deg"), name + ": the lands' taper closes the slot before it leaves the "
+                                                             "blade at span " + fmt(s) + " (width " + fmt(w_out) +
+                                                             " mm there); must be < " +
+                                                             fmt(std::atan(w / (2 * x_out)) * 180 / kPi) + " deg here");
+  if (count > 1 && !(w_in < pitch - 0.05))
+    throw PassageInputError(field("land_taper_deg"),
+                            name + ": with the taper the slots' inlets in the chamber (" + fmt(-x_in) +
+                                " mm upstream of the crease, " + fmt(w_in) + " mm wide) touch their neighbours at span " +
+                                fmt(s) + "; must be < " +
+                                fmt(std::atan((pitch - 0.05 - w) / (2 * -x_in)) * 180 / kPi) + " deg here");
 }
 
 }  // namespace
@@ -177,11 +206,11 @@ void check_trailing_edge_definition(const CoreDefinition& def) {
   }
   if (!(te.span_margin >= 0 && te.span_margin <= 50))
     throw PassageInputError(field("span_margin"), "must be in [0, 50] mm, got " + fmt(te.span_margin));
+  if (!(te.land_taper_deg >= 0 && te.land_taper_deg < 45))
+    throw PassageInputError(field("land_taper_deg"), "must be in [0, 45) deg, got " + fmt(te.land_taper_deg));
   if (te.type == TrailingEdgeType::PressureSideCutback) {
     in_range(te.lip_thickness, 0, 10, "lip_thickness", "mm");
     in_range(te.cutback_length, 0, 50, "cutback_length", "mm");
-    if (!(te.land_taper_deg >= 0 && te.land_taper_deg < 45))
-      throw PassageInputError(field("land_taper_deg"), "must be in [0, 45) deg, got " + fmt(te.land_taper_deg));
     const double w_te = te.slot_width - 2 * (te.cutback_length + 1.0) * std::tan(te.land_taper_deg * kPi / 180);
     if (!(w_te > 0))
       throw PassageInputError(field("land_taper_deg"),
@@ -212,14 +241,9 @@ TrailingEdgeBuild build_trailing_edge(const blade::BladeModel& model, const Core
   if (!def.trailing_edge) return out;
   const TrailingEdgeDefinition& te = *def.trailing_edge;
   const bool cutback = te.type == TrailingEdgeType::PressureSideCutback;
-  // A centreline slot contains the chamber's crease (the inner wall's C0 edge at the TE end): OCCT's
-  // boolean warned (BOPAlgo_AlertFaceBuilderUnusedEdges) on every such slot of the example, with the
-  // wall's seam at the TE or moved to chord 0.9, and passed once the slot was moved 0.25 mm off the
-  // crease. The verified path would refuse every slot, so refuse the type up front.
-  if (!cutback)
-    throw PassageInputError(field("type"), "centreline slots are not supported yet: a slot along the centreline "
-                                           "contains the chamber's crease, where OCCT's boolean fails; use "
-                                           "\"pressure_side_cutback\"");
+  // A centreline slot cuts through the chamber's crease, a false seam of the part (features/false_seams.hpp):
+  // the slot step repairs it first.
+  out.through_crease = !cutback;
   const blade::BladeCoordinates coords(model);
   const SpanLine line = crease_line(model, coords, def, core, te.span_margin);
 
@@ -281,13 +305,27 @@ TrailingEdgeBuild build_trailing_edge(const blade::BladeModel& model, const Core
     } else {
       info.x_lip = f.te_x;
       info.floor_y = -0.5 * te.slot_height;
-      const Across c = across(lines, f, f.crease_x, 0.0, true);
-      if (!c.ok || c.lo > info.floor_y - 0.1 || c.hi < info.floor_y + te.slot_height + 0.1)
-        throw PassageInputError(field("slot_height"), name + ": the slot leaves less than 0.1 mm of wall on a side at the "
-                                                             "chamber's end at span " + fmt(s) + "; reduce slot_height");
+      // At least 0.1 mm of wall on both sides of the slot over the first half of the way from the crease
+      // to the TE (the blade's flanks; the second half holds the TE's rounding, through which the slot
+      // leaves the blade).
+      double h_max = HUGE_VAL;
+      for (int k = 0; k <= 4; ++k) {
+        const double x = f.crease_x + 0.5 * (f.te_x - f.crease_x) * k / 4.0;
+        const Across c = across(lines, f, x, 0.0, true);
+        if (!c.ok) throw FeatureFailure(name + ": cannot find the blade's walls across the slot");
+        h_max = std::min(h_max, 2 * (std::min(-c.lo, c.hi) - 0.1));
+      }
+      if (!(te.slot_height <= h_max))
+        throw PassageInputError(field("slot_height"), name + ": the slot leaves less than 0.1 mm of wall on a side between "
+                                                             "the chamber's end and the TE at span " + fmt(s) +
+                                                             "; must be <= " + fmt(std::max(h_max, 0.0)) +
+                                                             " mm here, got " + fmt(te.slot_height));
     }
     const double y0 = info.floor_y, y1 = y0 + te.slot_height, h = te.slot_height;
-    const Inlet in = inlet_station(lines, f, f.crease_x, y0, h, w, cutback);
+    // Centreline: each land side turns by land_taper_deg from the crease (x = 0, slot width w) on, so
+    // the slot narrows towards the TE (and widens upstream, inside the chamber).
+    const double slot_taper = cutback ? 0.0 : taper;
+    const Inlet in = inlet_station(lines, f, f.crease_x, y0, h, w, slot_taper, cutback);
     if (std::isnan(in.x))
       throw PassageInputError(field("slot_height"), name + " does not fit into the last chamber at span " + fmt(s) +
                                                          ": no station where the chamber holds its inlet (" + fmt(h) +
@@ -297,10 +335,12 @@ TrailingEdgeBuild build_trailing_edge(const blade::BladeModel& model, const Core
     // Channel: from the inlet face in the chamber (centred in it for a cutback) straight to the slot's
     // exit face under the lip (cutback) or past the TE (centreline).
     const double xc = cutback ? info.x_lip : info.x_end;
-    const RuledBlock channel{bilinear_patch(f.at(in.x, in.y, -0.5 * w), f.at(in.x, in.y + h, -0.5 * w),
-                                            f.at(in.x, in.y, 0.5 * w), f.at(in.x, in.y + h, 0.5 * w)),
-                             bilinear_patch(f.at(xc, y0, -0.5 * w), f.at(xc, y1, -0.5 * w), f.at(xc, y0, 0.5 * w),
-                                            f.at(xc, y1, 0.5 * w))};
+    const double w_in = w - 2 * in.x * slot_taper, w_out = w - 2 * xc * slot_taper;
+    if (!cutback) check_centreline_widths(te, name, s, pitch, count, in.x, xc, w_in, w_out);
+    const RuledBlock channel{bilinear_patch(f.at(in.x, in.y, -0.5 * w_in), f.at(in.x, in.y + h, -0.5 * w_in),
+                                            f.at(in.x, in.y, 0.5 * w_in), f.at(in.x, in.y + h, 0.5 * w_in)),
+                             bilinear_patch(f.at(xc, y0, -0.5 * w_out), f.at(xc, y1, -0.5 * w_out),
+                                            f.at(xc, y0, 0.5 * w_out), f.at(xc, y1, 0.5 * w_out))};
     // The line of the channel through the crease (the inner wall's C0 edge) is a kink of the integrand.
     const double lc = (f.crease_x - in.x) / (xc - in.x);
     const double y_crease = (blade::inner_wall_crease(coords, def.wall_thickness, s).crease - f.o).dot(f.y);

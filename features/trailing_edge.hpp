@@ -4,8 +4,11 @@
 //
 // Frame per span s (mm, blade-relative: it moves with the section): the inner wall's crease C (the
 // chamber's TE end, blade/inner_wall.hpp) and the TE point P (chord +-1).
-//  - centreline: origin C, x along C -> P, the slot |y| <= H / 2 (refused for now: OCCT's boolean fails
-//    where the slot contains the crease; the geometry and volumes below are built and were checked);
+//  - centreline: origin C, x along C -> P, z along the crease's tangent (made normal to x), the slot
+//    |y| <= H / 2, |z| <= (w - 2 x tan(land_taper)) / 2: width w at the crease, narrowing towards the TE.
+//    The slot contains the crease, where the last chamber's two wall faces meet on one periodic surface:
+//    the slot step first repairs that false seam (false_seams.hpp), else OCCT's boolean drops the
+//    crease's split pieces (BOPAlgo_AlertFaceBuilderUnusedEdges on every slot of the example);
 //  - pressure-side cutback: origin A = the suction-side foot of the crease, x along the suction surface's
 //    tangent there (towards the TE), y towards the pressure side; the slot floor is the plane
 //    y = y_f with y_f = y_ps(x_c) - lip - H, x_c = L - cutback_length (L: x of the TE point, y_ps the
@@ -57,6 +60,9 @@ struct TrailingEdgeBuild {
   std::vector<FeatureTool> slot_tools, pin_tools;
   std::vector<SlotInfo> slots;
   std::vector<PinInfo> pins;
+  /// Centreline slots cut through the inner wall's crease: the part's false seam there must be repaired
+  /// before the slot step (features/false_seams.hpp).
+  bool through_crease = false;
 };
 
 /// Checks without geometry: sizes, slot pitch > slot width, count, taper (PassageInputError with
@@ -64,8 +70,10 @@ struct TrailingEdgeBuild {
 void check_trailing_edge_definition(const CoreDefinition& def);
 
 /// Builds the slot and pin tools. Throws PassageInputError when they do not fit (the slot does not fit
-/// the chamber, no suction-side wall left under the cutback, cutback longer than the TE region, pins
-/// reaching the last rib), FeatureFailure for OCCT failures.
+/// the chamber, no suction-side wall left under the cutback or, centreline, less than 0.1 mm beside the
+/// slot over the first half of the TE region, cutback longer than the TE region, a taper that closes the
+/// slot or (centreline) widens the inlets into each other, pins reaching the last rib), FeatureFailure
+/// for OCCT failures.
 TrailingEdgeBuild build_trailing_edge(const blade::BladeModel& model, const CoreDefinition& def, const CoreBuild& core,
                                       WallLines& lines);
 

@@ -2,6 +2,8 @@
 
 #include <chrono>
 
+#include "features/false_seams.hpp"
+
 namespace cg::features {
 namespace {
 
@@ -56,6 +58,10 @@ brep::NamedShape apply_wall_feature_tools(const brep::NamedShape& blade, WallFea
   };
   run("turbulators", BooleanOperation::Fuse, b.turbulators.tools);
   run("pin_fins", BooleanOperation::Fuse, b.trailing_edge.pin_tools);
+  if (b.trailing_edge.through_crease && !b.trailing_edge.slot_tools.empty()) {
+    current = repair_false_seams(current).shape;
+    lap("te_crease_repair");
+  }
   run("te_slots", BooleanOperation::Cut, b.trailing_edge.slot_tools);
   for (const auto& t : b.turbulators.turbulators) report.volumes.push_back({t.name, t.added_volume, "added"});
   for (const auto& p : b.trailing_edge.pins) report.volumes.push_back({p.name, p.added_volume, "added"});

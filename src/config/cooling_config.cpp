@@ -120,13 +120,13 @@ features::TrailingEdgeDefinition trailing_edge(const Field& f) {
   if (f.has("pitch") == f.has("count")) fail(f.path(), "give exactly one of \"pitch\" and \"count\"");
   if (f.has("pitch")) te.pitch = f.at("pitch").number(positive(100), "mm");
   if (f.has("count")) te.count = f.at("count").integer(1, 500);
-  for (const char* k : {"lip_thickness", "cutback_length", "land_taper_deg"})
+  for (const char* k : {"lip_thickness", "cutback_length"})
     if (!cutback && f.has(k)) fail(f.path() + "." + k, "only for \"type\": \"pressure_side_cutback\"");
   if (cutback) {
     te.lip_thickness = f.at("lip_thickness").number(positive(10), "mm");
     te.cutback_length = f.at("cutback_length").number(positive(50), "mm");
-    te.land_taper_deg = f.number_or("land_taper_deg", 0, Range{0, 45, false, true}, "deg");
   }
+  te.land_taper_deg = f.number_or("land_taper_deg", 0, Range{0, 45, false, true}, "deg");
   te.span_margin = f.number_or("span_margin", te.span_margin, closed(0, 50), "mm");
   if (f.has("pin_fins")) {
     const Field p = f.at("pin_fins");

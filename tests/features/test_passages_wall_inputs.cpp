@@ -147,12 +147,30 @@ BOOST_AUTO_TEST_CASE(trailing_edge_that_does_not_fit) {
                         "cooling.core.trailing_edge.pin_fins.rows", {"reaches rib 3"});
 }
 
-BOOST_AUTO_TEST_CASE(centreline_slots_are_refused) {
-  // OCCT's boolean warns on every centreline slot (it contains the chamber's crease; measured:
-  // BOPAlgo_AlertFaceBuilderUnusedEdges), so they are refused before any work.
+BOOST_AUTO_TEST_CASE(centreline_slots_that_do_not_fit) {
+  // Centreline slots on the example's core (the TE region is ~1.6 mm thick at the crease, the TE ~1.1 mm
+  // downstream of it): each error names the field and the limit the blade sets there.
+  auto centreline = [](json& d) -> json& {
+    core_of(d)["trailing_edge"] = {{"type", "centreline"}, {"slot_height", 0.4}, {"slot_width", 1.0}, {"pitch", 2.5}};
+    return core_of(d)["trailing_edge"];
+  };
+  // Taller than the TE region allows (0.1 mm of wall left on each side at the crease).
+  expect_geometry_error([&](json& d) { centreline(d)["slot_height"] = 3.0; }, "cooling.core.trailing_edge.slot_height",
+                        {"less than 0.1 mm of wall", "at span", "must be <="});
+  expect_geometry_error([&](json& d) { centreline(d)["slot_height"] = 1.5; }, "cooling.core.trailing_edge.slot_height",
+                        {"must be <="});
+  // A taper that closes the slots before they leave the blade.
+  expect_geometry_error([&](json& d) { centreline(d)["land_taper_deg"] = 30.0; },
+                        "cooling.core.trailing_edge.land_taper_deg", {"closes the slot", "must be <"});
+  // A taper that widens the inlets (upstream of the crease) into their neighbours.
   expect_geometry_error(
-      [](json& d) {
-        core_of(d)["trailing_edge"] = {{"type", "centreline"}, {"slot_height", 0.4}, {"slot_width", 1.0}, {"count", 4}};
+      [&](json& d) {
+        json& te = centreline(d);
+        te["pitch"] = 1.1;
+        te["land_taper_deg"] = 5.0;
       },
-      "cooling.core.trailing_edge.type", {"not supported yet", "crease"});
+      "cooling.core.trailing_edge.land_taper_deg", {"touch their neighbours", "must be <"});
+  // Cutback-only fields.
+  expect_config_error([&](json& d) { centreline(d)["cutback_length"] = 0.5; }, "cooling.core.trailing_edge.cutback_length",
+                      {"only for"});
 }
