@@ -345,7 +345,7 @@ std::vector<SectionCut> cut_sections(const brep::Part& part, const std::vector<S
   std::vector<TopoDS_Face> tools;
   for (const SectionSurface& s : surfaces) tools.push_back(cutting_face(s, 10 * size + 1));
   std::vector<std::vector<SectionCurve>> curves(tasks);
-  for_each_index(static_cast<int>(tasks), true, [&](int k, int) {
+  parallel_for(static_cast<int>(tasks), parallel_workers(), [&](int k, int) {
     const std::size_t si = static_cast<std::size_t>(k) / part.size(), b = static_cast<std::size_t>(k) % part.size();
     curves[static_cast<std::size_t>(k)] =
         section_curves(bodies[b], static_cast<int>(b), part[b].name, surfaces[si], tools[si], size, deflection);

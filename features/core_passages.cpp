@@ -1,6 +1,8 @@
 #include "features/core_passages.hpp"
 
 #include <BRepAlgoAPI_Splitter.hxx>
+#include <BRepBndLib.hxx>
+#include <Bnd_Box.hxx>
 #include <BRepClass3d_SolidClassifier.hxx>
 #include <BRepFilletAPI_MakeFillet.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
@@ -17,6 +19,7 @@
 #include <cmath>
 #include <functional>
 #include <map>
+#include <optional>
 #include <memory>
 #include <set>
 #include <sstream>
@@ -24,6 +27,8 @@
 #include "features/face_names.hpp"
 #include "src/blade/format.hpp"
 #include "src/brep/blade_solid.hpp"
+#include "src/core/newton.hpp"
+#include "src/core/parallel.hpp"
 
 namespace cg::features {
 namespace {
@@ -74,14 +79,14 @@ std::string alerts(const Message_Report& r, Message_Gravity g) {
 constexpr double kPi = 3.14159265358979323846;
 
 // Parameter t along x0 + t dir (|t| <= 50 mm) where the end wall's signed distance reaches `target`
-// (bisection; the distance grows along dir, which points into the flow path).
+// (the distance grows along dir, which points into the flow path; Illinois regula falsi to 1e-12 mm).
+// Without a crossing in [-50, 50] the end on the side of the target.
 double along_line(const EndWall& w, const Vec3& x0, const Vec3& dir, double target) {
-  double lo = -50, hi = 50;
-  for (int it = 0; it < 44; ++it) {  // 100 mm / 2^44: below 1e-11 mm
-    const double mid = 0.5 * (lo + hi);
-    (w.signed_distance(x0 + mid * dir) < target ? lo : hi) = mid;
-  }
-  return 0.5 * (lo + hi);
+  auto f = [&](double t) { return w.signed_distance(x0 + t * dir) - target; };
+  const double lo = -50, hi = 50, f_lo = f(lo), f_hi = f(hi);
+  if (f_lo >= 0) return lo;
+  if (f_hi < 0) return hi;
+  return newton::solve_bracketed_secant(f, lo, hi, f_lo, f_hi, 1e-12);
 }
 
 // Integral of f(rho, phi) over the disc of radius r: Gauss-Legendre (8 points) in rho, 32 equal
@@ -299,26 +304,45 @@ CoreBuild build_core_tools(const blade::BladeModel& model, const CoreDefinition&
                                                          : (def.tip_cap.open ? "open_tip" : "tip_cap");
     names.set(f.face, n);
   }
-  out.core_volume = volume_of(core.solid);
   out.seconds.emplace_back("core_solid", sw.lap());
 
   // 2. Ribs and chambers.
   out.chambers = chambers_of(coords, def);
-  RibEnds ends;
-  ends.hub_through_span = out.inner_wall.surface.first_v();
-  ends.tip_through_span = out.inner_wall.surface.last_v();
-  ends.hub_wall = out.hub_floor ? &*out.hub_floor : nullptr;
-  ends.tip_wall = out.tip_cap ? &*out.tip_cap : nullptr;
-  int turnarounds = 0;
-  for (std::size_t i = 0; i < def.ribs.size(); ++i) {
-    const int j = def.ribs[i].turnaround ? ++turnarounds : 0;
+  // The ribs are independent: built in parallel, each worker with its own coordinates and end walls
+  // (both cache evaluation state); the error of the first failing rib is reported.
+  std::vector<int> turnaround_of(def.ribs.size(), 0);
+  for (std::size_t i = 0, j = 0; i < def.ribs.size(); ++i)
+    if (def.ribs[i].turnaround) turnaround_of[i] = static_cast<int>(++j);
+  struct RibWorker {
+    std::unique_ptr<blade::BladeCoordinates> coords;
+    std::optional<EndWall> hub, tip;
+    RibEnds ends;
+  };
+  const int rib_workers = std::min(parallel_workers(), std::max(1, static_cast<int>(def.ribs.size())));
+  std::vector<RibWorker> rib_worker(static_cast<std::size_t>(rib_workers));
+  for (RibWorker& w : rib_worker) {
+    w.coords = std::make_unique<blade::BladeCoordinates>(model);
+    if (out.hub_floor) w.hub.emplace(*out.hub_floor);
+    if (out.tip_cap) w.tip.emplace(*out.tip_cap);
+    w.ends.hub_through_span = out.inner_wall.surface.first_v();
+    w.ends.tip_through_span = out.inner_wall.surface.last_v();
+    w.ends.hub_wall = w.hub ? &*w.hub : nullptr;
+    w.ends.tip_wall = w.tip ? &*w.tip : nullptr;
+  }
+  std::vector<std::optional<RibTube>> tubes(def.ribs.size());
+  parallel_for(static_cast<int>(def.ribs.size()), rib_workers, [&](int k, int wk) {
+    const std::size_t i = static_cast<std::size_t>(k);
+    const RibWorker& w = rib_worker[static_cast<std::size_t>(wk)];
     try {
-      out.ribs.push_back(build_rib_tube(coords, def.wall_thickness, def.ribs[i], static_cast<int>(i) + 1, j, ends,
-                                        def.tolerance));
+      tubes[i] = build_rib_tube(*w.coords, def.wall_thickness, def.ribs[i], k + 1, turnaround_of[i], w.ends,
+                                def.tolerance);
     } catch (const InvalidGeometry& e) {
       throw PassageInputError("core.ribs[" + std::to_string(i) + "]" + (def.ribs[i].turnaround ? ".turnaround" : ""),
                               e.what());
     }
+  });
+  for (auto& t : tubes) {
+    out.ribs.push_back(std::move(*t));
     names.add(out.ribs.back().faces);
   }
   out.seconds.emplace_back("ribs", sw.lap());
@@ -346,13 +370,22 @@ CoreBuild build_core_tools(const blade::BladeModel& model, const CoreDefinition&
     names = names.carried(split, split.Shape());
     cells = solids_of(split.Shape());
   }
-  // Coolant cells: those holding chamber reference points.
+  // The cells partition the core: their volumes give the core's, the ribs' and (before the fillets)
+  // the chambers'.
+  const std::vector<double> cell_volume = volumes_of(cells);
+  for (double v : cell_volume) out.core_volume += v;
+  // Coolant cells: those holding chamber reference points (the cells are disjoint: the first cell that
+  // holds a point is its only one; a cell's bounding box rules most cells out without classifying).
   std::vector<int> cell_of(out.chambers.size(), -1);
-  std::vector<std::unique_ptr<Inside>> in_cell;
-  for (const auto& c : cells) in_cell.push_back(std::make_unique<Inside>(c));
+  std::vector<std::unique_ptr<Inside>> in_cell(cells.size());
+  std::vector<Bnd_Box> cell_box(cells.size());
+  for (std::size_t c = 0; c < cells.size(); ++c) BRepBndLib::Add(cells[c], cell_box[c]);
   for (std::size_t k = 0; k < out.chambers.size(); ++k) {
-    for (std::size_t c = 0; c < cells.size(); ++c)
+    for (std::size_t c = 0; c < cells.size() && cell_of[k] < 0; ++c) {
+      if (cell_box[c].IsOut(pnt(out.chambers[k].reference))) continue;
+      if (!in_cell[c]) in_cell[c] = std::make_unique<Inside>(cells[c]);
       if ((*in_cell[c])(out.chambers[k].reference)) cell_of[k] = static_cast<int>(c);
+    }
     if (cell_of[k] < 0)
       throw FeatureFailure("chamber " + std::to_string(k + 1) + ": its reference point lies in no cell of the core");
   }
@@ -364,7 +397,7 @@ CoreBuild build_core_tools(const blade::BladeModel& model, const CoreDefinition&
     for (const TopoDS_Shape& f : faces_of(cells[c]))
       if (const int r = rib_of(names.get(f), out.ribs); r >= 0) rib = r;
     if (rib < 0) throw FeatureFailure("a cell of the core belongs to no chamber and no rib");
-    out.rib_volumes[static_cast<std::size_t>(rib)] += volume_of(cells[c]);
+    out.rib_volumes[static_cast<std::size_t>(rib)] += cell_volume[c];
   }
   out.seconds.emplace_back("split", sw.lap());
 
@@ -374,7 +407,7 @@ CoreBuild build_core_tools(const blade::BladeModel& model, const CoreDefinition&
   for (std::size_t k = 0; k < cell_of.size(); ++k) systems[cell_of[k]].push_back(static_cast<int>(k));
   for (const auto& [cell_index, members] : systems) {
     TopoDS_Shape cell = cells[static_cast<std::size_t>(cell_index)];
-    const double v_before = volume_of(cell);
+    const double v_before = cell_volume[static_cast<std::size_t>(cell_index)];
     // Fillets on every edge between a rib face and the inner wall.
     TopTools_IndexedDataMapOfShapeListOfShape edge_faces;
     TopExp::MapShapesAndAncestors(cell, TopAbs_EDGE, TopAbs_FACE, edge_faces);
@@ -437,13 +470,21 @@ CoreBuild build_core_tools(const blade::BladeModel& model, const CoreDefinition&
       pieces = solids_of(split.Shape());
     }
     ChamberSystem sys;
-    for (const TopoDS_Shape& piece : pieces) {
+    const std::vector<double> piece_volume = volumes_of(pieces);
+    for (std::size_t pc = 0; pc < pieces.size(); ++pc) {
+      const TopoDS_Shape& piece = pieces[pc];
       int owner = -1;
-      Inside in_piece(piece);
-      for (int k : members)
-        if (in_piece(out.chambers[static_cast<std::size_t>(k)].reference)) owner = k;
+      Bnd_Box box;
+      BRepBndLib::Add(piece, box);
+      std::optional<Inside> in_piece;
+      for (int k : members) {
+        const Vec3& ref = out.chambers[static_cast<std::size_t>(k)].reference;
+        if (box.IsOut(pnt(ref))) continue;
+        if (!in_piece) in_piece.emplace(piece);
+        if ((*in_piece)(ref)) owner = k;
+      }
       if (owner < 0) throw FeatureFailure("a piece of a chamber system holds no chamber reference point");
-      const double v = volume_of(piece);
+      const double v = piece_volume[pc];
       out.chambers[static_cast<std::size_t>(owner)].volume += v;
       sys.volume += v;  // the pieces' shared faces cancel: the merged solid's volume is their sum
       for (const TopoDS_Shape& f : faces_of(piece))

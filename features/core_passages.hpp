@@ -61,7 +61,7 @@ struct CoreBuild {
   std::vector<FeatureTool> cut_tools;
   std::vector<double> inlet_volumes;  ///< mm^3 per inlet, as its expected volume
   std::optional<EndWall> hub_floor, tip_cap;  ///< none when that end is open
-  double core_volume = 0;                     ///< mm^3, the core before ribs and fillets
+  double core_volume = 0;                     ///< mm^3, the core before ribs and fillets (sum of its cells)
   std::vector<double> rib_volumes;            ///< mm^3 per rib, rib material inside the core
   std::vector<double> fillet_volumes;         ///< mm^3 per rib, material its fillets leave in the blade
   std::vector<std::pair<std::string, double>> seconds;  ///< stage timings

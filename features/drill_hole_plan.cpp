@@ -283,7 +283,7 @@ std::vector<HolePlan> initial_plans(const std::vector<CylindricalHole>& holes, c
 // holes too close to each other fall back together (the boolean path fuses overlapping tools).
 void plan_holes(const Part& part, std::vector<HolePlan>& plans, const std::vector<CylindricalHole>& holes,
                 const DrillOptions& o) {
-  const int threads = worker_count(o.parallel);
+  const int threads = o.parallel ? parallel_workers() : 1;
   std::vector<Workspace> ws(static_cast<std::size_t>(threads));
   for (Workspace& w : ws) {
     w.part = &part;
@@ -291,7 +291,7 @@ void plan_holes(const Part& part, std::vector<HolePlan>& plans, const std::vecto
     w.classifiers.resize(part.faces.size());
     w.intersectors.resize(part.faces.size());
   }
-  for_each_index(static_cast<int>(plans.size()), o.parallel,
+  parallel_for(static_cast<int>(plans.size()), threads,
                  [&](int i, int k) { plan_hole(ws[static_cast<std::size_t>(k)], plans[static_cast<std::size_t>(i)], o); });
   std::vector<int> order;
   for (int i = 0; i < static_cast<int>(plans.size()); ++i) order.push_back(i);

@@ -19,10 +19,6 @@
 
 namespace cg::features::drill_detail {
 
-// Parallel work items (src/core/parallel.hpp).
-using ::cg::for_each_index;
-using ::cg::worker_count;
-
 /// A face of the (patched) part.
 struct FaceInfo {
   TopoDS_Face face;      // oriented as in its shell (relative)

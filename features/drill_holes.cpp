@@ -264,7 +264,7 @@ DrillResult drill_holes(const brep::NamedShape& input, const std::vector<Cylindr
   t = Clock::now();
   std::vector<std::string> failures(plans.size() + part.faces.size());
   std::vector<double> balance(part.faces.size(), 0.0);
-  for_each_index(static_cast<int>(plans.size() + rebuilt_ids.size()), o.parallel, [&](int j, int) {
+  parallel_for(static_cast<int>(plans.size() + rebuilt_ids.size()), o.parallel ? parallel_workers() : 1, [&](int j, int) {
     if (j < static_cast<int>(plans.size())) {
       DrilledHole& dh = r.holes[static_cast<std::size_t>(j)];
       if (!dh.drilled) return;

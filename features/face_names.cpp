@@ -5,6 +5,7 @@
 #include <BRepLib.hxx>
 #include <BRep_Builder.hxx>
 #include <GProp_GProps.hxx>
+#include <OSD_Parallel.hxx>
 #include <ShapeAnalysis_FreeBounds.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
@@ -126,6 +127,14 @@ double volume_of(const TopoDS_Shape& shape) {
   GProp_GProps p;
   BRepGProp::VolumeProperties(shape, p, 1e-9);
   return p.Mass();
+}
+
+std::vector<double> volumes_of(const std::vector<TopoDS_Shape>& shapes) {
+  std::vector<double> v(shapes.size(), 0.0);
+  // Read-only on the shapes (each integration has its own surface adaptors), so they run in parallel.
+  OSD_Parallel::For(0, static_cast<int>(shapes.size()),
+                    [&](int i) { v[static_cast<std::size_t>(i)] = volume_of(shapes[static_cast<std::size_t>(i)]); });
+  return v;
 }
 
 }  // namespace cg::features

@@ -46,5 +46,7 @@ TopoDS_Shape merge_cells(const std::vector<TopoDS_Shape>& cells);
 
 /// Volume by BRepGProp at relative accuracy 1e-9 (the default misses small features, see booleans notes).
 double volume_of(const TopoDS_Shape& shape);
+/// volume_of of every shape, computed in parallel.
+std::vector<double> volumes_of(const std::vector<TopoDS_Shape>& shapes);
 
 }  // namespace cg::features

@@ -15,6 +15,7 @@
 #include "src/blade/format.hpp"
 #include "src/algo/project_point_surface.hpp"
 #include "src/core/error.hpp"
+#include "src/core/newton.hpp"
 #include "src/fit/interpolate.hpp"
 #include "src/fit/skin.hpp"
 
@@ -157,18 +158,15 @@ class TubeBuilder {
     if (!up) std::swap(lo, hi);
     auto f = [&](double s) { return end_distance(a, s, up, e) - e.gap; };
     const double far_side = up ? lo : hi, near_side = up ? hi : lo;
-    if (f(far_side) <= 0)
+    const double f_far = f(far_side), f_near = f(near_side);
+    if (f_far <= 0)
       throw InvalidGeometry("rib " + std::to_string(index_) + ": the turnaround gap " + fmt(e.gap) +
                             " mm leaves no rib (the end wall is closer than the gap even at the rib's other end)");
-    if (f(near_side) >= 0)
+    if (f_near >= 0)
       throw InvalidGeometry("rib " + std::to_string(index_) + ": cannot place the turnaround end " + fmt(e.gap) +
                             " mm from its end wall within the blade");
-    double x0 = far_side, x1 = near_side;  // f(x0) > 0 >= f(x1)
-    for (int it = 0; it < 60; ++it) {
-      const double xm = 0.5 * (x0 + x1);
-      (f(xm) > 0 ? x0 : x1) = xm;
-    }
-    return 0.5 * (x0 + x1);
+    // f falls from the far side to the near side; to 1e-14 of the span range (~1e-12 mm).
+    return newton::solve_bracketed_secant(f, far_side, near_side, f_far, f_near, 1e-14 * std::abs(hi - lo));
   }
 
   // Side curve M + side * (t / 2) N from the bottom junction to the top (side = -1) or from the top

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "src/algo/project_point_surface.hpp"
+#include "src/blade/surface_iso.hpp"
 #include "src/core/error.hpp"
 
 namespace cg::blade {
@@ -28,6 +29,7 @@ BladeCoordinates::BladeCoordinates(const BladeModel& model) : model_(&model) {
   }
   normal_sign_ = votes >= 0 ? 1.0 : -1.0;
   projector_ = std::make_unique<SurfaceProjector>(s);
+  iso_nodes_ = std::make_shared<const IsoArcLengthNodes>(detail::iso_curve_v(s, vm));
 }
 
 BladeCoordinates::~BladeCoordinates() = default;
@@ -45,7 +47,7 @@ const SpanSection& BladeCoordinates::section(double span) const {
       return *cache_[i].section;
     }
   // Built before the cache changes, so a throwing span (outside the domain) leaves it as it was.
-  auto made = std::make_unique<const SpanSection>(*model_, span);
+  auto made = std::make_unique<const SpanSection>(*model_, span, iso_nodes_);
   if (cache_.size() < kSectionCacheSize) {
     cache_.push_back({span, clock_, std::move(made)});
     last_hit_ = cache_.size() - 1;

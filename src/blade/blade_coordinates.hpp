@@ -83,6 +83,7 @@ class BladeCoordinates {
   const BladeModel* model_;
   double normal_sign_ = 1;  // +1 when S_u x S_v points outward
   std::unique_ptr<SurfaceProjector> projector_;
+  std::shared_ptr<const IsoArcLengthNodes> iso_nodes_;  // Gauss nodes shared by every span's section
   struct CachedSection {
     double span = 0;
     std::uint64_t last_used = 0;  // cache clock at the last use (least recently used goes first)

@@ -3,14 +3,15 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "src/core/error.hpp"
 
 namespace cg::blade {
 
-template <int Dim>
-ChordwiseMap<Dim>::ChordwiseMap(const BSplineCurve<Dim>& c, double le, double te)
-    : curve_(&c), table_(c), first_(c.first_param()), period_(c.period()) {
+template <int Dim, class Table>
+ChordwiseMap<Dim, Table>::ChordwiseMap(const BSplineCurve<Dim>& c, double le, double te, Table table)
+    : curve_(&c), table_(std::move(table)), first_(c.first_param()), period_(c.period()) {
   require(c.is_periodic(), "chordwise coordinate: the section curve must be closed (periodic)");
   le_ = c.check_param(le);
   te_ = c.check_param(te);
@@ -20,20 +21,20 @@ ChordwiseMap<Dim>::ChordwiseMap(const BSplineCurve<Dim>& c, double le, double te
   suction_ = length_to(te_) - at_le_;
 }
 
-template <int Dim>
-double ChordwiseMap<Dim>::length_to(double u) const {
+template <int Dim, class Table>
+double ChordwiseMap<Dim, Table>::length_to(double u) const {
   const double k = std::floor((u - first_) / period_);
   return table_.length_to(std::clamp(u - k * period_, first_, first_ + period_)) + k * table_.total();
 }
 
-template <int Dim>
-double ChordwiseMap<Dim>::param_at_length(double s) const {
+template <int Dim, class Table>
+double ChordwiseMap<Dim, Table>::param_at_length(double s) const {
   const double k = std::floor(s / table_.total());
   return table_.param_at(std::clamp(s - k * table_.total(), 0.0, table_.total())) + k * period_;
 }
 
-template <int Dim>
-double ChordwiseMap<Dim>::param_at(double c) const {
+template <int Dim, class Table>
+double ChordwiseMap<Dim, Table>::param_at(double c) const {
   if (!(c >= -1 && c <= 1))  // (message built only on failure: hot path)
     throw InvalidGeometry("chordwise coordinate " + std::to_string(c) + " is outside [-1, 1]");
   if (c == 0) return le_;
@@ -42,8 +43,8 @@ double ChordwiseMap<Dim>::param_at(double c) const {
   return param_at_length(at_le_ + suction_ + (1 + c) * pressure_length());
 }
 
-template <int Dim>
-double ChordwiseMap<Dim>::chordwise_at(double u) const {
+template <int Dim, class Table>
+double ChordwiseMap<Dim, Table>::chordwise_at(double u) const {
   double d = u - le_;
   d -= std::floor(d / period_) * period_;  // [0, period): forward from the LE
   const double w = le_ + d;
@@ -56,5 +57,6 @@ double ChordwiseMap<Dim>::chordwise_at(double u) const {
 
 template class ChordwiseMap<2>;
 template class ChordwiseMap<3>;
+template class ChordwiseMap<3, IsoArcLength>;
 
 }  // namespace cg::blade

@@ -7,19 +7,25 @@
 // arc length from the LE; c in [-1, 0] the same on the pressure side (|c| = fraction of the pressure
 // side's arc length from the LE), so c = +1 and c = -1 are both the TE. c = 0, +-1 map to the LE and
 // TE parameters exactly (not through the arc-length tables).
+// Table: the arc-length table of the curve (ArcLength<Dim>, or IsoArcLength for the wall's iso-curves,
+// which many spans build with shared Gauss nodes): total(), length_to(u), param_at(s).
 #include <vector>
 
 #include "src/analyze/arc_length.hpp"
+#include "src/blade/iso_arc_length.hpp"
 #include "src/core/bspline_curve.hpp"
 
 namespace cg::blade {
 
-template <int Dim>
+template <int Dim, class Table = ArcLength<Dim>>
 class ChordwiseMap {
  public:
   /// le_param, te_param: the LE and TE on the (periodic) curve, which must outlive the map.
   /// Throws InvalidGeometry for a non-periodic curve or LE == TE.
-  ChordwiseMap(const BSplineCurve<Dim>& closed_curve, double le_param, double te_param);
+  ChordwiseMap(const BSplineCurve<Dim>& closed_curve, double le_param, double te_param)
+      : ChordwiseMap(closed_curve, le_param, te_param, Table(closed_curve)) {}
+  /// With the curve's table built by the caller.
+  ChordwiseMap(const BSplineCurve<Dim>& closed_curve, double le_param, double te_param, Table table);
 
   double suction_length() const { return suction_; }
   double pressure_length() const { return table_.total() - suction_; }
@@ -38,11 +44,12 @@ class ChordwiseMap {
   double length_to(double u) const;  // arc length from the curve's first parameter, continued by periods
   double param_at_length(double s) const;
   const BSplineCurve<Dim>* curve_;
-  ArcLength<Dim> table_;
+  Table table_;
   double first_, period_, le_, te_, at_le_, suction_;
 };
 
 extern template class ChordwiseMap<2>;
 extern template class ChordwiseMap<3>;
+extern template class ChordwiseMap<3, IsoArcLength>;
 
 }  // namespace cg::blade

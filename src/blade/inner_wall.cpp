@@ -4,9 +4,12 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <optional>
 
 #include "src/blade/format.hpp"
 #include "src/core/knots.hpp"
+#include "src/core/parallel.hpp"
 #include "src/fit/approximate.hpp"
 #include "src/fit/skin.hpp"
 
@@ -255,24 +258,25 @@ double smoothstep(double x) { return x * x * (3 - 2 * x); }
 // Exact inner-wall points of one span, sampled along the trimmed section.
 class ExactSection {
  public:
+  // coords: the calling thread's (sections are built and densified in parallel).
   ExactSection(const BladeCoordinates& coords, const ThicknessField& thickness, double span)
-      : coords_(&coords), thickness_(&thickness), span_(span) {
+      : thickness_(&thickness), span_(span) {
     info = inner_wall_crease(coords, thickness, span);
     // Steps: at most 1 degree of normal turning and 1/400 of the LE-TE distance along the inner wall,
     // so the curve between samples is resolved far below any fit tolerance.
     const double max_turn = 1.0 * kPi / 180;
     const double max_step = (coords.frame(span, 0.0).point - coords.frame(span, 1.0).point).norm() / 400;
     const int base = 48;
-    Sample prev = sample(0.0);
+    Sample prev = sample(coords, 0.0);
     samples_.push_back(prev);
     std::vector<Sample> stack;
     for (int k = 1; k <= 2 * base; ++k) {
-      stack.assign(1, sample(2.0 * k / (2 * base)));
+      stack.assign(1, sample(coords, 2.0 * k / (2 * base)));
       while (!stack.empty()) {
         const Sample& b = stack.back();
         const double angle = std::acos(std::clamp(prev.normal.dot(b.normal), -1.0, 1.0));
         if ((angle > max_turn || (b.inner - prev.inner).norm() > max_step) && b.x - prev.x > 1e-7) {
-          stack.push_back(sample(0.5 * (prev.x + b.x)));
+          stack.push_back(sample(coords, 0.5 * (prev.x + b.x)));
           continue;
         }
         prev = b;
@@ -303,11 +307,11 @@ class ExactSection {
                             std::lower_bound(params.begin(), params.end(), a));
   }
   /// Halves every sample step that touches [a, b].
-  void densify(double a, double b) {
+  void densify(const BladeCoordinates& coords, double a, double b) {
     std::vector<Sample> out;
     for (std::size_t i = 0; i + 1 < samples_.size(); ++i) {
       out.push_back(samples_[i]);
-      if (params[i + 1] >= a && params[i] <= b) out.push_back(sample(0.5 * (samples_[i].x + samples_[i + 1].x)));
+      if (params[i + 1] >= a && params[i] <= b) out.push_back(sample(coords, 0.5 * (samples_[i].x + samples_[i + 1].x)));
     }
     out.push_back(samples_.back());
     samples_ = std::move(out);
@@ -317,7 +321,7 @@ class ExactSection {
  private:
   // Foot point of position x: the pressure half blends its span from the crease's pressure span to
   // the section span with zero slope at both ends, so the section stays smooth through the LE.
-  Sample sample(double x) const {
+  Sample sample(const BladeCoordinates& coords, double x) const {
     Sample s;
     s.x = x;
     if (x <= 1) {
@@ -327,7 +331,7 @@ class ExactSection {
       s.chord = info.suction_chord * (x - 1);
       s.span = span_;
     }
-    const BladeFrame f = coords_->frame(s.span, s.chord);
+    const BladeFrame f = coords.frame(s.span, s.chord);
     s.outer = f.point;
     s.normal = f.normal;
     s.inner = f.point - thickness_->at(s.span, s.chord) * f.normal;
@@ -345,7 +349,6 @@ class ExactSection {
     params.back() = 1.0;
   }
 
-  const BladeCoordinates* coords_;
   const ThicknessField* thickness_;
   double span_;
   std::vector<Sample> samples_;
@@ -381,19 +384,40 @@ SectionFit fit_section(const ExactSection& s, const std::vector<double>& knots) 
   return f;
 }
 
+// One BladeCoordinates per worker thread (each caches its own sections); sections of different spans
+// are independent, so they are built, densified, fitted and checked in parallel.
+class Workers {
+ public:
+  explicit Workers(const BladeModel& model) {
+    for (int w = 0; w < parallel_workers(); ++w) coords_.push_back(std::make_unique<BladeCoordinates>(model));
+  }
+  const BladeCoordinates& first() const { return *coords_.front(); }
+  /// f(i, coords) for i in [0, n); the error of the lowest failing i is rethrown (as in a serial loop).
+  template <class F>
+  void run(std::size_t n, F&& f) const {
+    parallel_for(static_cast<int>(n), static_cast<int>(coords_.size()),
+                 [&](int i, int w) { f(static_cast<std::size_t>(i), *coords_[static_cast<std::size_t>(w)]); });
+  }
+
+ private:
+  std::vector<std::unique_ptr<BladeCoordinates>> coords_;
+};
+
 // Fits every section on one shared knot vector, refining it where any section exceeds tol / 2.
-std::vector<BSplineCurve<3>> fit_sections(std::vector<ExactSection>& sections, std::vector<double>& knots,
-                                          double tol) {
+std::vector<BSplineCurve<3>> fit_sections(const Workers& workers, std::vector<ExactSection>& sections,
+                                          std::vector<double>& knots, double tol) {
   for (int round = 0; round < 30; ++round) {
-    // Schoenberg-Whitney with margin: every section needs a few samples in every knot interval.
     const std::vector<double> b0 = breaks_of(knots);
-    for (auto& sec : sections)
+    std::vector<SectionFit> fits(sections.size());
+    workers.run(sections.size(), [&](std::size_t i, const BladeCoordinates& coords) {
+      // Schoenberg-Whitney with margin: every section needs a few samples in every knot interval.
+      ExactSection& sec = sections[i];
       for (std::size_t k = 0; k + 1 < b0.size(); ++k)
-        for (int guard = 0; guard < 8 && sec.count(b0[k], b0[k + 1]) < 4; ++guard) sec.densify(b0[k], b0[k + 1]);
-    std::vector<SectionFit> fits;
-    fits.reserve(sections.size());
-    for (const auto& s : sections) fits.push_back(fit_section(s, knots));
-    const std::vector<double> br = breaks_of(knots);
+        for (int guard = 0; guard < 8 && sec.count(b0[k], b0[k + 1]) < 4; ++guard)
+          sec.densify(coords, b0[k], b0[k + 1]);
+      fits[i] = fit_section(sec, knots);
+    });
+    const std::vector<double>& br = b0;
     std::vector<double> insert;
     for (std::size_t k = 0; k + 1 < br.size(); ++k) {
       double e = 0;
@@ -460,7 +484,7 @@ InnerWall build_inner_wall(const BladeModel& model, const ThicknessField& thickn
   require(options.tolerance > 0 && std::isfinite(options.tolerance),
           "inner wall: tolerance must be > 0 mm, got " + fmt(options.tolerance));
   require(thickness.max_value() > 0, "inner wall: the thickness field is empty");
-  const BladeCoordinates coords(model);
+  const Workers workers(model);
   const SpanRange dom = span_domain(model);
   const double ob = std::min(0.0 - dom.lo, dom.hi - 1.0);
   const double lo = std::isnan(options.span_min) ? dom.lo + 0.2 * ob : options.span_min;
@@ -474,7 +498,11 @@ InnerWall build_inner_wall(const BladeModel& model, const ThicknessField& thickn
   const int initial = 9;
   for (int k = 0; k < initial; ++k) spans.push_back(lo + (hi - lo) * k / (initial - 1));
   std::vector<ExactSection> sections;
-  for (double s : spans) sections.push_back(ExactSection(coords, thickness, s));
+  {
+    std::vector<std::optional<ExactSection>> built(spans.size());
+    workers.run(spans.size(), [&](std::size_t k, const BladeCoordinates& c) { built[k].emplace(c, thickness, spans[k]); });
+    for (auto& b : built) sections.push_back(std::move(*b));
+  }
 
   // Initial knots: averaged over the middle section's parameters, about one pole per four samples.
   const ExactSection& mid = sections[sections.size() / 2];
@@ -483,28 +511,34 @@ InnerWall build_inner_wall(const BladeModel& model, const ThicknessField& thickn
 
   InnerWall wall;
   for (int round = 0; round < 12; ++round) {
-    const std::vector<BSplineCurve<3>> curves = fit_sections(sections, knots, tol);
+    const std::vector<BSplineCurve<3>> curves = fit_sections(workers, sections, knots, tol);
     SkinOptions so;
     so.degree_v = 3;
     so.v_params = spans;
     const BSplineSurface<3> S = skin(curves, so).surface;
     // Verify midway between fitted spans; bisect where the exact section is farther than tol.
+    const std::size_t gaps = spans.size() - 1;
+    std::vector<std::optional<ExactSection>> midway(gaps);
+    std::vector<double> error(gaps, 0.0);
+    std::vector<int> checked_at(gaps, 0);
+    workers.run(gaps, [&](std::size_t k, const BladeCoordinates& c) {
+      const double sm = 0.5 * (spans[k] + spans[k + 1]);
+      const ExactSection& e = midway[k].emplace(c, thickness, sm);
+      for (std::size_t i = 0; i < e.points.size(); i += 2) {
+        error[k] = std::max(error[k], surface_distance(S, e.points[i], e.params[i], sm));
+        ++checked_at[k];
+      }
+    });
     std::vector<double> new_spans;
     std::vector<ExactSection> new_sections;
     double worst = 0;
     int checked = 0;
-    for (std::size_t k = 0; k + 1 < spans.size(); ++k) {
-      const double sm = 0.5 * (spans[k] + spans[k + 1]);
-      ExactSection e(coords, thickness, sm);
-      double err = 0;
-      for (std::size_t i = 0; i < e.points.size(); i += 2) {
-        err = std::max(err, surface_distance(S, e.points[i], e.params[i], sm));
-        ++checked;
-      }
-      worst = std::max(worst, err);
-      if (err > 0.5 * tol) {
-        new_spans.push_back(sm);
-        new_sections.push_back(std::move(e));
+    for (std::size_t k = 0; k < gaps; ++k) {
+      worst = std::max(worst, error[k]);
+      checked += checked_at[k];
+      if (error[k] > 0.5 * tol) {
+        new_spans.push_back(midway[k]->span());
+        new_sections.push_back(std::move(*midway[k]));
       }
     }
     if (new_spans.empty()) {

@@ -13,6 +13,7 @@
 
 #include "src/blade/blade_surface.hpp"
 #include "src/blade/chordwise.hpp"
+#include "src/blade/iso_arc_length.hpp"
 
 namespace cg::blade {
 
@@ -20,6 +21,9 @@ class SpanSection {
  public:
   /// span in the surface's v domain [-overbuild, 1 + overbuild] (InvalidGeometry outside).
   SpanSection(const BladeModel& model, double span);
+  /// The same, with the Gauss nodes of the arc-length table shared by all spans (iso_arc_length.hpp:
+  /// built from any iso-curve of model.surface): the section then costs a few multiply-adds per node.
+  SpanSection(const BladeModel& model, double span, std::shared_ptr<const IsoArcLengthNodes> nodes);
 
   double span() const { return span_; }
   /// The 3D section curve; its parameter is the surface u (period 1, seam at 0).
@@ -39,7 +43,7 @@ class SpanSection {
   double span_ = 0;
   double u_te_ = 0;
   std::shared_ptr<const BSplineCurve<3>> curve_;  // shared, so copies keep map_ valid
-  ChordwiseMap<3> map_;
+  ChordwiseMap<3, IsoArcLength> map_;
 };
 
 }  // namespace cg::blade

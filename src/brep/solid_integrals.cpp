@@ -125,7 +125,7 @@ SolidIntegrals integrate_solid(const TopoDS_Shape& shape, double eps, bool paral
   std::vector<std::size_t> order(items.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return items[a].cost > items[b].cost; });
-  for_each_index(static_cast<int>(order.size()), parallel, [&](int k, int) {
+  parallel_for(static_cast<int>(order.size()), parallel ? parallel_workers() : 1, [&](int k, int) {
     Item& it = items[order[static_cast<std::size_t>(k)]];
     BRepGProp_Face bf;
     BRepGProp_Domain bd;

@@ -22,6 +22,7 @@
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -87,6 +88,38 @@ double solve_bracketed(F&& f, double lo, double hi, int sign_lo, double x, doubl
     if (done) break;
   }
   return x;
+}
+
+/// Root of f in [lo, hi] without derivatives, f_lo = f(lo) and f_hi = f(hi) of opposite signs: the
+/// Illinois variant of regula falsi (Dowell & Jarratt, BIT 11 (1971)): the secant of the bracket ends,
+/// with the value at an end halved when that end is kept twice in a row, so both ends move and the
+/// bracket shrinks superlinearly (order ~1.44) to the root. Stops when f = 0, |f| <= ftol (returns that
+/// point) or the bracket is at most xtol wide (returns its middle). f(x) returns f(x).
+template <class F>
+double solve_bracketed_secant(F&& f, double lo, double hi, double f_lo, double f_hi, double xtol,
+                              double ftol = 0.0, int max_iterations = 200) {
+  if (f_lo == 0) return lo;
+  if (f_hi == 0) return hi;
+  double a = lo, b = hi, fa = f_lo, fb = f_hi;
+  int kept = 0;  // +1: a was kept by the last step, -1: b was
+  for (int it = 0; it < max_iterations && std::abs(b - a) > xtol; ++it) {
+    double c = (a * fb - b * fa) / (fb - fa);
+    if (!(c > std::min(a, b) && c < std::max(a, b))) c = 0.5 * (a + b);
+    const double fc = f(c);
+    if (fc == 0 || std::abs(fc) <= ftol) return c;
+    if ((fc < 0) == (fb < 0)) {  // the root lies between a and c
+      b = c;
+      fb = fc;
+      if (kept == 1) fa *= 0.5;
+      kept = 1;
+    } else {
+      a = c;
+      fa = fc;
+      if (kept == -1) fb *= 0.5;
+      kept = -1;
+    }
+  }
+  return 0.5 * (a + b);
 }
 
 // ---- linear algebra helpers -----------------------------------------------------------------------

@@ -1,45 +1,46 @@
 #pragma once
-// Independent work items on all cores: a shared counter hands out the next index to the next free
-// thread (no fixed partition, so a few large items do not leave a core idle).
+// Independent work items on the machine's cores (std::thread; no OCCT or TBB in the kernel).
 #include <algorithm>
 #include <atomic>
 #include <exception>
-#include <functional>
-#include <mutex>
 #include <thread>
 #include <vector>
 
 namespace cg {
 
-/// Threads for parallel work: one per core, or 1.
-inline int worker_count(bool parallel) {
-  return parallel ? std::max(1, static_cast<int>(std::thread::hardware_concurrency())) : 1;
-}
+/// Worker threads for parallel loops: one per core (at least 1).
+inline int parallel_workers() { return std::max(1, static_cast<int>(std::thread::hardware_concurrency())); }
 
-/// Runs f(i, worker) for i in [0, n) on up to worker_count(parallel) threads (worker < that count).
-/// The first exception stops the hand-out of further items and is rethrown after all threads ended.
-inline void for_each_index(int n, bool parallel, const std::function<void(int, int)>& f) {
-  const int threads = std::min(n, worker_count(parallel));
-  if (threads <= 1) {
+/// Runs f(i, worker) for every i in [0, n) on up to `workers` threads (worker in [0, workers): give
+/// each worker its own non-thread-safe state). Items are taken in order as workers become free. When
+/// items throw, the remaining ones are skipped and the exception of the lowest item index is rethrown,
+/// so the error does not depend on the scheduling.
+template <class F>
+void parallel_for(int n, int workers, F&& f) {
+  workers = std::clamp(workers, 1, std::max(n, 1));
+  if (workers == 1) {
     for (int i = 0; i < n; ++i) f(i, 0);
     return;
   }
   std::atomic<int> next{0};
-  std::vector<std::thread> pool;
-  std::exception_ptr error;
-  std::mutex m;
-  for (int k = 0; k < threads; ++k)
-    pool.emplace_back([&, k] {
+  std::vector<std::exception_ptr> errors(static_cast<std::size_t>(n));
+  std::atomic<bool> failed{false};
+  auto run = [&](int worker) {
+    for (int i = next++; i < n && !failed; i = next++) {
       try {
-        for (int i = next++; i < n; i = next++) f(i, k);
+        f(i, worker);
       } catch (...) {
-        std::lock_guard<std::mutex> g(m);
-        if (!error) error = std::current_exception();
-        next = n;
+        errors[static_cast<std::size_t>(i)] = std::current_exception();
+        failed = true;
       }
-    });
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int w = 1; w < workers; ++w) pool.emplace_back(run, w);
+  run(0);
   for (std::thread& t : pool) t.join();
-  if (error) std::rethrow_exception(error);
+  for (const std::exception_ptr& e : errors)
+    if (e) std::rethrow_exception(e);
 }
 
 }  // namespace cg

@@ -1,0 +1,75 @@
+// newton::solve_bracketed_secant (Illinois regula falsi) against closed-form roots, and against
+// bisection's evaluation count on functions where plain regula falsi stalls; parallel_for runs every
+// item once and reports the error of the lowest failing item whatever the scheduling.
+#define BOOST_TEST_MODULE secant_and_parallel
+#include <boost/test/unit_test.hpp>
+
+#include <atomic>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "src/core/newton.hpp"
+#include "src/core/parallel.hpp"
+
+using namespace cg;
+
+BOOST_AUTO_TEST_CASE(illinois_finds_closed_form_roots_in_few_evaluations) {
+  struct Case {
+    double (*f)(double);
+    double lo, hi, root;
+  };
+  const Case cases[] = {
+      {[](double x) { return x * x * x - 2; }, 0.0, 2.0, std::cbrt(2.0)},
+      // Convex and flat on one side: plain regula falsi keeps one end for ever (hundreds of steps).
+      {[](double x) { return std::pow(x, 10) - 0.5; }, 0.0, 1.0, std::pow(0.5, 0.1)},
+      {[](double x) { return std::exp(x) - 1e4; }, 0.0, 20.0, std::log(1e4)},
+      // Decreasing: f(lo) > 0 > f(hi).
+      {[](double x) { return std::cos(x) - x; }, 0.0, 1.0, 0.7390851332151607},
+  };
+  for (const Case& c : cases) {
+    int evaluations = 0;
+    auto f = [&](double x) {
+      ++evaluations;
+      return c.f(x);
+    };
+    const double x = newton::solve_bracketed_secant(f, c.lo, c.hi, c.f(c.lo), c.f(c.hi), 1e-14);
+    BOOST_TEST(std::abs(x - c.root) <= 2e-14 * (1 + std::abs(c.root)));
+    // Bisection needs log2(width / 1e-14) ~ 47 .. 51 evaluations for the same bracket.
+    BOOST_TEST(evaluations <= 30, "evaluations " << evaluations);
+  }
+  // A root at a bracket end, and |f| <= ftol ending early at that point.
+  auto line = [](double x) { return x - 0.25; };
+  BOOST_TEST(newton::solve_bracketed_secant(line, 0.25, 1.0, 0.0, 0.75, 1e-14) == 0.25);
+  const double early = newton::solve_bracketed_secant(line, 0.0, 1.0, -0.25, 0.75, 1e-14, 1e-3);
+  BOOST_TEST(std::abs(early - 0.25) <= 1e-3);
+}
+
+BOOST_AUTO_TEST_CASE(parallel_for_runs_every_item_once_and_rethrows_the_lowest_error) {
+  for (int workers : {1, 2, 4}) {
+    std::vector<std::atomic<int>> hits(1000);
+    std::atomic<int> bad_worker{0};  // (Boost.Test's macros are not for worker threads)
+    parallel_for(1000, workers, [&](int i, int w) {
+      if (w < 0 || w >= workers) ++bad_worker;
+      ++hits[static_cast<std::size_t>(i)];
+    });
+    int wrong = 0;
+    for (auto& h : hits) wrong += h != 1;
+    BOOST_TEST(wrong == 0);
+    BOOST_TEST(bad_worker == 0);
+    // Items 300 and 700 throw: the error of 300 is reported, however the items were scheduled.
+    for (int repeat = 0; repeat < 20; ++repeat) {
+      std::string what;
+      try {
+        parallel_for(1000, workers, [&](int i, int) {
+          if (i == 300 || i == 700) throw std::runtime_error("item " + std::to_string(i));
+        });
+      } catch (const std::runtime_error& e) {
+        what = e.what();
+      }
+      BOOST_TEST(what == "item 300");
+    }
+  }
+  parallel_for(0, 2, [](int, int) { throw std::runtime_error("no items: never called"); });
+}
