@@ -83,8 +83,10 @@ BOOST_AUTO_TEST_CASE(interrupt_stops_cleanly) {
   const std::string cmd = "'" + test::kCliBinary.string() + "' build -q -o " + q(out) + " 2> " + q(dir.path / "err.txt") +
                           " & pid=$!; "
                           // Wait until the handler is installed (SIGINT, bit 1 of SigCgt), as a background
-                          // job of a script ignores SIGINT until then.
-                          "while [ -e /proc/$pid ] && ! awk '/^SigCgt/ {exit !index(\"2367abef\", substr($2, 16, 1))}' /proc/$pid/status; "
+                          // job of a script ignores SIGINT until then; and until the job is coolinggen: the
+                          // forked shell catches SIGINT itself until it execs (a kill then was a flaky failure).
+                          "while [ -e /proc/$pid ] && ! { [ \"$(cat /proc/$pid/comm 2>/dev/null)\" = coolinggen ] && "
+                          "awk '/^SigCgt/ {exit !index(\"2367abef\", substr($2, 16, 1))}' /proc/$pid/status; }; "
                           "do sleep 0.01; done; kill -INT $pid; wait $pid";
   const int status = std::system(cmd.c_str());  // sh -c
   const std::string err = read_text(dir.path / "err.txt");
