@@ -9,6 +9,7 @@
 #include <chrono>
 
 #include "features/boolean_alerts.hpp"
+#include "features/boolean_pair_pruning.hpp"
 #include "features/verified_boolean.hpp"
 
 namespace cg::features {
@@ -31,7 +32,7 @@ void collect(const Handle(Message_Report) & report, BooleanRun& run) {
 }  // namespace
 
 BooleanRun run_boolean(const TopoDS_Shape& part, const std::vector<TopoDS_Shape>& tools, BooleanOperation op,
-                       bool parallel, const Message_ProgressRange& range) {
+                       bool parallel, bool prune_face_pairs, const Message_ProgressRange& range) {
   BooleanRun run;
   Message_ProgressScope scope(range, "boolean", 10);
   try {
@@ -39,13 +40,15 @@ BooleanRun run_boolean(const TopoDS_Shape& part, const std::vector<TopoDS_Shape>
     TopTools_ListOfShape args;
     args.Append(part);
     for (const TopoDS_Shape& t : tools) args.Append(t);
-    BOPAlgo_PaveFiller filler;
+    PrunedPaveFiller filler(prune_face_pairs);
     filler.SetArguments(args);
     filler.SetRunParallel(parallel);
     filler.SetNonDestructive(true);
     filler.SetUseOBB(true);
     filler.Perform(scope.Next(7));
     run.seconds_intersect = seconds_since(t0);
+    run.candidate_face_pairs = filler.candidate_face_pairs();
+    run.intersected_face_pairs = filler.kept_face_pairs();
     collect(filler.GetReport(), run);
     if (!scope.More()) {
       run.cancelled = true;

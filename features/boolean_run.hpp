@@ -5,7 +5,7 @@
 //
 // OCCT: BOPAlgo_PaveFiller (intersections, run once) + BOPAlgo_BOP (split faces, classify, build the
 // result). Non-destructive (the inputs are never modified, so a retry starts from the same shapes),
-// OBB pre-filter on, parallel as asked.
+// OBB pre-filter on, parallel as asked, face pairs pruned when asked.
 #include <Message_ProgressRange.hxx>
 #include <TopTools_DataMapOfShapeListOfShape.hxx>
 #include <TopoDS_Shape.hxx>
@@ -26,11 +26,14 @@ struct BooleanRun {
   std::vector<TopoDS_Shape> warning_shapes;
   bool cancelled = false;
   double seconds_intersect = 0, seconds_build = 0;
+  int candidate_face_pairs = 0, intersected_face_pairs = 0;  ///< when pruned (else both 0)
 };
 
 /// Runs `part` op `tools`. Never throws for a bad boolean: errors come back in the run.
+/// `prune_face_pairs`: intersect only the face pairs that can meet (features/boolean_pair_pruning.hpp).
 BooleanRun run_boolean(const TopoDS_Shape& part, const std::vector<TopoDS_Shape>& tools, BooleanOperation op,
-                       bool parallel, const Message_ProgressRange& range = Message_ProgressRange());
+                       bool parallel, bool prune_face_pairs = false,
+                       const Message_ProgressRange& range = Message_ProgressRange());
 
 /// The pieces of an input sub-shape: its images, or the shape itself when it was not split.
 TopTools_ListOfShape pieces_of(const BooleanRun& run, const TopoDS_Shape& s);

@@ -71,7 +71,9 @@ struct Attempt {
 class Engine {
  public:
   Engine(BooleanOperation op, const BooleanOptions& o, BooleanStepReport& report)
-      : op_(op), opt_(o), report_(report) {}
+      : op_(op), opt_(o), report_(report), prune_(o.prune_face_pairs) {}
+
+  void stop_pruning() { prune_ = false; }
 
   std::vector<Unit> units;
   std::vector<std::string> failures;  // features that could not be applied, with the reason
@@ -138,15 +140,35 @@ class Engine {
   Attempt attempt(const brep::NamedShape& part, const std::vector<int>& ids, const std::vector<TopoDS_Shape>& shapes,
                   const std::vector<int>& for_names, bool verify, const std::vector<double>* expected = nullptr,
                   const std::vector<const brep::NamedShape*>* named = nullptr) {
-    Attempt a;
     ++report_.boolean_runs;
     check_cancel(opt_.progress, "verified boolean");
     auto t = Clock::now();
     const Handle(brep::OcctProgress) progress = new brep::OcctProgress(opt_.progress, "verified boolean");
-    const BooleanRun run = run_boolean(part.shape, shapes, op_, opt_.parallel, progress->Start());
+    const bool pruned = prune_;
+    const BooleanRun run = run_boolean(part.shape, shapes, op_, opt_.parallel, pruned, progress->Start());
     progress->throw_if_stopped();
     report_.seconds_boolean += since(t);
     report_.seconds_intersect += run.seconds_intersect;
+    report_.candidate_face_pairs += run.candidate_face_pairs;
+    report_.intersected_face_pairs += run.intersected_face_pairs;
+    if (pruned) {
+      // A failed pruned boolean proves nothing against the tools: repeat it with every face pair.
+      Attempt a = checked(run, part, ids, shapes, for_names, verify, expected, named);
+      if (a.ok()) return a;
+      prune_ = false;
+      ++report_.unpruned_repeats;
+      report_.warnings.push_back("boolean with pruned face pairs rejected (" + (a.failure.empty() ? a.warning : a.failure) +
+                                 "): repeated with every face pair");
+      return attempt(part, ids, shapes, for_names, verify, expected, named);
+    }
+    return checked(run, part, ids, shapes, for_names, verify, expected, named);
+  }
+
+  // The cheap checks (and verify_solid when asked) of one boolean run.
+  Attempt checked(const BooleanRun& run, const brep::NamedShape& part, const std::vector<int>& ids,
+                  const std::vector<TopoDS_Shape>& shapes, const std::vector<int>& for_names, bool verify,
+                  const std::vector<double>* expected, const std::vector<const brep::NamedShape*>* named) {
+    Attempt a;
     if (run.result.IsNull() || !run.errors.empty()) {
       a.failure = "OCCT boolean failed (" + join(run.errors) + ")";
       return a;
@@ -158,7 +180,7 @@ class Engine {
       else a.warning = "OCCT boolean warned (" + join(run.warnings) + ")";
       return a;
     }
-    t = Clock::now();
+    auto t = Clock::now();
     std::vector<const brep::NamedShape*> tool_names;
     if (named) tool_names = *named;
     else
@@ -324,6 +346,7 @@ class Engine {
   BooleanOperation op_;
   const BooleanOptions& opt_;
   BooleanStepReport& report_;
+  bool prune_;
 };
 
 }  // namespace
@@ -448,6 +471,7 @@ brep::NamedShape BooleanStep::apply(const brep::NamedShape& part) {
       report_.warnings.push_back("the result failed " + report_.check.failed_names() +
                                  ": booleans redone with verify_solid on each");
       engine.reset_outcomes();
+      engine.stop_pruning();
       result = engine.apply_group(base, all, /*verify=*/true);
       if (engine.failures.empty() && !engine.verify_final(result))
         failure = "the result of the step failed " + report_.check.failed_names() + " although every tool passed alone";

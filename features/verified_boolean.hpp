@@ -61,6 +61,10 @@ struct BooleanOptions {
   int max_retries = 2;                 ///< perturbed retries of a guilty tool
   double perturbation = 0.01;          ///< mm, shift applied on a retry (rotations: 0.37 rad, 1.2 rad)
   bool parallel = true;
+  /// Intersect only the face pairs that can meet (features/boolean_pair_pruning.hpp). A boolean that
+  /// fails any check is repeated with every pair before a tool is blamed, and the step then stays
+  /// unpruned (as do the booleans redone to locate a verify_solid failure).
+  bool prune_face_pairs = true;
   /// Tools closer than this (mm), overlapping or nested, are fused into one tool first.
   double overlap_gap = 1e-4;
   /// Faces reached by at least `patch_min_tools` tools are split into patches of about
@@ -103,6 +107,9 @@ struct BooleanStepReport {
   double seconds_disjoint = 0, seconds_expected = 0, seconds_patches = 0, seconds_boolean = 0,
          seconds_measure = 0, seconds_verify = 0;
   double seconds_intersect = 0;  ///< of seconds_boolean: OCCT's intersection phase (BOPAlgo_PaveFiller)
+  /// Face pairs with overlapping boxes and, of those, intersected (pruned booleans, summed over runs).
+  int candidate_face_pairs = 0, intersected_face_pairs = 0;
+  int unpruned_repeats = 0;  ///< pruned booleans that failed a check and were repeated with every pair
 };
 
 /// Algorithm object: collect tools, apply them to a part once, read the report.

@@ -71,6 +71,7 @@ brep::NamedShape apply_wall_feature_tools(const brep::NamedShape& blade, WallFea
       }
       BooleanOptions options;
       options.verify_result = verify_each;
+      options.prune_face_pairs = !verify_each;  // the redo that locates a defect takes no shortcut
       BooleanStep step(g.op, options);
       for (const FeatureTool& t : *g.tools) step.add(t);
       current = step.apply(current);

@@ -3,7 +3,14 @@
 #define BOOST_TEST_MODULE verified_boolean
 #include <boost/test/unit_test.hpp>
 
+#include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRepPrimAPI_MakePrism.hxx>
+#include <Geom_BSplineSurface.hxx>
+#include <TColStd_Array1OfInteger.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <TColgp_Array2OfPnt.hxx>
 #include <BRepPrimAPI_MakeCone.hxx>
 #include <TopExp.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
@@ -271,4 +278,67 @@ BOOST_AUTO_TEST_CASE(warning_pinned_on_its_tool) {
   }
   BOOST_TEST(step.report().boolean_runs <= 5);  // all, the rest, the cone alone, two retries
   BOOST_TEST(step.report().tools[1].passed);
+}
+
+// Face-pair pruning (features/boolean_pair_pruning.hpp): a hole through a cylinder-shaped part. The
+// part's round wall encloses the hole in its box but never meets it: that pair is not intersected,
+// and the result is the same as with every pair.
+BOOST_AUTO_TEST_CASE(pruning_skips_pairs_that_cannot_meet) {
+  const brep::NamedShape drum = test::named_all(BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(0, 0, 0), gp::DZ()), 10, 10).Shape(), "drum");
+  for (const bool prune : {true, false}) {
+    BooleanOptions o;
+    o.prune_face_pairs = prune;
+    BooleanStep step(BooleanOperation::Cut, o);
+    step.add(cylinder_tool("hole_1", gp_Pnt(2, 1, -1), gp::DZ(), 1, 12, kPi * 10));
+    const brep::NamedShape result = step.apply(drum);
+    const BooleanStepReport& rep = step.report();
+    BOOST_TEST(rep.check.all_passed(), rep.check.failed_names());
+    BOOST_TEST(rep.boolean_runs == 1);
+    BOOST_TEST(rep.unpruned_repeats == 0);
+    BOOST_TEST(rel(rep.tools[0].measured_volume, kPi * 10) < 1e-6);
+    BOOST_TEST(std::abs(rep.check.volume - kPi * 990) < 1e-6 * kPi * 1000);
+    if (prune) {
+      // Candidates: the hole's wall against the drum's wall, top and bottom; its end caps against the
+      // drum's wall. Only the hole's wall against top and bottom meet.
+      BOOST_TEST(rep.candidate_face_pairs > rep.intersected_face_pairs);
+      BOOST_TEST(rep.intersected_face_pairs == 2);
+    } else {
+      BOOST_TEST(rep.candidate_face_pairs == 0);
+    }
+  }
+}
+
+// What pruning cannot see: a tool whose domed top pokes through the part's bottom face in a closed
+// loop, with no edge of either face crossing the other. The pruned boolean leaves the dome out; the
+// removed-volume check rejects it and the boolean is repeated with every face pair.
+BOOST_AUTO_TEST_CASE(pruned_miss_repeated_with_every_pair) {
+  const brep::NamedShape block = test::named_block(20, 20, 10);
+  // Biquadratic dome over [7, 13]^2: rim at z = -1, apex at z = 0.25 * 5 - 0.75 = 0.5.
+  TColgp_Array2OfPnt poles(1, 3, 1, 3);
+  for (int i = 1; i <= 3; ++i)
+    for (int j = 1; j <= 3; ++j) poles(i, j) = gp_Pnt(7 + 3 * (i - 1), 7 + 3 * (j - 1), i == 2 && j == 2 ? 5.0 : -1.0);
+  TColStd_Array1OfReal knots(1, 2);
+  knots(1) = 0, knots(2) = 1;
+  TColStd_Array1OfInteger mults(1, 2);
+  mults(1) = mults(2) = 3;
+  const Handle(Geom_BSplineSurface) dome = new Geom_BSplineSurface(poles, knots, knots, mults, mults, 2, 2);
+  const TopoDS_Shape prism = BRepPrimAPI_MakePrism(BRepBuilderAPI_MakeFace(dome, 1e-7).Face(), gp_Vec(0, 0, -2)).Shape();
+  FeatureTool tool;
+  tool.feature = "dome_1";
+  tool.shape = test::named_all(prism, "dome_1");  // expected volume: OCCT's Common with the block
+  BooleanStep step(BooleanOperation::Cut);
+  step.add(tool);
+  step.apply(block);
+  const BooleanStepReport& rep = step.report();
+  BOOST_TEST(rep.unpruned_repeats == 1);
+  BOOST_TEST(rep.boolean_runs == 2);
+  BOOST_TEST(rep.check.all_passed(), rep.check.failed_names());
+  BOOST_REQUIRE(rep.tools.size() == 1u);
+  BOOST_TEST(rep.tools[0].passed);
+  BOOST_TEST(rep.tools[0].retries == 0);
+  BOOST_TEST(rep.tools[0].expected_volume > 1.0);  // the dome's cap above z = 0
+  BOOST_TEST(rel(rep.tools[0].measured_volume, rep.tools[0].expected_volume) < 1e-6);
+  bool noted = false;
+  for (const std::string& w : rep.warnings) noted = noted || w.find("pruned face pairs") != std::string::npos;
+  BOOST_TEST(noted);
 }
