@@ -9,7 +9,7 @@
 namespace cg::features {
 
 FilmCoolingResult build_film_cooling(const blade::BladeModel& model, const brep::NamedShape& blade, FilmCavity cavity,
-                                     const FilmCoolingDefinition& def, ProgressSink* progress) {
+                                     const FilmCoolingDefinition& def, ProgressSink* progress, bool verify_solid_after_steps) {
   require(cavity.target.model == &model, "film cooling: the cavity belongs to another blade model");
   FilmCoolingResult out;
   out.blade = blade;
@@ -64,7 +64,9 @@ FilmCoolingResult build_film_cooling(const blade::BladeModel& model, const brep:
   // The holes cut in one verified boolean step.
   if (def.has_holes()) {
     poll("the film hole cut");
-    FilmCutResult cut = cut_film_holes(blade, cavity.target, tools, film_boolean_options(progress));
+    BooleanOptions options = film_boolean_options(progress);
+    options.verify_result = verify_solid_after_steps;
+    FilmCutResult cut = cut_film_holes(blade, cavity.target, tools, options);
     out.blade = std::move(cut.blade);
     out.check = cut.check;
     out.blade_checked = cut.checked;

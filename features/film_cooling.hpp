@@ -37,7 +37,9 @@ struct FilmCoolingResult {
 
 /// Throws FilmInputError (field below "cooling") for input the blade cannot take, FeatureFailure when a
 /// boolean or a check fails. `cavity.target.model` must be `model`.
+/// `verify_solid_after_steps` false: the holes' boolean step skips verify_solid (as build_passages).
 FilmCoolingResult build_film_cooling(const blade::BladeModel& model, const brep::NamedShape& blade, FilmCavity cavity,
-                                     const FilmCoolingDefinition& def, ProgressSink* progress = nullptr);
+                                     const FilmCoolingDefinition& def, ProgressSink* progress = nullptr,
+                                     bool verify_solid_after_steps = true);
 
 }  // namespace cg::features

@@ -26,7 +26,8 @@ brep::NamedShape cut_passage_tools(const brep::NamedShape& part, const std::vect
 }
 
 brep::NamedShape apply_passage_tools(const brep::NamedShape& part, const std::vector<FeatureTool>& interior,
-                                     const std::vector<FeatureTool>& cuts, PassageBooleanReport& report) {
+                                     const std::vector<FeatureTool>& cuts, PassageBooleanReport& report,
+                                     bool verify_solid) {
   const auto t0 = std::chrono::steady_clock::now();
   report = PassageBooleanReport{};
   brep::NamedShape current = part;
@@ -100,13 +101,16 @@ brep::NamedShape apply_passage_tools(const brep::NamedShape& part, const std::ve
     report.void_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   }
   if (cuts.empty()) {
+    if (!verify_solid) return current;
     // No boolean follows: check the blade with its voids here (otherwise the cut checks the result).
     report.cut.check = brep::verify_solid(current.shape);
     if (!report.cut.check.all_passed())
       throw FeatureFailure("the blade with its chambers fails " + report.cut.check.failed_names());
     return current;
   }
-  return cut_passage_tools(current, cuts, report.cut);
+  BooleanOptions options;
+  options.verify_result = verify_solid;
+  return cut_passage_tools(current, cuts, report.cut, options);
 }
 
 }  // namespace cg::features

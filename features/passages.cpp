@@ -24,7 +24,7 @@ void validate_passages(const blade::BladeModel& model, const PassagesDefinition&
 }
 
 PassagesResult build_passages(const blade::BladeModel& model, const brep::NamedShape& blade,
-                              const PassagesDefinition& def) {
+                              const PassagesDefinition& def, bool verify_solid_after_steps) {
   PassagesResult out;
   out.blade = blade;
   if (def.empty()) return out;
@@ -55,9 +55,10 @@ PassagesResult build_passages(const blade::BladeModel& model, const brep::NamedS
     lap("radial_passages");
   }
   PassageBooleanReport br;
-  out.blade = apply_passage_tools(blade, interior, cuts, br);
+  out.blade = apply_passage_tools(blade, interior, cuts, br, verify_solid_after_steps);
   lap("boolean");
   out.check = br.cut.check;
+  out.checked = verify_solid_after_steps;
   out.report.min_clearance = br.min_clearance;
   out.report.wall_clearance = br.wall_clearance;
   for (const auto& v : br.voids) out.report.tools.push_back({v.feature, v.expected_volume, v.measured_volume, v.passed, "void"});
@@ -75,7 +76,7 @@ PassagesResult build_passages(const blade::BladeModel& model, const brep::NamedS
   // Turbulators, pin fins and TE slots after the passage checks (those measure the smooth chambers; a
   // failed design check stops the build before these booleans).
   if (core) {
-    out.blade = apply_wall_feature_tools(out.blade, out.wall_features, out.report);
+    out.blade = apply_wall_feature_tools(out.blade, out.wall_features, out.report, verify_solid_after_steps);
     // The last step verified the final solid.
     if (!out.wall_features.steps.empty()) out.check = out.wall_features.steps.back().check;
   }

@@ -18,7 +18,8 @@ struct CoreBuild;
 struct PassagesResult {
   brep::NamedShape blade;  ///< the cooled blade, every face named
   PassageReport report;
-  brep::SolidCheck check;  ///< verify_solid of the cooled blade (run after the last boolean step)
+  brep::SolidCheck check;  ///< verify_solid of the cooled blade (run after the last boolean step), when `checked`
+  bool checked = false;    ///< false: built with verify_solid deferred (see build_passages)
   WallFeatureBuild wall_features;  ///< turbulators, slots, pins: placement and boolean step reports
   /// The core's tools and geometry (inner wall, chambers, ribs, end walls) when a core was built: what
   /// later features (film holes, inserts: film_cavity.hpp) are placed against.
@@ -32,7 +33,10 @@ void validate_passages(const blade::BladeModel& model, const PassagesDefinition&
 /// Builds `def` into `blade` (the solid of `model`). Throws PassageInputError for input that cannot be
 /// built (field below "cooling" + where), FeatureFailure when a boolean or a design check fails (the
 /// thickness minimums: measured on the built solid, must reach the configured values).
+/// `verify_solid_after_steps` false: the boolean steps run their cheap checks and per-tool volume checks
+/// but no verify_solid (BRepCheck, free edges, closed mesh: ~1 s each on the blade); the caller then
+/// verifies the final solid once and, if that fails, builds again with it on to name the culprit.
 PassagesResult build_passages(const blade::BladeModel& model, const brep::NamedShape& blade,
-                              const PassagesDefinition& def);
+                              const PassagesDefinition& def, bool verify_solid_after_steps = true);
 
 }  // namespace cg::features

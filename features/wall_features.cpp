@@ -41,7 +41,8 @@ WallFeatureBuild build_wall_feature_tools(const blade::BladeModel& model, const 
   return b;
 }
 
-brep::NamedShape apply_wall_feature_tools(const brep::NamedShape& blade, WallFeatureBuild& b, PassageReport& report) {
+brep::NamedShape apply_wall_feature_tools(const brep::NamedShape& blade, WallFeatureBuild& b, PassageReport& report,
+                                          bool verify_solid) {
   const struct Group {
     const char* name;
     BooleanOperation op;
@@ -88,7 +89,7 @@ brep::NamedShape apply_wall_feature_tools(const brep::NamedShape& blade, WallFea
   };
   std::vector<std::pair<std::string, double>> seconds;
   brep::NamedShape current = chain(false, seconds);
-  if (!b.steps.empty()) {
+  if (!b.steps.empty() && verify_solid) {
     const auto t0 = std::chrono::steady_clock::now();
     BooleanStepReport& last = b.steps.back();
     last.check = brep::verify_solid(current.shape);

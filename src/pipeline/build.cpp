@@ -40,39 +40,57 @@ BuildResult run_build(const config::Config& config, const BuildOptions& options,
     r.part.push_back({"blade", {solid.solid, std::move(solid.faces)}});
   });
   // Checks the feature stages already ran on a body with the default options, by body index.
-  std::vector<std::optional<brep::SolidCheck>> known_checks(1);
-  std::optional<features::PassagesResult> cooled;
-  if (!config.cooling.passages.empty())
-    stages.run("cooling", "cooling features (chambers, ribs, passages)", [&] {
-      cooled = apply_cooling(config.cooling, r.model, r.part.front().geometry);
-      r.part.front().geometry = cooled->blade;
-      r.cooling = cooled->report;
-      known_checks[0] = cooled->check;
-    });
-  if (!config.cooling.film.empty())
-    stages.run("film", "film cooling holes and impingement inserts", [&] {
-      features::FilmCoolingResult film = apply_film(config.cooling, r.model, *cooled, progress);
-      r.part.front().geometry = std::move(film.blade);
-      if (film.holes_cut) known_checks[0] = film.blade_checked ? std::optional(film.check) : std::nullopt;
-      for (std::size_t i = 0; i < film.inserts.size(); ++i) {
-        r.part.push_back(std::move(film.inserts[i]));
-        known_checks.push_back(film.insert_checks[i]);
+  std::vector<std::optional<brep::SolidCheck>> known_checks;
+  // The feature stages on the uncooled blade; `verify_each`: verify_solid after each boolean step.
+  auto build_features = [&](bool verify_each, const std::string& suffix) {
+    r.part.resize(1);
+    r.part.front().geometry = r.uncooled;
+    known_checks.assign(1, std::nullopt);
+    std::optional<features::PassagesResult> cooled;
+    if (!config.cooling.passages.empty())
+      stages.run("cooling" + suffix, "cooling features (chambers, ribs, passages)", [&] {
+        cooled = apply_cooling(config.cooling, r.model, r.part.front().geometry, verify_each);
+        r.part.front().geometry = cooled->blade;
+        r.cooling = cooled->report;
+        if (cooled->checked) known_checks[0] = cooled->check;
+      });
+    if (!config.cooling.film.empty())
+      stages.run("film" + suffix, "film cooling holes and impingement inserts", [&] {
+        features::FilmCoolingResult film = apply_film(config.cooling, r.model, *cooled, progress, verify_each);
+        r.part.front().geometry = std::move(film.blade);
+        if (film.holes_cut) known_checks[0] = film.blade_checked ? std::optional(film.check) : std::nullopt;
+        for (std::size_t i = 0; i < film.inserts.size(); ++i) {
+          r.part.push_back(std::move(film.inserts[i]));
+          known_checks.push_back(film.insert_checks[i]);
+        }
+        r.film = std::move(film.report);
+      });
+  };
+  auto verify_bodies = [&](const std::string& suffix) {
+    stages.run("verify" + suffix, "checks (BRepCheck, free edges, closed mesh, volume)", [&] {
+      brep::VerifyOptions vo = options.verify;
+      vo.progress = progress;
+      // The feature stages verified their bodies with the default options after their last step.
+      const brep::VerifyOptions defaults;
+      const bool reuse = vo.mesh_relative_deflection == defaults.mesh_relative_deflection &&
+                         vo.mesh_angular_deflection == defaults.mesh_angular_deflection;
+      r.checks.clear();
+      for (std::size_t i = 0; i < r.part.size(); ++i) {
+        const bool known = reuse && i < known_checks.size() && known_checks[i];
+        r.checks.push_back(known ? *known_checks[i] : brep::verify_solid(r.part[i].geometry.shape, vo));
       }
-      r.film = std::move(film.report);
     });
-  cooled.reset();
-  stages.run("verify", "checks (BRepCheck, free edges, closed mesh, volume)", [&] {
-    brep::VerifyOptions vo = options.verify;
-    vo.progress = progress;
-    // The feature stages verified their bodies with the default options after their last step.
-    const brep::VerifyOptions defaults;
-    const bool reuse = vo.mesh_relative_deflection == defaults.mesh_relative_deflection &&
-                       vo.mesh_angular_deflection == defaults.mesh_angular_deflection;
-    for (std::size_t i = 0; i < r.part.size(); ++i) {
-      const bool known = reuse && i < known_checks.size() && known_checks[i];
-      r.checks.push_back(known ? *known_checks[i] : brep::verify_solid(r.part[i].geometry.shape, vo));
-    }
-  });
+  };
+  build_features(options.verify_each_step, "");
+  verify_bodies("");
+  if (!options.verify_each_step && !config.cooling.empty() && !r.valid()) {
+    // A defect one of the deferred steps left: build the features again, each step verified, so the
+    // step that makes it throws FeatureFailure naming its feature (or the final checks stay failed).
+    r.warnings.push_back("the cooled blade failed " + r.failed_checks() +
+                         ": the cooling features were built again with verify_solid after every step");
+    build_features(true, "_rechecked");
+    verify_bodies("_rechecked");
+  }
   return r;
 }
 

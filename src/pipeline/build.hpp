@@ -33,6 +33,11 @@ namespace cg::pipeline {
 struct BuildOptions {
   /// Options of the solid checks (mesh deflection); `verify.progress` is set by run_build.
   brep::VerifyOptions verify;
+  /// true: the feature stages run verify_solid after each of their boolean steps (every other check of
+  /// the verified boolean path runs either way). false (default): verify_solid runs once, in the verify
+  /// stage, on the final blade; only if that fails are the feature stages run again with it after
+  /// every step, which names the feature to blame (stages "cooling_rechecked", "film_rechecked").
+  bool verify_each_step = false;
 };
 
 /// Wall-clock time of one stage, seconds.

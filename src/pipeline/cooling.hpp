@@ -17,12 +17,14 @@ namespace cg::pipeline {
 /// placed on their rows: span range, positions, pitch), as ConfigError.
 void validate_cooling(const config::CoolingConfig& cooling, const blade::BladeModel& model);
 
+/// `verify_each_step`: see features::build_passages (`verify_solid_after_steps`).
 features::PassagesResult apply_cooling(const config::CoolingConfig& cooling, const blade::BladeModel& model,
-                                       const brep::NamedShape& blade);
+                                       const brep::NamedShape& blade, bool verify_each_step = true);
 
 /// The film stage: the film rows, showerhead and inserts of `cooling` built into `cooled` (the result of
 /// apply_cooling, which must have built a core). Film input the blade cannot take: ConfigError.
 features::FilmCoolingResult apply_film(const config::CoolingConfig& cooling, const blade::BladeModel& model,
-                                       const features::PassagesResult& cooled, ProgressSink* progress = nullptr);
+                                       const features::PassagesResult& cooled, ProgressSink* progress = nullptr,
+                                       bool verify_each_step = true);
 
 }  // namespace cg::pipeline

@@ -290,3 +290,22 @@ BOOST_AUTO_TEST_CASE(bad_input_names_the_field) {
     BOOST_TEST(has(x.what(), "need \"core\""), x.what());
   }
 }
+
+// By default verify_solid runs once, on the final blade (the steps run their other checks); with
+// verify_each_step it runs after every boolean step. Both give the same solid, and the default run
+// neither rebuilt anything nor verified inside the steps.
+BOOST_AUTO_TEST_CASE(deferred_and_per_step_verification_agree) {
+  const pipeline::BuildResult& deferred = built();
+  BOOST_TEST_REQUIRE(deferred.valid(), deferred.failed_checks());
+  for (const pipeline::StageTiming& t : deferred.timings) BOOST_TEST(t.stage.find("_rechecked") == std::string::npos, t.stage);
+  pipeline::BuildOptions each;
+  each.verify_each_step = true;
+  const pipeline::BuildResult r = pipeline::run_build(parse(config_doc()), each);
+  BOOST_TEST_REQUIRE(r.valid(), r.failed_checks());
+  BOOST_REQUIRE(r.checks.size() == deferred.checks.size());
+  for (std::size_t i = 0; i < r.checks.size(); ++i) {
+    BOOST_TEST(std::abs(r.checks[i].volume - deferred.checks[i].volume) <= 1e-9 * r.checks[i].volume);
+    BOOST_TEST(r.checks[i].face_count == deferred.checks[i].face_count);
+  }
+  BOOST_TEST(brep::count_face_names(r.part[0].geometry) == brep::count_face_names(deferred.part[0].geometry));
+}
