@@ -60,9 +60,17 @@ bool timed_build(const config::Config& c, const char* what) {
   const pipeline::BuildResult r = pipeline::run_build(c);
   const pipeline::WrittenOutputs w = pipeline::write_outputs(c, r, dir);
   const double total = seconds_since(t0);
-  std::printf("%s: config -> verified STEP in %.2f s (%s)\n", what, total, r.valid() ? "valid" : r.failed_checks().c_str());
+  // The goal's measure: every build stage and the STEP file (the other outputs come after it).
+  double to_step = 0;
+  for (const auto& s : r.timings) to_step += s.seconds;
+  for (const auto& s : w.timings)
+    if (s.stage == "step") to_step += s.seconds;
+  std::printf("%s: config -> verified STEP in %.2f s, all outputs in %.2f s (%s)\n", what, to_step, total,
+              r.valid() ? "valid" : r.failed_checks().c_str());
   for (const auto& s : r.timings) std::printf("  %-12s %7.3f s\n", s.stage.c_str(), s.seconds);
   for (const auto& s : w.timings) std::printf("  %-12s %7.3f s\n", s.stage.c_str(), s.seconds);
+  if (!r.checks.empty())
+    for (const brep::Check* c : r.checks.front().checks()) std::printf("    verify/%-25s %7.3f s\n", c->name.c_str(), c->seconds);
   if (r.cooling)
     for (const auto& [stage, s] : r.cooling->seconds) std::printf("    cooling/%-24s %7.3f s\n", stage.c_str(), s);
   if (r.film)
