@@ -42,7 +42,7 @@ WallFeatureBuild build_wall_feature_tools(const blade::BladeModel& model, const 
 }
 
 brep::NamedShape apply_wall_feature_tools(const brep::NamedShape& blade, WallFeatureBuild& b, PassageReport& report,
-                                          bool verify_solid) {
+                                          bool verify_result) {
   const struct Group {
     const char* name;
     BooleanOperation op;
@@ -89,7 +89,7 @@ brep::NamedShape apply_wall_feature_tools(const brep::NamedShape& blade, WallFea
   };
   std::vector<std::pair<std::string, double>> seconds;
   brep::NamedShape current = chain(false, seconds);
-  if (!b.steps.empty() && verify_solid) {
+  if (!b.steps.empty() && verify_result) {
     const auto t0 = std::chrono::steady_clock::now();
     BooleanStepReport& last = b.steps.back();
     last.check = brep::verify_solid(current.shape);

@@ -38,8 +38,8 @@ WallFeatureBuild build_wall_feature_tools(const blade::BladeModel& model, const 
 /// (One boolean for all groups was measured slower: OCCT then intersects the tools with each other,
 /// 69 s against 28 s for the three steps' intersections on the example.) Appends stage times and
 /// per-tool volume checks to `report`, the step reports to `build`. Throws FeatureFailure when a step fails.
-/// `verify_solid` false: no verify_solid at all (the caller verifies the final solid).
+/// `verify_result` false: no verify_solid at all (the caller verifies the final solid).
 brep::NamedShape apply_wall_feature_tools(const brep::NamedShape& blade, WallFeatureBuild& build, PassageReport& report,
-                                          bool verify_solid = true);
+                                          bool verify_result = true);
 
 }  // namespace cg::features
