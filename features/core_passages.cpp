@@ -274,7 +274,7 @@ Vec3 chamber_point(const blade::BladeCoordinates& coords, const blade::Thickness
   return 0.5 * (s + p);
 }
 
-CoreBuild build_core_tools(const blade::BladeModel& model, const CoreDefinition& def) {
+CoreBuild build_core_walls(const blade::BladeModel& model, const CoreDefinition& def) {
   Stopwatch sw;
   CoreBuild out;
   check_definition(def);
@@ -289,10 +289,16 @@ CoreBuild build_core_tools(const blade::BladeModel& model, const CoreDefinition&
   } catch (const blade::InnerWallError& e) {
     throw PassageInputError("core.wall_thickness", e.what());
   }
-  out.seconds.emplace_back("inner_wall", sw.lap());
-  const double delta = 0.4 * model.options.overbuild * model.span_length;  // cutting ends just outside the blade
   if (!def.hub_floor.open) out.hub_floor.emplace(model, SpanEnd::Hub, def.hub_floor.thickness);
   if (!def.tip_cap.open) out.tip_cap.emplace(model, SpanEnd::Tip, def.tip_cap.thickness);
+  out.seconds.emplace_back("inner_wall", sw.lap());
+  return out;
+}
+
+void build_core_cells(const blade::BladeModel& model, const CoreDefinition& def, CoreBuild& out) {
+  Stopwatch sw;
+  const blade::BladeCoordinates coords(model);
+  const double delta = 0.4 * model.options.overbuild * model.span_length;  // cutting ends just outside the blade
   const EndWall bottom = def.hub_floor.open ? EndWall(model, SpanEnd::Hub, -delta) : *out.hub_floor;
   const EndWall top = def.tip_cap.open ? EndWall(model, SpanEnd::Tip, -delta) : *out.tip_cap;
   const brep::BladeSolid core = brep::build_blade_solid(out.inner_wall.surface, bottom.trim(), top.trim());
@@ -585,6 +591,11 @@ CoreBuild build_core_tools(const blade::BladeModel& model, const CoreDefinition&
     out.cut_tools.push_back(tool);
   }
   out.seconds.emplace_back("inlets", sw.lap());
+}
+
+CoreBuild build_core_tools(const blade::BladeModel& model, const CoreDefinition& def) {
+  CoreBuild out = build_core_walls(model, def);
+  build_core_cells(model, def, out);
   return out;
 }
 

@@ -71,6 +71,14 @@ struct CoreBuild {
 /// field below "cooling" (and the span / chord where it fails); OCCT failures throw FeatureFailure.
 CoreBuild build_core_tools(const blade::BladeModel& model, const CoreDefinition& def);
 
+/// build_core_tools in two parts, so that work which needs only the walls (the turbulator, pin and slot
+/// tools) can run alongside the second: build_core_walls checks `def` and builds the inner wall and the
+/// closed end walls (inner_wall, hub_floor, tip_cap; stage "inner_wall"); build_core_cells adds the
+/// core solid, ribs, cells, fillets, names and inlets to `core` (the walls stay as they are: a copy of
+/// `core` taken before it is as good for the wall-feature tools).
+CoreBuild build_core_walls(const blade::BladeModel& model, const CoreDefinition& def);
+void build_core_cells(const blade::BladeModel& model, const CoreDefinition& def, CoreBuild& core);
+
 /// The input checks of build_core_tools that need no solid (ordering, turnarounds against open ends,
 /// inlets, coolant supply, the inner wall's trailing-edge crossing and the ribs' placement on five spans),
 /// in a few ms: `coolinggen validate` and the build's first stage run them. Throws PassageInputError.

@@ -125,7 +125,7 @@ TopoDS_Shape merge_cells(const std::vector<TopoDS_Shape>& cells) {
 
 double volume_of(const TopoDS_Shape& shape) {
   GProp_GProps p;
-  BRepGProp::VolumeProperties(shape, p, 1e-9);
+  BRepGProp::VolumeProperties(shape, p, 1e-7);
   return p.Mass();
 }
 

@@ -11,9 +11,11 @@
 
 #include <chrono>
 #include <memory>
+#include <algorithm>
 #include <cmath>
 
 #include "features/face_names.hpp"
+#include "src/core/parallel.hpp"
 
 namespace cg::features {
 brep::NamedShape cut_passage_tools(const brep::NamedShape& part, const std::vector<FeatureTool>& tools,
@@ -39,8 +41,6 @@ brep::NamedShape apply_passage_tools(const brep::NamedShape& part, const std::ve
     TopoDS_Solid result;
     bb.MakeSolid(result);
     for (TopExp_Explorer e(solids.front(), TopAbs_SHELL); e.More(); e.Next()) bb.Add(result, e.Current());
-    BRepClass3d_SolidClassifier in_part;
-    in_part.Load(solids.front());
     // Distance between the boundaries (faces: between solids BRepExtrema reports 0 for a solid inside
     // another), from the outer wall and from the other faces of the part separately: the first is the
     // outer wall's minimum thickness the design checks report. (BRepExtrema's multi-threaded mode: the
@@ -57,40 +57,68 @@ brep::NamedShape apply_passage_tools(const brep::NamedShape& part, const std::ve
       d->Perform();
       return d;
     };
-    for (const FeatureTool& t : interior) {
-      const std::vector<TopoDS_Shape> ts = solids_of(t.shape.shape);
-      if (ts.size() != 1) throw FeatureFailure(t.feature + ": an interior tool must be one solid");
-      TopExp_Explorer tool_shell(ts.front(), TopAbs_SHELL);
-      const auto pdw = distance(wall, tool_shell.Current()), pde = distance(ends, tool_shell.Current());
-      const BRepExtrema_DistShapeShape &dw = *pdw, &de = *pde;
-      if (!dw.IsDone() || !de.IsDone())
-        throw FeatureFailure(t.feature + ": cannot measure its distance to the blade's boundary");
-      const double d = std::min(dw.Value(), de.Value());
-      TopExp_Explorer v(ts.front(), TopAbs_VERTEX);
-      in_part.Perform(BRep_Tool::Pnt(TopoDS::Vertex(v.Current())), 1e-7);
-      if (d <= 1e-6 || in_part.State() != TopAbs_IN)
+    // The tools' measurements are independent: side by side (each worker its own classifier), then
+    // judged in the tools' order so the error named does not depend on the scheduling.
+    struct Measured {
+      TopoDS_Shape solid;
+      double wall = 0, ends = 0, removed = 0;  // written by different work items
+      bool wall_done = false, ends_done = false, inside = false;
+    };
+    std::vector<Measured> m(interior.size());
+    for (std::size_t i = 0; i < interior.size(); ++i) {
+      const std::vector<TopoDS_Shape> ts = solids_of(interior[i].shape.shape);
+      if (ts.size() != 1) throw FeatureFailure(interior[i].feature + ": an interior tool must be one solid");
+      m[i].solid = ts.front();
+    }
+    const int workers = std::min(parallel_workers(), static_cast<int>(interior.size()));
+    std::vector<BRepClass3d_SolidClassifier> in_part(static_cast<std::size_t>(workers));
+    for (BRepClass3d_SolidClassifier& c : in_part) c.Load(solids.front());
+    // Three items per tool (its distance to the outer wall, to the other faces, its void's volume and
+    // inside test): the big chamber system's distances would otherwise keep one core busy alone.
+    parallel_for(3 * static_cast<int>(interior.size()), workers, [&](int k, int w) {
+      Measured& r = m[static_cast<std::size_t>(k / 3)];
+      TopExp_Explorer tool_shell(r.solid, TopAbs_SHELL);
+      if (k % 3 < 2) {
+        const auto d = distance(k % 3 == 0 ? wall : ends, tool_shell.Current());
+        (k % 3 == 0 ? r.wall_done : r.ends_done) = d->IsDone();
+        if (d->IsDone()) (k % 3 == 0 ? r.wall : r.ends) = d->Value();
+        return;
+      }
+      TopExp_Explorer v(r.solid, TopAbs_VERTEX);
+      BRepClass3d_SolidClassifier& c = in_part[static_cast<std::size_t>(w)];
+      c.Perform(BRep_Tool::Pnt(TopoDS::Vertex(v.Current())), 1e-7);
+      r.inside = c.State() == TopAbs_IN;
+      // The removed volume is the integral over the inserted (reversed) faces: with the tool's own volume
+      // this checks the void's orientation.
+      BRep_Builder lb;
+      TopoDS_Compound inserted;
+      lb.MakeCompound(inserted);
+      for (TopExp_Explorer e(r.solid, TopAbs_SHELL); e.More(); e.Next()) lb.Add(inserted, e.Current().Reversed());
+      r.removed = -volume_of(inserted);
+    });
+    for (std::size_t i = 0; i < interior.size(); ++i) {
+      const FeatureTool& t = interior[i];
+      const Measured& r = m[i];
+      if (!r.wall_done || !r.ends_done) throw FeatureFailure(t.feature + ": cannot measure its distance to the blade's boundary");
+      const double d = std::min(r.wall, r.ends);
+      if (d <= 1e-6 || !r.inside)
         throw FeatureFailure(t.feature + ": not strictly inside the blade (distance to its boundary " +
                              std::to_string(d) + " mm)");
       report.min_clearance = std::min(report.min_clearance, d);
-      report.wall_clearance = std::min(report.wall_clearance, dw.Value());
-      for (TopExp_Explorer e(ts.front(), TopAbs_SHELL); e.More(); e.Next()) bb.Add(result, e.Current().Reversed());
-      // The removed volume is the integral over the inserted (reversed) faces: with the tool's own volume
-      // this checks the void's orientation.
-      TopoDS_Compound inserted;
-      bb.MakeCompound(inserted);
-      for (TopExp_Explorer e(ts.front(), TopAbs_SHELL); e.More(); e.Next()) bb.Add(inserted, e.Current().Reversed());
-      const double removed = -volume_of(inserted);
+      report.wall_clearance = std::min(report.wall_clearance, r.wall);
+      for (TopExp_Explorer e(r.solid, TopAbs_SHELL); e.More(); e.Next()) bb.Add(result, e.Current().Reversed());
       const BooleanOptions opt;
-      const bool ok = std::abs(removed - t.expected_volume) <= opt.volume_rel_tolerance * t.expected_volume + opt.volume_abs_tolerance;
+      const bool ok =
+          std::abs(r.removed - t.expected_volume) <= opt.volume_rel_tolerance * t.expected_volume + opt.volume_abs_tolerance;
       ToolReport tr;
       tr.feature = t.feature;
       tr.expected_volume = t.expected_volume;
-      tr.measured_volume = removed;
+      tr.measured_volume = r.removed;
       tr.expected_source = "given";
       tr.passed = ok;
       report.voids.push_back(tr);
       if (!ok)
-        throw FeatureFailure(t.feature + ": as a void it removes " + std::to_string(removed) + " mm^3, expected " +
+        throw FeatureFailure(t.feature + ": as a void it removes " + std::to_string(r.removed) + " mm^3, expected " +
                              std::to_string(t.expected_volume) + " mm^3");
     }
     current.shape = result;

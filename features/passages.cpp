@@ -9,6 +9,7 @@
 #include "features/passage_checks.hpp"
 #include "features/radial_passages.hpp"
 #include "features/wall_features.hpp"
+#include "src/core/background.hpp"
 
 namespace cg::features {
 
@@ -41,12 +42,21 @@ PassagesResult build_passages(const blade::BladeModel& model, const brep::NamedS
   std::optional<RadialPassageBuild> radial;
   std::vector<FeatureTool> interior, cuts;
   if (def.core) {
-    core = build_core_tools(model, *def.core);
+    core = build_core_walls(model, *def.core);
+    // The turbulator, pin and slot tools need only the walls: they are built in the background while
+    // this thread builds the core's cells (the fillets and inlets there are single-threaded OCCT work),
+    // on their own copy of the walls (end walls keep evaluation state). An error of the core comes
+    // first, as when they ran one after the other; theirs still comes before the expensive booleans.
+    PassageReport tool_report;
+    auto wall_tools = start_in_background([&model, &def, &tool_report, walls = *core] {
+      return build_wall_feature_tools(model, *def.core, walls, tool_report);
+    });
+    build_core_cells(model, *def.core, *core);
+    out.wall_features = wall_tools.get();
     for (const auto& [stage, s] : core->seconds) out.report.seconds.emplace_back("core_" + stage, s);
+    for (const auto& [stage, s] : tool_report.seconds) out.report.seconds.emplace_back(stage, s);
     interior = core->interior_tools;
     cuts = core->cut_tools;
-    // Turbulator, pin and slot tools now: their input errors come before the expensive booleans.
-    out.wall_features = build_wall_feature_tools(model, *def.core, *core, out.report);
     t0 = std::chrono::steady_clock::now();
   }
   if (!def.radial_passages.empty()) {
@@ -63,8 +73,26 @@ PassagesResult build_passages(const blade::BladeModel& model, const brep::NamedS
   out.report.wall_clearance = br.wall_clearance;
   for (const auto& v : br.voids) out.report.tools.push_back({v.feature, v.expected_volume, v.measured_volume, v.passed, "void"});
   for (const auto& t : br.cut.tools) out.report.tools.push_back({t.feature, t.expected_volume, t.measured_volume, t.passed, "cut"});
-  measure_passages(model, out.blade, def, core ? &*core : nullptr, radial ? &*radial : nullptr, out.report);
-  lap("checks");
+  // The design checks measure the smooth chambers in the background while the turbulators, pins and
+  // slots are booleaned in (both only read this solid: booleans here are non-destructive). The checks
+  // still decide first: when one fails, that is the error, whatever the wall features did.
+  auto checks = start_in_background([&] {
+    measure_passages(model, out.blade, def, core ? &*core : nullptr, radial ? &*radial : nullptr, out.report);
+    lap("checks");
+  });
+  brep::NamedShape cooled = out.blade;
+  PassageReport wall_report;  // out.report belongs to the checks until they are done
+  std::exception_ptr wall_error;
+  if (core) {
+    try {
+      cooled = apply_wall_feature_tools(out.blade, out.wall_features, wall_report, verify_solid_after_steps);
+      // The last step verified the final solid.
+      if (!out.wall_features.steps.empty()) out.check = out.wall_features.steps.back().check;
+    } catch (...) {
+      wall_error = std::current_exception();
+    }
+  }
+  checks.get();
   std::string failed;
   for (const auto& t : out.report.thickness)
     if (!t.passed)
@@ -73,13 +101,11 @@ PassagesResult build_passages(const blade::BladeModel& model, const brep::NamedS
   if (!out.report.all_chambers_fed)
     failed += (failed.empty() ? "" : "; ") + std::to_string(out.report.closed_cavities) + " closed cavities (no inlet)";
   if (!failed.empty()) throw FeatureFailure("design checks of the cooling passages failed: " + failed);
-  // Turbulators, pin fins and TE slots after the passage checks (those measure the smooth chambers; a
-  // failed design check stops the build before these booleans).
-  if (core) {
-    out.blade = apply_wall_feature_tools(out.blade, out.wall_features, out.report, verify_solid_after_steps);
-    // The last step verified the final solid.
-    if (!out.wall_features.steps.empty()) out.check = out.wall_features.steps.back().check;
-  }
+  if (wall_error) std::rethrow_exception(wall_error);
+  out.blade = cooled;
+  out.report.seconds.insert(out.report.seconds.end(), wall_report.seconds.begin(), wall_report.seconds.end());
+  out.report.tools.insert(out.report.tools.end(), wall_report.tools.begin(), wall_report.tools.end());
+  out.report.volumes.insert(out.report.volumes.end(), wall_report.volumes.begin(), wall_report.volumes.end());
   if (core) out.core = std::make_shared<const CoreBuild>(std::move(*core));
   return out;
 }
