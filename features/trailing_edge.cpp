@@ -15,6 +15,7 @@
 #include "features/ruled_block.hpp"
 #include "src/blade/format.hpp"
 #include "src/algo/segment_distance.hpp"
+#include "src/core/newton.hpp"
 
 namespace cg::features {
 namespace {
@@ -114,14 +115,13 @@ SpanLine crease_line(const blade::BladeModel& model, const blade::BladeCoordinat
   const EndWall hub = core.hub_floor ? *core.hub_floor : EndWall(model, SpanEnd::Hub, 0.0);
   const EndWall tip = core.tip_cap ? *core.tip_cap : EndWall(model, SpanEnd::Tip, 0.0);
   auto crease = [&](double s) { return blade::inner_wall_crease(coords, def.wall_thickness, s).crease; };
+  // Each value costs an exact section of the inner wall (~5 ms): Illinois regula falsi on [0, 1] needs
+  // ~8 of them where bisection to the same 6e-8 in span needed 24. Without a sign change the end
+  // where |f| is smaller (for these monotone f: the end bisection converged to).
   auto root = [&](auto f) {
-    double lo = 0, hi = 1;
-    const bool rising = f(lo) < 0;
-    for (int it = 0; it < 24; ++it) {
-      const double mid = 0.5 * (lo + hi);
-      ((f(mid) < 0) == rising ? lo : hi) = mid;
-    }
-    return 0.5 * (lo + hi);
+    const double f0 = f(0.0), f1 = f(1.0);
+    if ((f0 < 0) == (f1 < 0)) return std::abs(f0) < std::abs(f1) ? 0.0 : 1.0;
+    return newton::solve_bracketed_secant(f, 0.0, 1.0, f0, f1, 6e-8);
   };
   const double s0 = root([&](double s) { return hub.signed_distance(crease(s)) - margin; });
   const double s1 = root([&](double s) { return tip.signed_distance(crease(s)) - margin; });
