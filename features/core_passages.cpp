@@ -409,7 +409,6 @@ void build_core_cells(const blade::BladeModel& model, const CoreDefinition& def,
 
   // 3. + 4. Per coolant cell: fillets, naming split, merge.
   std::map<int, std::vector<int>> systems;  // cell -> chambers (0-based)
-  std::vector<TopoDS_Shape> system_shapes;
   for (std::size_t k = 0; k < cell_of.size(); ++k) systems[cell_of[k]].push_back(static_cast<int>(k));
   for (const auto& [cell_index, members] : systems) {
     TopoDS_Shape cell = cells[static_cast<std::size_t>(cell_index)];
@@ -518,7 +517,7 @@ void build_core_cells(const blade::BladeModel& model, const CoreDefinition& def,
     tool.shape.faces = names.list(merged, sys.feature);
     // Closed ends: the tool lies inside the blade (inside the inner wall, between the end walls), so it
     // removes its own volume. Open ends: the verified path computes the overlap.
-    system_shapes.push_back(merged);
+    sys.shape = merged;
     if (def.hub_floor.open || def.tip_cap.open) {
       tool.expected_volume = std::numeric_limits<double>::quiet_NaN();
       out.cut_tools.push_back(tool);
@@ -561,20 +560,21 @@ void build_core_cells(const blade::BladeModel& model, const CoreDefinition& def,
     cyl.Build();
     if (!cyl.IsDone()) throw FeatureFailure(name + ": cannot make its cylinder");
     const TopoDS_Shape s = cyl.Shape();
-    // It must open into its chamber: a ring just past the end wall lies inside the chamber's tool.
-    const int sys = out.chambers[static_cast<std::size_t>(in.chamber - 1)].system;
-    Inside in_target(system_shapes[static_cast<std::size_t>(sys)]);
+    // It must open into its chamber: a ring just past the end wall lies inside the chamber's tool
+    // (classified by check_inlet_rims).
+    InletRim rim;
+    rim.system = out.chambers[static_cast<std::size_t>(in.chamber - 1)].system;
+    rim.field = field + ".diameter";
+    rim.message = name + " (diameter " + fmt(in.diameter) + " mm) does not fit into chamber " +
+                  std::to_string(in.chamber) + " where it passes the " + (hub ? "hub floor" : "tip cap") +
+                  ": its rim leaves the chamber; use a smaller diameter or move it";
     const double tm = along(wall, 0.5 * reach);
     const Vec3 e1 = dir.unitOrthogonal(), e2 = dir.cross(e1);
     for (int k = 0; k < 12; ++k) {
       const double a = 2 * kPi * k / 12;
-      const Vec3 p = x0 + tm * dir + 0.5 * in.diameter * (std::cos(a) * e1 + std::sin(a) * e2);
-      if (!in_target(p))
-        throw PassageInputError(field + ".diameter", name + " (diameter " + fmt(in.diameter) +
-                                                         " mm) does not fit into chamber " + std::to_string(in.chamber) +
-                                                         " where it passes the " + (hub ? "hub floor" : "tip cap") +
-                                                         ": its rim leaves the chamber; use a smaller diameter or move it");
+      rim.points.push_back(x0 + tm * dir + 0.5 * in.diameter * (std::cos(a) * e1 + std::sin(a) * e2));
     }
+    out.inlet_rims.push_back(std::move(rim));
     FeatureTool tool;
     tool.feature = name;
     tool.shape.shape = s;
@@ -593,9 +593,20 @@ void build_core_cells(const blade::BladeModel& model, const CoreDefinition& def,
   out.seconds.emplace_back("inlets", sw.lap());
 }
 
+void check_inlet_rims(const CoreBuild& core) {
+  // ~20 ms per point on a serpentine's solid (rays against its B-spline faces): each inlet on its own core.
+  parallel_for(static_cast<int>(core.inlet_rims.size()), parallel_workers(), [&](int m, int) {
+    const InletRim& rim = core.inlet_rims[static_cast<std::size_t>(m)];
+    Inside in_target(core.systems[static_cast<std::size_t>(rim.system)].shape);
+    for (const Vec3& p : rim.points)
+      if (!in_target(p)) throw PassageInputError(rim.field, rim.message);
+  });
+}
+
 CoreBuild build_core_tools(const blade::BladeModel& model, const CoreDefinition& def) {
   CoreBuild out = build_core_walls(model, def);
   build_core_cells(model, def, out);
+  check_inlet_rims(out);
   return out;
 }
 

@@ -45,6 +45,15 @@ struct ChamberSystem {
   std::vector<int> chambers;  ///< 1-based chamber numbers
   std::string feature;        ///< tool feature name, e.g. "chamber_1" or "chambers_2_4"
   double volume = 0;          ///< mm^3 of the tool (after fillets)
+  TopoDS_Shape shape;         ///< the tool solid (also in interior_tools or cut_tools)
+};
+
+/// Points that must lie inside an inlet's chamber system: a ring of the inlet's diameter just past the
+/// end wall (the inlet opens into its chamber), and the input error when one does not.
+struct InletRim {
+  int system = -1;  ///< index into CoreBuild::systems
+  std::vector<Eigen::Vector3d> points;
+  std::string field, message;
 };
 
 struct CoreBuild {
@@ -60,6 +69,7 @@ struct CoreBuild {
   /// the material between the flow-path surface and the end wall over its disc, own quadrature).
   std::vector<FeatureTool> cut_tools;
   std::vector<double> inlet_volumes;  ///< mm^3 per inlet, as its expected volume
+  std::vector<InletRim> inlet_rims;   ///< per inlet, checked by check_inlet_rims
   std::optional<EndWall> hub_floor, tip_cap;  ///< none when that end is open
   double core_volume = 0;                     ///< mm^3, the core before ribs and fillets (sum of its cells)
   std::vector<double> rib_volumes;            ///< mm^3 per rib, rib material inside the core
@@ -71,13 +81,16 @@ struct CoreBuild {
 /// field below "cooling" (and the span / chord where it fails); OCCT failures throw FeatureFailure.
 CoreBuild build_core_tools(const blade::BladeModel& model, const CoreDefinition& def);
 
-/// build_core_tools in two parts, so that work which needs only the walls (the turbulator, pin and slot
-/// tools) can run alongside the second: build_core_walls checks `def` and builds the inner wall and the
-/// closed end walls (inner_wall, hub_floor, tip_cap; stage "inner_wall"); build_core_cells adds the
-/// core solid, ribs, cells, fillets, names and inlets to `core` (the walls stay as they are: a copy of
-/// `core` taken before it is as good for the wall-feature tools).
+/// build_core_tools in three parts, so that work which needs only some of it can run alongside the
+/// rest (build_passages): build_core_walls checks `def` and builds the inner wall and the closed end
+/// walls (inner_wall, hub_floor, tip_cap; stage "inner_wall"), which is all the turbulator, pin and slot
+/// tools need; build_core_cells adds the core solid, ribs, cells, fillets, names and inlets to `core`
+/// (the walls stay as they are: a copy of `core` taken before it is as good for the wall-feature tools);
+/// check_inlet_rims throws the PassageInputError of the first inlet whose rim leaves its chamber (point
+/// classification against the chamber solids only: safe beside booleans that read them).
 CoreBuild build_core_walls(const blade::BladeModel& model, const CoreDefinition& def);
 void build_core_cells(const blade::BladeModel& model, const CoreDefinition& def, CoreBuild& core);
+void check_inlet_rims(const CoreBuild& core);
 
 /// The input checks of build_core_tools that need no solid (ordering, turnarounds against open ends,
 /// inlets, coolant supply, the inner wall's trailing-edge crossing and the ribs' placement on five spans),

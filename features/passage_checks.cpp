@@ -47,6 +47,7 @@
 #include "features/face_names.hpp"
 #include "src/algo/project_point_surface.hpp"
 #include "src/blade/blade_coordinates.hpp"
+#include "src/core/newton.hpp"
 
 namespace cg::features {
 namespace {
@@ -305,14 +306,11 @@ void bspline_face_section(const TopoDS_Face& face, BRepTopAdaptor_FClass2d& cls,
   auto F = [&](int i, int j) { return fv[static_cast<std::size_t>(i * nv + j)]; };
   // Crossing points on grid edges, id: horizontal edge (i, j)-(i+1, j) -> 2 (i nv + j), vertical -> +1.
   std::map<long, gp_Pnt2d> cross;
-  auto root = [&](double ua, double va, double ub, double vb, double fa) {
-    double a = 0, b = 1;
-    for (int it = 0; it < 44; ++it) {
-      const double m = 0.5 * (a + b);
-      const double fm = ps.f(ua + m * (ub - ua), va + m * (vb - va));
-      ((fm < 0) == (fa < 0) ? a : b) = m;
-    }
-    const double m = 0.5 * (a + b);
+  // The crossing on a grid edge whose ends differ in sign: Illinois regula falsi to the 6e-14 of the
+  // edge that 44 bisection steps gave, in ~8 surface evaluations instead of 44.
+  auto root = [&](double ua, double va, double ub, double vb, double fa, double fb) {
+    const double m = newton::solve_bracketed_secant(
+        [&](double t) { return ps.f(ua + t * (ub - ua), va + t * (vb - va)); }, 0.0, 1.0, fa, fb, 0x1p-44);
     return gp_Pnt2d(ua + m * (ub - ua), va + m * (vb - va));
   };
   auto edge_point = [&](long id) -> gp_Pnt2d {
@@ -320,8 +318,8 @@ void bspline_face_section(const TopoDS_Face& face, BRepTopAdaptor_FClass2d& cls,
     if (it != cross.end()) return it->second;
     const long e = id / 2;
     const int i = static_cast<int>(e / nv), j = static_cast<int>(e % nv);
-    const gp_Pnt2d p = (id % 2 == 0) ? root(gu[i], gv[j], gu[i + 1], gv[j], F(i, j))
-                                     : root(gu[i], gv[j], gu[i], gv[j + 1], F(i, j));
+    const gp_Pnt2d p = (id % 2 == 0) ? root(gu[i], gv[j], gu[i + 1], gv[j], F(i, j), F(i + 1, j))
+                                     : root(gu[i], gv[j], gu[i], gv[j + 1], F(i, j), F(i, j + 1));
     cross.emplace(id, p);
     return p;
   };

@@ -52,7 +52,12 @@ PassagesResult build_passages(const blade::BladeModel& model, const brep::NamedS
       return build_wall_feature_tools(model, *def.core, walls, tool_report);
     });
     build_core_cells(model, *def.core, *core);
-    out.wall_features = wall_tools.get();
+    try {
+      out.wall_features = wall_tools.get();
+    } catch (...) {
+      check_inlet_rims(*core);  // the inlets' input errors come before the wall features' (as in build order)
+      throw;
+    }
     for (const auto& [stage, s] : core->seconds) out.report.seconds.emplace_back("core_" + stage, s);
     for (const auto& [stage, s] : tool_report.seconds) out.report.seconds.emplace_back(stage, s);
     interior = core->interior_tools;
@@ -64,8 +69,18 @@ PassagesResult build_passages(const blade::BladeModel& model, const brep::NamedS
     cuts.insert(cuts.end(), radial->tools.begin(), radial->tools.end());
     lap("radial_passages");
   }
+  // The inlets' rim test (point classification, ~0.3 s on a serpentine) beside the chambers' boolean:
+  // its input error, when there is one, is the error reported.
+  std::future<void> rims;
+  if (core) rims = start_in_background([&core] { check_inlet_rims(*core); });
   PassageBooleanReport br;
-  out.blade = apply_passage_tools(blade, interior, cuts, br, verify_solid_after_steps);
+  try {
+    out.blade = apply_passage_tools(blade, interior, cuts, br, verify_solid_after_steps);
+  } catch (...) {
+    if (rims.valid()) rims.get();
+    throw;
+  }
+  if (rims.valid()) rims.get();
   lap("boolean");
   out.check = br.cut.check;
   out.checked = verify_solid_after_steps;
