@@ -3,8 +3,9 @@
 // same tools from the same blade (time ratio; the two results' volumes must agree, else exit 1).
 //
 //   bench_cooled_build            the built-in example (HPT rotor: LE chamber + 3-pass serpentine with
-//                                 turbulators, a TE cutback with pin fins; those against OCCT's plain
-//                                 Fuse + Cut of the same tools)
+//                                 turbulators, a TE cutback with pin fins, film rows and a showerhead),
+//                                 then the same without its film cooling (internal passages only); the
+//                                 wall features against OCCT's plain Fuse + Cut of the same tools
 //   bench_cooled_build --quick    the C3X vane with its ten radial passages, and one closed chamber in it
 //   bench_cooled_build CONFIG     any config with a "cooling" section
 //   bench_cooled_build --wall     the built-in example's chambers and wall features only, ours only (no
@@ -213,6 +214,13 @@ int main(int argc, char** argv) {
     } else {
       const config::Config c = arg.empty() || wall_only ? config::builtin_example_config() : config::load_config_file(arg);
       if (!wall_only) ok &= timed_build(c, c.name.c_str());
+      if (arg.empty()) {
+        // The internal passages alone (no film rows, no showerhead): the cooled example of the
+        // internal-passages issue, whose goal is config -> verified STEP in 10 s.
+        config::Config passages = c;
+        passages.cooling.film = {};
+        ok &= timed_build(passages, (c.name + ", internal passages only").c_str());
+      }
       if (c.cooling.passages.core) {
         features::CoreDefinition core = *c.cooling.passages.core;
         if (!core.hub_floor.open && !core.tip_cap.open) ok &= voids_against_cut(config::build_model(c), core);

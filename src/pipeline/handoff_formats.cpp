@@ -15,6 +15,7 @@
 #include "export/triangulation.hpp"
 #include "export/vtk_writer.hpp"
 #include "export/x_display.hpp"
+#include "src/core/background.hpp"
 #include "src/pipeline/report.hpp"
 
 namespace cg::pipeline {
@@ -25,8 +26,9 @@ constexpr double kDeg = 3.14159265358979323846 / 180;
 
 // What the formats of one build result share. The cache holds the blade's TShape, so a later result
 // can never reuse its address and be mistaken for this one. The triangulation and the sections are
-// made in the background from the start of write_outputs (prepare_shared_outputs): they use all cores
-// while the STEP and IGES writers, which run on one, write theirs.
+// made in the background from the start of write_outputs (prepare_shared_outputs), at the lowest
+// priority (start_in_background): they take the cores the STEP and IGES writers, which run on one,
+// leave idle, and the STEP file (what most users wait for) is not slowed down by them.
 struct Shared {
   std::mutex mutex;
   Handle(TopoDS_TShape) owner;
@@ -63,14 +65,14 @@ void start_triangles(const config::Config& c, const BuildResult& r) {
   std::lock_guard<std::mutex> lock(s.mutex);
   if (s.triangles.valid()) return;
   const io::TriangulationOptions o{c.output.stl_deflection, c.output.stl_angular_deflection_deg * kDeg};
-  s.triangles = std::async(std::launch::async, [&part = r.part, o] { return io::triangulate_part(part, o); }).share();
+  s.triangles = start_in_background([&part = r.part, o] { return io::triangulate_part(part, o); }).share();
 }
 
 void start_sections(const config::Config& c, const BuildResult& r) {
   Shared& s = shared_for(r);
   std::lock_guard<std::mutex> lock(s.mutex);
   if (s.sections.valid()) return;
-  s.sections = std::async(std::launch::async, [&r, spans = c.output.section_spans] {
+  s.sections = start_in_background([&r, spans = c.output.section_spans] {
                  return io::cut_sections(r.part, io::blade_section_surfaces(r.model, spans));
                }).share();
 }
