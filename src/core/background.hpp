@@ -14,8 +14,8 @@ void lower_thread_priority();
 /// or rethrows its exception; the future's destructor waits for f). The foreground keeps its cores
 /// while it uses them, and f takes what it leaves idle (the single-threaded stretches of OCCT
 /// algorithms): measured on the cooled example, tools built beside the core at equal priority slowed
-/// the core's parallel split by 40 %; at nice 19 the split kept its time and the tools filled the
-/// fillet stage's idle core.
+/// the core's parallel split by half (1.2 -> 1.8 s); at nice 19 the split kept its time and the tools
+/// filled the fillet stage's idle core.
 template <class F>
 std::future<std::invoke_result_t<std::decay_t<F>&>> start_in_background(F&& f) {
   return std::async(std::launch::async, [fn = std::forward<F>(f)]() mutable {
