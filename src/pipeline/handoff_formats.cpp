@@ -26,9 +26,9 @@ constexpr double kDeg = 3.14159265358979323846 / 180;
 
 // What the formats of one build result share. The cache holds the blade's TShape, so a later result
 // can never reuse its address and be mistaken for this one. The triangulation and the sections are
-// made in the background from the start of write_outputs (prepare_shared_outputs), at the lowest
-// priority (start_in_background): they take the cores the STEP and IGES writers, which run on one,
-// leave idle, and the STEP file (what most users wait for) is not slowed down by them.
+// made in the background once write_outputs has written the STEP file (prepare_shared_outputs), at the
+// lowest priority (start_in_background): they take the cores the IGES writer, which runs on one, leaves
+// idle.
 struct Shared {
   std::mutex mutex;
   Handle(TopoDS_TShape) owner;

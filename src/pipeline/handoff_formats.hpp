@@ -17,8 +17,9 @@ std::vector<OutputFormat> handoff_formats();
 /// diameter along span, when the sections were cut in this run) and "notes" (outputs skipped and why).
 void add_handoff_report(const config::Config& config, const BuildResult& result, io::ReportContent& report);
 
-/// Starts the shared triangulation and section cuts of the selected formats in the background (both
-/// use all cores; the STEP and IGES writers one): the formats then pick up the finished work.
+/// Starts the shared triangulation and section cuts of the selected formats in the background, at the
+/// lowest priority (write_outputs calls it once the STEP file is written; the IGES writer, which uses
+/// one core, runs beside them): the formats then pick up the finished work.
 void prepare_shared_outputs(const config::Config& config, const BuildResult& result);
 /// Waits for the background work of `result` (before the result may go away).
 void finish_shared_outputs(const BuildResult& result) noexcept;

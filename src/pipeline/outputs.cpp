@@ -57,21 +57,27 @@ WrittenOutputs write_outputs(const config::Config& c, const BuildResult& r, cons
   out.directory = dir;
   StageRunner stages(progress, out.timings);
   OutputDirectory od(dir, kReportFile, owned);
-  // The triangulation and the sections start now and overlap the single-threaded STEP and IGES writers;
-  // the guard waits for them however this function ends (they read `r`).
-  prepare_shared_outputs(c, r);
+  // The triangulation and the sections start once the STEP file is written (the file most users wait
+  // for: its writer then has the cores to itself) and overlap the single-threaded IGES writer; the guard
+  // waits for them however this function ends (they read `r`).
   struct Finish {
     const BuildResult& r;
     ~Finish() { finish_shared_outputs(r); }
   } finish{r};
-  if (r.valid())
+  if (r.valid()) {
+    bool shared_started = false;
     for (const OutputFormat& f : output_formats()) {
       bool selected = false;
       for (const std::string& n : c.output.formats) selected = selected || n == f.name;
+      if (!shared_started && f.name != "step") {
+        prepare_shared_outputs(c, r);
+        shared_started = true;
+      }
       std::string files;
       for (const std::string& n : f.files) files += (files.empty() ? "" : ", ") + n;
       if (selected) stages.run(f.name, "write " + files, [&] { f.write(od, c, r, progress); });
     }
+  }
   stages.run("report", "write report.json", [&] {
     std::vector<StageTiming> timings = r.timings;
     timings.insert(timings.end(), out.timings.begin(), out.timings.end());
