@@ -9,10 +9,10 @@
 #include <TopoDS_Compound.hxx>
 #include <TopoDS_Solid.hxx>
 
-#include <chrono>
-#include <memory>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <memory>
 
 #include "features/face_names.hpp"
 #include "src/core/parallel.hpp"
@@ -70,12 +70,13 @@ brep::NamedShape apply_passage_tools(const brep::NamedShape& part, const std::ve
       if (ts.size() != 1) throw FeatureFailure(interior[i].feature + ": an interior tool must be one solid");
       m[i].solid = ts.front();
     }
-    const int workers = std::min(parallel_workers(), static_cast<int>(interior.size()));
+    const int items = 3 * static_cast<int>(interior.size());
+    const int workers = std::min(parallel_workers(), items);
     std::vector<BRepClass3d_SolidClassifier> in_part(static_cast<std::size_t>(workers));
     for (BRepClass3d_SolidClassifier& c : in_part) c.Load(solids.front());
     // Three items per tool (its distance to the outer wall, to the other faces, its void's volume and
     // inside test): the big chamber system's distances would otherwise keep one core busy alone.
-    parallel_for(3 * static_cast<int>(interior.size()), workers, [&](int k, int w) {
+    parallel_for(items, workers, [&](int k, int w) {
       Measured& r = m[static_cast<std::size_t>(k / 3)];
       TopExp_Explorer tool_shell(r.solid, TopAbs_SHELL);
       if (k % 3 < 2) {
