@@ -1,15 +1,23 @@
 // newton::solve_bracketed_secant (Illinois regula falsi) against closed-form roots, and against
 // bisection's evaluation count on functions where plain regula falsi stalls; parallel_for runs every
-// item once and reports the error of the lowest failing item whatever the scheduling.
+// item once and reports the error of the lowest failing item whatever the scheduling; start_in_background
+// returns the work's value or exception and runs it at the lowest priority, the caller's unchanged.
 #define BOOST_TEST_MODULE secant_and_parallel
 #include <boost/test/unit_test.hpp>
+
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
 
 #include <atomic>
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <thread>
+#include <utility>
 #include <vector>
 
+#include "src/core/background.hpp"
 #include "src/core/newton.hpp"
 #include "src/core/parallel.hpp"
 
@@ -72,4 +80,35 @@ BOOST_AUTO_TEST_CASE(parallel_for_runs_every_item_once_and_rethrows_the_lowest_e
     }
   }
   parallel_for(0, 2, [](int, int) { throw std::runtime_error("no items: never called"); });
+}
+
+namespace {
+// The calling thread's nice value (Linux: per thread).
+int thread_nice() {
+  return getpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)));
+}
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(background_work_returns_its_result_at_the_lowest_priority) {
+  const int caller = thread_nice();
+  // The value, and the priority the work ran at (and the threads it starts inherit).
+  auto f = start_in_background([] {
+    int inner = -100;
+    std::thread t([&] { inner = thread_nice(); });
+    t.join();
+    return std::make_pair(thread_nice(), inner);
+  });
+  const auto [nice, inner] = f.get();
+  BOOST_TEST(nice == 19);
+  BOOST_TEST(inner == 19);
+  BOOST_TEST(thread_nice() == caller);  // only the background thread was lowered
+  // Its exception comes out of get().
+  auto g = start_in_background([]() -> int { throw std::runtime_error("background failure"); });
+  std::string what;
+  try {
+    g.get();
+  } catch (const std::runtime_error& e) {
+    what = e.what();
+  }
+  BOOST_TEST(what == "background failure");
 }
