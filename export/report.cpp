@@ -23,7 +23,7 @@ nlohmann::ordered_json report_json(const ReportContent& c) {
       {"solid",
        {{"volume_mm3", k.volume},
         {"volume_error_mm3", k.volume_error},
-        {"surface_area_mm2", k.area},
+        {"surface_area_mm2", k.area()},
         {"bbox_mm", {{"min", k.bbox_min}, {"max", k.bbox_max}, {"size", size}}},
         {"face_count", k.face_count},
         {"solid_count", k.solid_count},

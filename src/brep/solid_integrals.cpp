@@ -93,7 +93,7 @@ struct Item {
 
 }  // namespace
 
-SolidIntegrals integrate_solid(const TopoDS_Shape& shape, double eps, bool parallel) {
+SolidIntegrals integrate_solid(const TopoDS_Shape& shape, double eps, bool parallel, Integrals which) {
   SolidIntegrals r;
   std::vector<Item> items;
   const auto add = [&](const TopoDS_Face& f, const gp_Pnt& origin, bool volume) {
@@ -108,7 +108,7 @@ SolidIntegrals integrate_solid(const TopoDS_Shape& shape, double eps, bool paral
     }
   };
   // As BRepGProp::VolumeProperties(OnlyClosed = true): the forward and reversed faces of closed shells.
-  for (TopExp_Explorer sh(shape, TopAbs_SHELL); sh.More(); sh.Next()) {
+  for (TopExp_Explorer sh(shape, TopAbs_SHELL); which != Integrals::Area && sh.More(); sh.Next()) {
     if (!BRep_Tool::IsClosed(sh.Current())) continue;
     const gp_Pnt origin = mean_vertex(sh.Current());
     for (TopExp_Explorer f(sh.Current(), TopAbs_FACE); f.More(); f.Next()) {
@@ -117,8 +117,10 @@ SolidIntegrals integrate_solid(const TopoDS_Shape& shape, double eps, bool paral
     }
   }
   // As BRepGProp::SurfaceProperties: every face.
-  const gp_Pnt origin = mean_vertex(shape);
-  for (TopExp_Explorer f(shape, TopAbs_FACE); f.More(); f.Next()) add(TopoDS::Face(f.Current()), origin, false);
+  if (which != Integrals::Volume) {
+    const gp_Pnt origin = mean_vertex(shape);
+    for (TopExp_Explorer f(shape, TopAbs_FACE); f.More(); f.Next()) add(TopoDS::Face(f.Current()), origin, false);
+  }
   r.pieces = static_cast<int>(items.size());
 
   // Largest first, each taken by the next free thread: the walls with many holes do not end up last.

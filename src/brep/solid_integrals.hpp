@@ -24,8 +24,12 @@ struct SolidIntegrals {
   int pieces = 0;           ///< faces integrated (faces plus the inner wires split off)
 };
 
+/// Which integrals integrate_solid computes (the others stay 0).
+enum class Integrals { VolumeAndArea, Volume, Area };
+
 /// Volume of the closed shells and area of all faces of `shape` at relative accuracy `eps` (per piece).
 /// `parallel`: pieces on all cores. Throws Standard_Failure where BRepGProp does.
-SolidIntegrals integrate_solid(const TopoDS_Shape& shape, double eps, bool parallel = true);
+SolidIntegrals integrate_solid(const TopoDS_Shape& shape, double eps, bool parallel = true,
+                               Integrals which = Integrals::VolumeAndArea);
 
 }  // namespace cg::brep

@@ -19,7 +19,7 @@ void print_summary(const config::Config& c, const pipeline::BuildResult& r, cons
   std::printf("%s: %s flow path, %zu sections\n", c.name.c_str(), r.model.trim.straight ? "straight" : "meridional",
               c.blade.sections.size());
   std::printf("  volume %.4f mm^3, surface %.4f mm^2, %d faces, bbox [%.3f %.3f %.3f] - [%.3f %.3f %.3f] mm\n", k.volume,
-              k.area, k.face_count, k.bbox_min[0], k.bbox_min[1], k.bbox_min[2], k.bbox_max[0], k.bbox_max[1],
+              k.area(), k.face_count, k.bbox_min[0], k.bbox_min[1], k.bbox_min[2], k.bbox_max[0], k.bbox_max[1],
               k.bbox_max[2]);
   std::printf("  checks:");
   for (const brep::Check* x : k.checks()) std::printf(" %s %s", x->name.c_str(), x->passed ? "ok" : "FAILED");

@@ -88,7 +88,7 @@ BOOST_AUTO_TEST_CASE(straight_caps_volume_area_and_names) {
   const double h = 30, area = test::kPi * e.a * e.b;
   BOOST_TEST(rel(c.volume, area * h) < 1e-6, "volume " << c.volume << " vs " << area * h);
   const double surface = 2 * area + test::ellipse_perimeter(e.a, e.b) * h;
-  BOOST_TEST(rel(c.area, surface) < 1e-6, std::setprecision(15) << "area " << c.area << " vs " << surface);
+  BOOST_TEST(rel(c.area(), surface) < 1e-6, std::setprecision(15) << "area " << c.area() << " vs " << surface);
   BOOST_TEST(c.face_count == 3);
   const auto names = face_name_counts(s);
   BOOST_TEST(names.at(kWallFaceName) == 1);
@@ -267,7 +267,7 @@ BOOST_AUTO_TEST_CASE(model_solid_trimmed_along_iso_curves) {
   require_all_checks(a);
   require_all_checks(b);
   BOOST_TEST(rel(a.volume, b.volume) < 1e-6, "volume " << a.volume << " vs " << b.volume);
-  BOOST_TEST(rel(a.area, b.area) < 1e-5, "area " << a.area << " vs " << b.area);
+  BOOST_TEST(rel(a.area(), b.area()) < 1e-5, "area " << a.area() << " vs " << b.area());
   const auto names = face_name_counts(iso);
   BOOST_TEST(names.at(kWallFaceName) == 1);
   BOOST_TEST(names.at(kHubFaceName) == 1);

@@ -126,7 +126,7 @@ BOOST_AUTO_TEST_CASE(report_json_content) {
   BOOST_TEST(j.at("valid").get<bool>());
   BOOST_TEST(j.at("model").at("name").get<std::string>() == "synthetic");
   BOOST_TEST(j.at("solid").at("volume_mm3").get<double>() == rc.check.volume);
-  BOOST_TEST(j.at("solid").at("surface_area_mm2").get<double>() == rc.check.area);
+  BOOST_TEST(j.at("solid").at("surface_area_mm2").get<double>() == rc.check.area());
   BOOST_TEST(j.at("solid").at("face_count").get<int>() == 3);
   BOOST_TEST(j.at("solid").at("faces").at(brep::kWallFaceName).get<int>() == 1);
   BOOST_TEST(j.at("solid").at("bbox_mm").at("max").at(2).get<double>() == rc.check.bbox_max[2]);
