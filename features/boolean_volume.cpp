@@ -4,9 +4,6 @@
 #include <BRepBndLib.hxx>
 #include <BRepClass3d_SolidClassifier.hxx>
 #include <BRepGProp.hxx>
-#include <BRepGProp_Domain.hxx>
-#include <BRepGProp_Face.hxx>
-#include <BRepGProp_Vinert.hxx>
 #include <BRepLProp_SLProps.hxx>
 #include <BRepAdaptor_Surface.hxx>
 #include <BRep_Tool.hxx>
@@ -27,6 +24,7 @@
 #include <cmath>
 
 #include "features/verified_boolean.hpp"
+#include "src/brep/face_flux.hpp"
 
 namespace cg::features {
 namespace {
@@ -86,20 +84,7 @@ gp_Pnt centre_of(const Bnd_Box& b) {
 }  // namespace
 
 double face_flux(const TopoDS_Shape& face, const gp_Pnt& c, double accuracy) {
-  // BRepGProp::VolumeProperties cannot be used on a single face: it integrates about the face's own
-  // vertex barycentre. BRepGProp_Vinert takes the reference point (as BRepGProp does per face).
-  const TopoDS_Face& f = TopoDS::Face(face);
-  BRepGProp_Face bf(f);
-  BRepGProp_Vinert g;
-  g.SetLocation(c);
-  if (f.NbChildren() == 0) {
-    BRepGProp_Domain none;
-    g.Perform(bf, none, accuracy);
-  } else {
-    BRepGProp_Domain bd(f);
-    g.Perform(bf, bd, accuracy);
-  }
-  return g.Mass();
+  return brep::face_volume_flux(TopoDS::Face(face), c, accuracy).value;
 }
 
 VolumeMeasure measure_tool_volumes(const BooleanRun& run, const TopoDS_Shape& part, const std::vector<TopoDS_Shape>& tools,

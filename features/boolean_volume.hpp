@@ -11,7 +11,7 @@
 //    boolean's own classification).
 // so V(T & P) = -sum flux(T pieces in the result) + sum flux(dropped P pieces, oriented as in P). For
 // Fuse, V(T - P) = sum flux(T pieces in the result) - sum flux(dropped P pieces inside T). The face
-// integrals are BRepGProp's adaptive Gauss rule (relative accuracy 1e-9) on small faces.
+// integrals are src/brep/face_flux's (relative accuracy 1e-9) on small faces.
 //
 // What this catches: a piece of the part dropped outside every tool (lost part, 'lost_pieces'), a
 // tool piece missing or kept where it should not be (the boundary is no longer closed: the volume
@@ -48,8 +48,8 @@ struct VolumeMeasure {
 VolumeMeasure measure_tool_volumes(const BooleanRun& run, const TopoDS_Shape& part, const std::vector<TopoDS_Shape>& tools,
                                    BooleanOperation op, bool parallel);
 
-/// 1/3 * integral over the face of (x - c) . n dA (n follows the face's orientation), adaptive Gauss
-/// rule to the given relative accuracy.
+/// 1/3 * integral over the face of (x - c) . n dA (n follows the face's orientation), to the given
+/// relative accuracy (brep::face_volume_flux).
 double face_flux(const TopoDS_Shape& face, const gp_Pnt& c, double accuracy = 1e-9);
 
 }  // namespace cg::features

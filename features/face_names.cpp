@@ -16,6 +16,7 @@
 #include <TopoDS_Shell.hxx>
 #include <TopoDS_Solid.hxx>
 
+#include "src/brep/solid_integrals.hpp"
 #include "src/core/error.hpp"
 
 namespace cg::features {
@@ -123,11 +124,7 @@ TopoDS_Shape merge_cells(const std::vector<TopoDS_Shape>& cells) {
   return solid;
 }
 
-double volume_of(const TopoDS_Shape& shape) {
-  GProp_GProps p;
-  BRepGProp::VolumeProperties(shape, p, 1e-7);
-  return p.Mass();
-}
+double volume_of(const TopoDS_Shape& shape) { return brep::shape_volume(shape, 1e-7); }
 
 std::vector<double> volumes_of(const std::vector<TopoDS_Shape>& shapes) {
   std::vector<double> v(shapes.size(), 0.0);

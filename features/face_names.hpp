@@ -44,9 +44,8 @@ std::vector<TopoDS_Shape> solids_of(const TopoDS_Shape& shape);
 /// faces were split for naming. Throws AlgorithmFailure when the faces do not form one closed shell.
 TopoDS_Shape merge_cells(const std::vector<TopoDS_Shape>& cells);
 
-/// Volume by BRepGProp's adaptive rule at relative accuracy 1e-7 (the fixed default rule misses small
-/// features, see booleans notes; 1e-7 is ten times below the 1e-6 volume checks, 1e-9 cost ~0.6 s more
-/// per cooled blade for nothing a check needs).
+/// Volume bounded by the shape's faces (brep::shape_volume, our face flux) at relative accuracy 1e-7 per
+/// face: ten times below the 1e-6 volume checks.
 double volume_of(const TopoDS_Shape& shape);
 /// volume_of of every shape, computed in parallel.
 std::vector<double> volumes_of(const std::vector<TopoDS_Shape>& shapes);

@@ -3,7 +3,6 @@
 #include <BRepGProp_Domain.hxx>
 #include <BRepGProp_Face.hxx>
 #include <BRepGProp_Sinert.hxx>
-#include <BRepGProp_Vinert.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
@@ -20,6 +19,7 @@
 #include <cmath>
 #include <vector>
 
+#include "src/brep/face_flux.hpp"
 #include "src/core/parallel.hpp"
 
 namespace cg::brep {
@@ -100,7 +100,8 @@ SolidIntegrals integrate_solid(const TopoDS_Shape& shape, double eps, bool paral
     TopLoc_Location loc;
     if (BRep_Tool::Surface(f, loc).IsNull()) return;  // BRepGProp skips such faces too
     std::vector<TopoDS_Face> pieces;
-    split_face(f, pieces);
+    if (volume) pieces.push_back(f);  // face_volume_flux starts each closed loop's strips at the loop
+    else split_face(f, pieces);
     for (const TopoDS_Face& p : pieces) {
       int cost = 1;
       for (TopExp_Explorer e(p, TopAbs_EDGE); e.More(); e.Next()) ++cost;
@@ -129,17 +130,15 @@ SolidIntegrals integrate_solid(const TopoDS_Shape& shape, double eps, bool paral
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return items[a].cost > items[b].cost; });
   parallel_for(static_cast<int>(order.size()), parallel ? parallel_workers() : 1, [&](int k, int) {
     Item& it = items[order[static_cast<std::size_t>(k)]];
-    BRepGProp_Face bf;
-    BRepGProp_Domain bd;
-    bf.Load(it.face);
-    bd.Init(it.face);
     if (it.volume) {
-      BRepGProp_Vinert g;
-      g.SetLocation(it.origin);
-      g.Perform(bf, bd, eps);
-      it.value = g.Mass();
-      it.error = g.GetEpsilon();
+      const FaceFlux f = face_volume_flux(it.face, it.origin, eps);
+      it.value = f.value;
+      it.error = f.error;
     } else {
+      BRepGProp_Face bf;
+      BRepGProp_Domain bd;
+      bf.Load(it.face);
+      bd.Init(it.face);
       BRepGProp_Sinert g;
       g.SetLocation(it.origin);
       g.Perform(bf, bd, eps);
@@ -151,12 +150,23 @@ SolidIntegrals integrate_solid(const TopoDS_Shape& shape, double eps, bool paral
   for (const Item& it : items) {
     if (it.volume) {
       r.volume += it.value;
-      r.volume_error = std::max(r.volume_error, it.error);
+      r.volume_error += it.error;
     } else {
       r.area += it.value;
     }
   }
   return r;
+}
+
+double shape_volume(const TopoDS_Shape& shape, double eps) {
+  const gp_Pnt origin = mean_vertex(shape);
+  double v = 0;
+  for (TopExp_Explorer f(shape, TopAbs_FACE); f.More(); f.Next()) {
+    TopLoc_Location loc;
+    if (BRep_Tool::Surface(TopoDS::Face(f.Current()), loc).IsNull()) continue;
+    v += face_volume_flux(TopoDS::Face(f.Current()), origin, eps).value;
+  }
+  return v;
 }
 
 }  // namespace cg::brep
