@@ -378,7 +378,52 @@ void bspline_face_section(const TopoDS_Face& face, BRepTopAdaptor_FClass2d& cls,
     if (!done.count(id)) walk(id);
   // Clip each polyline to the face and integrate the inside runs.
   auto inside = [&](const gp_Pnt2d& p) { return cls.Perform(p) != TopAbs_OUT; };
+  // Where a polyline leaves the face, the section curve crosses one of the face's edges: the plane's
+  // crossings of every edge (its pcurve sampled, then Illinois regula falsi) are the exact exit points,
+  // computed once per face and plane. Bisection on the classifier (which near the boundary runs the
+  // exact 2D intersector, ~40 times per exit) is the fallback when no single crossing lies on the chord.
+  std::vector<gp_Pnt2d> exits;
+  bool exits_found = false;
+  auto edge_exits = [&] {
+    exits_found = true;
+    for (TopExp_Explorer x(face, TopAbs_EDGE); x.More(); x.Next()) {
+      double a = 0, b = 0;
+      const Handle(Geom2d_Curve) pc = BRep_Tool::CurveOnSurface(TopoDS::Edge(x.Current()), face, a, b);
+      if (pc.IsNull() || !(b > a)) continue;
+      auto fe = [&](double t) {
+        const gp_Pnt2d q = pc->Value(t);
+        return ps.f(q.X(), q.Y());
+      };
+      constexpr int kSamples = 32;
+      double t_prev = a, f_prev = fe(a);
+      for (int k = 1; k <= kSamples; ++k) {
+        const double t = a + (b - a) * k / kSamples, fv = fe(t);
+        if ((f_prev < 0) != (fv < 0)) {
+          const double r = newton::solve_bracketed_secant(fe, t_prev, t, f_prev, fv, 1e-15 * (std::abs(a) + std::abs(b) + (b - a)));
+          exits.push_back(pc->Value(r));
+        }
+        t_prev = t;
+        f_prev = fv;
+      }
+    }
+  };
   auto boundary = [&](gp_Pnt2d a, gp_Pnt2d b) {  // inside(a) != inside(b)
+    if (!exits_found) edge_exits();
+    // The exit on the chord a-b: within a quarter of the chord's length of it (the curve between two
+    // grid crossings stays far closer to its chord), and the only one there.
+    const gp_Vec2d ab(a, b);
+    const double len2 = ab.SquareMagnitude();
+    int hits = 0;
+    gp_Pnt2d hit;
+    for (const gp_Pnt2d& q : exits) {
+      const double t = len2 > 0 ? std::clamp(gp_Vec2d(a, q).Dot(ab) / len2, 0.0, 1.0) : 0.0;
+      const gp_Pnt2d foot(a.X() + t * ab.X(), a.Y() + t * ab.Y());
+      if (foot.SquareDistance(q) <= 0.0625 * len2) {
+        ++hits;
+        hit = q;
+      }
+    }
+    if (hits == 1) return hit;
     const bool ia = inside(a);
     for (int it = 0; it < 40; ++it) {
       const gp_Pnt2d m = ps.project(0.5 * (a.X() + b.X()), 0.5 * (a.Y() + b.Y()));
