@@ -217,14 +217,11 @@ SolidCheck verify_solid(const TopoDS_Shape& shape, const VerifyOptions& options)
     c.seconds = t.lap();
     return c;
   });
-  // Adaptive integration with a requested relative accuracy: the default Gauss rule was off by
-  // 1.4 % on a face trimmed by a surface of revolution. At 1e-7 the volume matched analytic values to
-  // ~1e-9 and the area to ~1e-6 (slower convergence on rational faces); 1e-9 cost 3x for nothing the
-  // checks need. Its cost follows the boundary curves' pole counts: ~1.3 s for a wall bounded by
-  // 600-pole intersection curves, ~0.05 s for the same blade trimmed along its own iso-curves.
-  // Measured trap: a face bounded by a 2700-pole pcurve was integrated 0.4 % short at every requested
-  // accuracy (blade_solid.cpp keeps its pcurves light). Faces on all cores, holes integrated loop by
-  // loop (solid_integrals.hpp: 6 s -> 0.3 s for a wall with 170 film holes).
+  // The volume: our face flux (face_flux.hpp: Green's theorem with knot-aligned exact strip rules, at
+  // the requested relative accuracy per face), on all cores. BRepGProp, which it replaced here, was off
+  // by 1.4 % with its default rule on a face trimmed by a surface of revolution, cost ~1.3 s for a wall
+  // bounded by 600-pole intersection curves, and integrated a face bounded by a 2700-pole pcurve 0.4 %
+  // short at every accuracy (blade_solid.cpp still keeps its pcurves light: every later boolean pays).
   auto integrals = std::async(std::launch::async, [&] {
     Stopwatch t;
     SolidIntegrals i = integrate_solid(shape, options.gprop_relative_accuracy, true, Integrals::Volume);

@@ -27,8 +27,8 @@ struct SolidCheck {
   Check closed_mesh;      ///< after BRepMesh, every oriented mesh edge has exactly one opposite
   Check positive_volume;  ///< volume > 0 (outward normals)
 
-  double volume = 0;        ///< mm^3, BRepGProp::VolumeProperties with relative accuracy 1e-7
-  double volume_error = 0;  ///< error estimate returned by BRepGProp
+  double volume = 0;        ///< mm^3, integrate_solid (our face flux) at gprop_relative_accuracy per face
+  double volume_error = 0;  ///< mm^3, the integration's error estimate (sum over the faces)
   /// mm^2, every face's area (BRepGProp's adaptive rule at gprop_relative_accuracy; NaN if it raised).
   /// No check needs it, so verify_solid integrates it in the background at the lowest priority and
   /// returns without waiting: the caller's next work (writing the STEP file) runs beside it, and area()
@@ -57,7 +57,7 @@ struct VerifyOptions {
   /// span untriangulated). The mesh is made on a copy, so the checked shape is left untouched.
   double mesh_relative_deflection = 0.01;
   double mesh_angular_deflection = 0.3;
-  /// Requested relative accuracy of BRepGProp's adaptive volume and area integration.
+  /// Requested relative accuracy of the volume (our face flux) and area (BRepGProp) integration.
   double gprop_relative_accuracy = 1e-7;
   /// Optional: sees the checks' progress; a stop request ends verify_solid with Cancelled.
   ProgressSink* progress = nullptr;
