@@ -30,6 +30,7 @@
 
 #include "adaptors/occt_convert.hpp"
 #include "src/analyze/gauss_legendre.hpp"
+#include "src/core/newton.hpp"
 #include "src/core/surface_evaluator.hpp"
 
 namespace cg::brep {
@@ -347,29 +348,9 @@ void split_at_breaks(BoundaryEdge& e, const std::vector<double>& ub, const std::
       const double lo = std::min(c0, c1), hi = std::max(c0, c1);
       for (auto it = std::upper_bound(br.begin(), br.end(), lo); it != br.end() && *it < hi; ++it) {
         const double b = *it;
-        // Illinois regula falsi on [ts[k], ts[k + 1]] for coordinate = b.
-        double ta = ts[k], tb = ts[k + 1], fa = c0 - b, fb = c1 - b;
-        int side = 0;
-        for (int it2 = 0; it2 < 60 && tb - ta > 1e-15 * (std::abs(ta) + std::abs(tb) + 1); ++it2) {
-          const double t = (ta * fb - tb * fa) / (fb - fa);
-          const double f = e.curve->Value(t).Coord(d + 1) - b;
-          if (f == 0) {
-            ta = tb = t;
-            break;
-          }
-          if ((f < 0) == (fa < 0)) {
-            ta = t;
-            fa = f;
-            if (side == -1) fb *= 0.5;
-            side = -1;
-          } else {
-            tb = t;
-            fb = f;
-            if (side == 1) fa *= 0.5;
-            side = 1;
-          }
-        }
-        added.push_back(0.5 * (ta + tb));
+        const double tol = 1e-15 * (std::abs(ts[k]) + std::abs(ts[k + 1]) + 1);
+        added.push_back(newton::solve_bracketed_secant([&](double t) { return e.curve->Value(t).Coord(d + 1) - b; },
+                                                       ts[k], ts[k + 1], c0 - b, c1 - b, tol, 1e-14 * (std::abs(b) + 1)));
       }
     }
   }
@@ -472,7 +453,7 @@ FaceFlux face_volume_flux(const TopoDS_Face& face, const gp_Pnt& cp, double eps,
     const int d = direction == StripDirection::U ? 0 : direction == StripDirection::V ? 1 : S.cost(1) < S.cost(0) ? 1 : 0;
     const double dir_sign = d == 0 ? 1.0 : -1.0;
     // The boundary integrand G(x, y) y' is only as smooth as the surface across its knot lines: panels
-    // also end where a pcurve crosses one (found between samples of the panel, by regula falsi).
+    // also end where a pcurve crosses one (found between samples of the panel, by Illinois regula falsi).
     for (BoundaryEdge& e : edges) split_at_breaks(e, S.breaks(0), S.breaks(1));
     // Strip start per wire: its own middle if it is closed in the parameter plane, else the middle of
     // all the other wires together (their integrals only add up to the face's as a whole).
