@@ -227,10 +227,14 @@ SolidCheck verify_solid(const TopoDS_Shape& shape, const VerifyOptions& options)
     SolidIntegrals i = integrate_solid(shape, options.gprop_relative_accuracy, true, Integrals::Volume);
     return std::make_pair(i, t.lap());
   });
-  // The area checks nothing (the report shows it): off the critical path, on its own copy of the handle.
-  r.area_job = start_in_background([shape, eps = options.gprop_relative_accuracy] {
+  // The area checks nothing (the report shows it): off the critical path, on its own deep copy. Not on
+  // the caller's shape, nor on a topology copy sharing its geometry: the caller goes on while this runs,
+  // and under load the integration crashed reading pcurves (BRepTools::UVBounds, Geom2dAdaptor_Curve)
+  // that the caller's next OCCT operations touched.
+  const TopoDS_Shape own = BRepBuilderAPI_Copy(shape, /*copyGeom=*/true, /*copyMesh=*/false).Shape();
+  r.area_job = start_in_background([own, eps = options.gprop_relative_accuracy] {
                  try {
-                   return integrate_solid(shape, eps, true, Integrals::Area).area;
+                   return integrate_solid(own, eps, true, Integrals::Area).area;
                  } catch (const Standard_Failure&) {
                    return std::numeric_limits<double>::quiet_NaN();
                  }
