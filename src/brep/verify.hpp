@@ -29,10 +29,8 @@ struct SolidCheck {
 
   double volume = 0;        ///< mm^3, integrate_solid (our face flux) at gprop_relative_accuracy per face
   double volume_error = 0;  ///< mm^3, the integration's error estimate (sum over the faces)
-  /// mm^2, every face's area (BRepGProp's adaptive rule at gprop_relative_accuracy; NaN if it raised).
-  /// No check needs it, so verify_solid integrates it in the background at the lowest priority and
-  /// returns without waiting: the caller's next work (writing the STEP file) runs beside it, and area()
-  /// waits only if it is not done yet.
+  /// mm^2, every face's area (BRepGProp's adaptive rule at gprop_relative_accuracy; NaN if it raised or
+  /// the volume integration did), integrated alongside the volume; verify_solid returns with it done.
   double area() const;
   std::shared_future<double> area_job;
   std::array<double, 3> bbox_min{}, bbox_max{};  ///< tight box (BRepBndLib::AddOptimal), mm
