@@ -39,9 +39,9 @@ std::size_t RaySurfaceCaster::new_block() {
   return pool_.size() / size - 1;
 }
 
-// Newton on F(s, u, v) = o + s d - S(u, v) = 0 (J = [d, -S_u, -S_v]) from the patch centre, to the
-// residual tol_ (newton::solve_system); (u, v) may leave the patch by half its size while converging,
-// a hit must end inside it.
+// Newton on F(s, u, v) = o + s d - S(u, v) = 0 (J = [d, -S_u, -S_v]) from the patch centre, to half
+// the residual tol_ a hit is checked against (newton::solve_system); (u, v) may leave the patch by half
+// its size while converging, a hit must end inside it.
 bool RaySurfaceCaster::newton(const Item& it, const Eigen::Vector3d& o, const Eigen::Vector3d& d, RaySurfaceHit& hit) {
   const double u = 0.5 * (it.u0 + it.u1), v = 0.5 * (it.v0 + it.v1);
   const double mu = 0.5 * (it.u1 - it.u0), mv = 0.5 * (it.v1 - it.v0);
@@ -53,7 +53,10 @@ bool RaySurfaceCaster::newton(const Item& it, const Eigen::Vector3d& o, const Ei
   const double s0 = d.dot(s_->point(u, v) - o) / d.squaredNorm();
   newton::SystemOptions opt;
   opt.max_iterations = 30;
-  opt.residual_tol = tol_;
+  // Half the tolerance the hit is checked against below: stopping just under tol_ left the recomputed
+  // residual (point() instead of derivatives(): other rounding) just above it, and a TE pin ray's wall
+  // crossing was missed from some starts (found from others).
+  opt.residual_tol = 0.5 * tol_;
   opt.step_tol = 0;  // only the residual decides: a hit is a point on both
   opt.max_stalls = 0;
   const Eigen::Vector3d scale(1.0 + std::abs(s0), it.u1 - it.u0, it.v1 - it.v0);
