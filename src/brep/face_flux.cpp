@@ -90,7 +90,6 @@ class FaceSurface {
       auto shared = std::make_shared<const BSplineSurface<3>>(occt::from_occt(*bs));
       const BSplineSurface<3>& b = *shared;
       evaluator_.emplace(shared);
-      rational_ = b.is_rational();
       for (int d = 0; d < 2; ++d) {
         const bool periodic = d == 0 ? b.is_periodic_u() : b.is_periodic_v();
         const double first = d == 0 ? b.first_u() : b.first_v(), last = d == 0 ? b.last_u() : b.last_v();
@@ -107,7 +106,7 @@ class FaceSurface {
         // g = (S - c) . (S_u x S_v) is a polynomial of degree 3p - 1 along a polynomial patch: the
         // ceil(3p / 2)-point rule is exact (up to p = 10, the 16-point rule; beyond, refined pieces).
         const int p = d == 0 ? b.degree_u() : b.degree_v();
-        exact_[d] = !rational_ && (3 * p + 1) / 2 <= 16;
+        exact_[d] = !b.is_rational() && (3 * p + 1) / 2 <= 16;
         order_[d] = exact_[d] ? std::max(1, (3 * p + 1) / 2) : kRule;
       }
     } else {
@@ -200,10 +199,8 @@ class FaceSurface {
 
   /// Cost of one strip across the face along d (evaluations).
   double cost(int d) const { return static_cast<double>(breaks_[d].size() + 1) * order_[d]; }
-  double lo(int d) const { return lo_[d]; }
   /// Where the integrand's smoothness drops in direction d (knots, continuity breaks, refined pieces).
   const std::vector<double>& breaks(int d) const { return breaks_[d]; }
-  double hi(int d) const { return hi_[d]; }
 
  private:
   void clamp(int d, double& t) const {
@@ -260,7 +257,6 @@ class FaceSurface {
 
   GeomAdaptor_Surface adaptor_;
   std::optional<SurfaceEvaluator<3>> evaluator_;
-  bool rational_ = false;
   double lo_[2] = {0, 0}, hi_[2] = {0, 0}, period_[2] = {0, 0}, domain_[2][2] = {{0, 0}, {0, 0}};
   std::vector<double> breaks_[2];
   int order_[2] = {kRule, kRule};
@@ -271,7 +267,7 @@ struct BoundaryEdge {
   Handle(Geom2d_Curve) curve;
   double a = 0, b = 0;
   double sign = 1;  // -1: the edge runs from b to a in the face
-  int group = 0;    // strip start x0 of group
+  int group = 0;    // its wire (the strips start at that wire's x0)
   std::vector<double> panels;  // a, breaks, b
   gp_Pnt2d start, end;         // in the face's direction
 };
