@@ -27,7 +27,6 @@
 
 #include "src/brep/occt_progress.hpp"
 #include "src/brep/solid_integrals.hpp"
-#include "src/core/background.hpp"
 
 namespace cg::brep {
 namespace {
@@ -165,10 +164,6 @@ Check closed_mesh_check(const TopoDS_Shape& shape, const VerifyOptions& opt, int
 
 }  // namespace
 
-double SolidCheck::area() const {
-  return area_job.valid() ? area_job.get() : std::numeric_limits<double>::quiet_NaN();
-}
-
 bool SolidCheck::all_passed() const {
   for (const Check* c : checks())
     if (!c->passed) return false;
@@ -289,9 +284,7 @@ SolidCheck verify_solid(const TopoDS_Shape& shape, const VerifyOptions& options)
   check_cancel(progress, "positive_volume");
   try {
     const auto [in, seconds] = integrals.get();  // rethrows a Standard_Failure of the integrations
-    std::promise<double> a;
-    a.set_value(area.get());
-    r.area_job = a.get_future().share();
+    r.area_ = area.get();
     r.volume = in.volume;
     r.volume_error = in.volume_error;
     std::ostringstream msg;

@@ -4,7 +4,7 @@
 #include <TopoDS_Shape.hxx>
 
 #include <array>
-#include <future>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -31,8 +31,8 @@ struct SolidCheck {
   double volume_error = 0;  ///< mm^3, the integration's error estimate (sum over the faces)
   /// mm^2, every face's area (BRepGProp's adaptive rule at gprop_relative_accuracy; NaN if it raised or
   /// the volume integration did), integrated alongside the volume; verify_solid returns with it done.
-  double area() const;
-  std::shared_future<double> area_job;
+  double area() const { return area_; }
+  double area_ = std::numeric_limits<double>::quiet_NaN();
   std::array<double, 3> bbox_min{}, bbox_max{};  ///< tight box (BRepBndLib::AddOptimal), mm
   int face_count = 0;
   int solid_count = 0;
