@@ -4,12 +4,24 @@
 #include <BRepBuilderAPI_NurbsConvert.hxx>
 #include <BRepTools_NurbsConvertModification.hxx>
 #include <BRep_Tool.hxx>
+#include <BndLib_Add2dCurve.hxx>
+#include <Bnd_Box2d.hxx>
+#include <ElCLib.hxx>
+#include <Precision.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <BRep_Builder.hxx>
 #include <Geom2dConvert.hxx>
 #include <Geom2d_BSplineCurve.hxx>
 #include <Geom2d_TrimmedCurve.hxx>
 #include <Geom_BSplineCurve.hxx>
 #include <Geom_BSplineSurface.hxx>
 #include <Geom_BezierCurve.hxx>
+#include <Geom_ElementarySurface.hxx>
+#include <Geom_RectangularTrimmedSurface.hxx>
+#include <GeomConvert.hxx>
+#include <BRepTools.hxx>
 #include <Geom_Line.hxx>
 #include <Geom_TrimmedCurve.hxx>
 #include <IGESCAFControl_Writer.hxx>
@@ -19,11 +31,13 @@
 #include <IGESData_IGESModel.hxx>
 #include <Interface_Static.hxx>
 #include <Standard_Version.hxx>
-#include <XSControl_WorkSession.hxx>
 
 #include "export/atomic_file.hpp"
 #include "export/part_document.hpp"
 #include "export/version.hpp"
+
+#include <tuple>
+#include <vector>
 
 namespace cg::io {
 namespace {
@@ -45,8 +59,30 @@ void set_param(const char* name, int value) {
 // edge keeps its parametrisation (3D curve absent, a B-spline, Bezier or line: converted without
 // reparametrisation) the existing pcurve is still exact: it is kept, in B-spline form. Everything
 // else (analytic surfaces, conic edges whose parameter changes) goes through OCCT's conversion.
+// Surfaces closed around an axis (cylinders, cones, spheres, tori: hole and pin walls) become
+// PERIODIC B-splines here, over the face's v range: OCCT's own conversion trims such a face's full
+// circle to a closed non-periodic B-spline whose domain ([-pi/8, 15 pi/8] on a film hole) leaves part
+// of the face's pcurves outside it (see surface_holding_loops). Planes and everything else go through
+// OCCT's conversion.
 class KeepBSplineFaces : public BRepTools_NurbsConvertModification {
  public:
+  Standard_Boolean NewSurface(const TopoDS_Face& f, Handle(Geom_Surface)& s, TopLoc_Location& l, Standard_Real& tol,
+                              Standard_Boolean& rev_wires, Standard_Boolean& rev_face) override {
+    TopLoc_Location loc;
+    const Handle(Geom_ElementarySurface) e = Handle(Geom_ElementarySurface)::DownCast(BRep_Tool::Surface(f, loc));
+    if (e.IsNull() || !e->IsUPeriodic())
+      return BRepTools_NurbsConvertModification::NewSurface(f, s, l, tol, rev_wires, rev_face);
+    double u0, u1, v0, v1;
+    BRepTools::UVBounds(f, u0, u1, v0, v1);
+    const Handle(Geom_Surface) trimmed =
+        e->IsVPeriodic() ? Handle(Geom_Surface)(e) : new Geom_RectangularTrimmedSurface(e, v0, v1, /*UTrim=*/false);
+    s = GeomConvert::SurfaceToBSplineSurface(trimmed);
+    l = loc;
+    tol = BRep_Tool::Tolerance(f);
+    rev_wires = rev_face = false;
+    return Standard_True;
+  }
+
   Standard_Boolean NewCurve2d(const TopoDS_Edge& e, const TopoDS_Face& f, const TopoDS_Edge& new_e, const TopoDS_Face& new_f,
                               Handle(Geom2d_Curve)& c, Standard_Real& tol) override {
     TopLoc_Location sl, cl;
@@ -80,6 +116,145 @@ class NurbsConvertKeepingBSplines : public BRepBuilderAPI_NurbsConvert {
   }
 };
 
+// OCCT's IGES writer makes a periodic B-spline surface non-periodic itself (GeomToIGES_GeomSurface): it
+// moves the origin to the knot at or below the face's smallest parameter and shifts the pcurves by
+// whole periods. A face whose loops span the whole period from a parameter between two knots (a pin or
+// film hole's wall, bounded by its seam) then reaches past the end of the written surface by up to one
+// knot span: OCCT's reader leaves those ~0.05 mm of each such loop unmatched, and sewing the faces back
+// left 84 free edges on the built-in example. So every periodic surface is opened here, exactly, at the
+// face's own smallest parameter (a knot inserted there, the origin moved to it, the knots translated by
+// the whole periods between the two), and the writer sees a non-periodic surface whose domain holds
+// every pcurve of its face as it is. The pcurves are re-attached unchanged to the new surface.
+struct ParameterRange {
+  double first = 0, last = 0;
+};
+
+// The pcurves of every edge of a face (a seam has two: c2 is the reversed edge's).
+struct FacePcurve {
+  TopoDS_Edge edge;
+  Handle(Geom2d_Curve) c1, c2;
+  double first = 0, last = 0;
+};
+
+std::vector<FacePcurve> face_pcurves(const TopoDS_Face& face) {
+  std::vector<FacePcurve> out;
+  TopTools_IndexedMapOfShape edges;
+  TopExp::MapShapes(face, TopAbs_EDGE, edges);
+  for (int k = 1; k <= edges.Extent(); ++k) {
+    FacePcurve p;
+    p.edge = TopoDS::Edge(edges(k).Oriented(TopAbs_FORWARD));
+    p.c1 = BRep_Tool::CurveOnSurface(p.edge, face, p.first, p.last);
+    if (BRep_Tool::IsClosed(p.edge, face))
+      p.c2 = BRep_Tool::CurveOnSurface(TopoDS::Edge(p.edge.Reversed()), face, p.first, p.last);
+    if (!p.c1.IsNull()) out.push_back(p);
+  }
+  return out;
+}
+
+// The range of the face's pcurves in u (v), both pcurves of a seam included, by their exact extrema
+// (BndLib_Add2dCurve::AddOptimal: the pole box of a B-spline pcurve can overshoot the seam it ends on).
+std::pair<ParameterRange, ParameterRange> pcurve_ranges(const std::vector<FacePcurve>& pcurves) {
+  Bnd_Box2d box;
+  for (const FacePcurve& p : pcurves)
+    for (const Handle(Geom2d_Curve)& c : {p.c1, p.c2})
+      if (!c.IsNull()) BndLib_Add2dCurve::AddOptimal(c, p.first, p.last, 0.0, box);
+  double u0, v0, u1, v1;
+  box.Get(u0, v0, u1, v1);
+  return {{u0, u1}, {v0, v1}};
+}
+
+enum class Direction { U, V };
+
+// Opens `s` (periodic in `d`) at parameter `at`: afterwards it is clamped and non-periodic on
+// [at, at + period], the same surface at the same parameters (Segment keeps the parametrisation; the
+// knots are then translated by the whole periods between `at` and its image in the stored period).
+void open_periodic(Geom_BSplineSurface& s, Direction d, double at, double period) {
+  double u0, u1, v0, v1;
+  s.Bounds(u0, u1, v0, v1);
+  const bool u = d == Direction::U;
+  const double inside = ElCLib::InPeriod(at, u ? u0 : v0, (u ? u0 : v0) + period);
+  if (u) s.Segment(inside, inside + period, v0, v1);
+  else s.Segment(u0, u1, inside, inside + period);
+  TColStd_Array1OfReal knots(1, u ? s.NbUKnots() : s.NbVKnots());
+  if (u) s.UKnots(knots);
+  else s.VKnots(knots);
+  const double shift = at - inside;
+  if (shift == 0) return;
+  for (int k = knots.Lower(); k <= knots.Upper(); ++k) knots(k) += shift;
+  if (u) s.SetUKnots(knots);
+  else s.SetVKnots(knots);
+}
+
+// The surface to write for a face on `old`: opened (open_periodic) at the face's loops in every direction
+// where `old` is periodic, or closed with pcurves beyond its domain (OCCT's NurbsConvert makes a full
+// cylinder a closed non-periodic B-spline over [-pi/8, 15 pi/8] and leaves the hole's pcurves on
+// [0, 2 pi]: in memory OCCT evaluates past the end, in a file the last eighth of the loop is off the
+// surface). Null when the face needs no change.
+Handle(Geom_BSplineSurface) surface_holding_loops(const Handle(Geom_BSplineSurface)& old,
+                                                  const std::vector<FacePcurve>& pcurves) {
+  const auto [ur, vr] = pcurve_ranges(pcurves);
+  double u0, u1, v0, v1;
+  old->Bounds(u0, u1, v0, v1);
+  const double eps = Precision::PConfusion();
+  const bool open_u = old->IsUPeriodic() || (old->IsUClosed() && (ur.first < u0 - eps || ur.last > u1 + eps));
+  const bool open_v = old->IsVPeriodic() || (old->IsVClosed() && (vr.first < v0 - eps || vr.last > v1 + eps));
+  if (!open_u && !open_v) return {};
+  const Handle(Geom_BSplineSurface) s = Handle(Geom_BSplineSurface)::DownCast(old->Copy());
+  for (const auto& [d, range, open] : {std::tuple{Direction::U, ur, open_u}, std::tuple{Direction::V, vr, open_v}}) {
+    if (!open) continue;
+    const bool u = d == Direction::U;
+    if (u && !s->IsUPeriodic()) s->SetUPeriodic();
+    if (!u && !s->IsVPeriodic()) s->SetVPeriodic();
+    const double period = u ? s->UPeriod() : s->VPeriod();
+    if (range.last - range.first > period * (1 + 1e-12)) return {};
+    // Centred in the period where the face leaves room, so no pcurve ends on the new boundary by rounding.
+    const double margin = 0.5 * (period - (range.last - range.first));
+    open_periodic(*s, d, range.first - (margin > 1e-9 * period ? margin : 0.0), period);
+  }
+  return s;
+}
+
+// The new surface gives the points the old one gave along every pcurve of the face (17 samples per
+// pcurve, within `tol` mm): the check that opening kept the face where it was.
+bool same_along_pcurves(const Geom_Surface& old, const Geom_Surface& now, const std::vector<FacePcurve>& pcurves,
+                        double tol) {
+  for (const FacePcurve& p : pcurves)
+    for (const Handle(Geom2d_Curve)& c : {p.c1, p.c2}) {
+      if (c.IsNull()) continue;
+      for (int k = 0; k <= 16; ++k) {
+        const gp_Pnt2d uv = c->Value(p.first + (p.last - p.first) * k / 16.0);
+        if (old.Value(uv.X(), uv.Y()).Distance(now.Value(uv.X(), uv.Y())) > tol) return false;
+      }
+    }
+  return true;
+}
+
+// Every face whose surface must be opened for the IGES writer gets the opened surface, its pcurves
+// re-attached unchanged (they are stored per surface). A face the check rejects keeps its surface.
+void open_periodic_faces(const brep::NamedBody& body) {
+  BRep_Builder b;
+  TopTools_IndexedMapOfShape faces;
+  TopExp::MapShapes(body.geometry.shape, TopAbs_FACE, faces);
+  for (int i = 1; i <= faces.Extent(); ++i) {
+    const TopoDS_Face face = TopoDS::Face(faces(i).Oriented(TopAbs_FORWARD));
+    TopLoc_Location loc;
+    const Handle(Geom_BSplineSurface) old = Handle(Geom_BSplineSurface)::DownCast(BRep_Tool::Surface(face, loc));
+    if (old.IsNull()) continue;
+    const std::vector<FacePcurve> pcurves = face_pcurves(face);
+    const Handle(Geom_BSplineSurface) s = surface_holding_loops(old, pcurves);
+    if (s.IsNull()) continue;
+    if (!same_along_pcurves(*old, *s, pcurves, 1e-9 + 0.1 * BRep_Tool::Tolerance(face)))
+      throw ExportError("IGES: the surface of a face of body \"" + body.name + "\" could not be made non-periodic");
+    b.UpdateFace(face, s, loc, BRep_Tool::Tolerance(face));
+    for (const FacePcurve& p : pcurves) {
+      const double tol = BRep_Tool::Tolerance(p.edge);
+      if (p.c2.IsNull()) b.UpdateEdge(p.edge, p.c1, face, tol);
+      else b.UpdateEdge(p.edge, p.c1, p.c2, face, tol);
+      b.Range(p.edge, face, p.first, p.last);
+    }
+  }
+}
+
 // The conversion runs on a copy of the topology (geometry shared): OCCT's modifier updates the vertices
 // and edges it keeps (their parameters on the new curves), and other exporters read the part meanwhile.
 brep::Part nurbs_part(const brep::Part& part) {
@@ -89,6 +264,7 @@ brep::Part nurbs_part(const brep::Part& part) {
     NurbsConvertKeepingBSplines convert(copy.Shape());
     if (!convert.IsDone()) throw ExportError("IGES: conversion of body \"" + body.name + "\" to B-splines failed");
     brep::NamedBody b{body.name, {convert.Shape(), {}}};
+    open_periodic_faces(b);
     for (const brep::NamedFace& f : body.geometry.faces)
       b.geometry.faces.push_back({TopoDS::Face(convert.ModifiedShape(copy.ModifiedShape(f.face))), f.name});
     out.push_back(std::move(b));
@@ -106,7 +282,11 @@ void write_iges(const std::filesystem::path& file, const brep::Part& part, const
   set_param("write.iges.header.author", kToolName);
   set_param("write.iges.header.company", "");
   const PartDocument doc(nurbs_part(part), options.product_name);
-  IGESCAFControl_Writer writer(new XSControl_WorkSession, /*scratch=*/true);
+  // The default constructor: built on a fresh XSControl_WorkSession (the other constructor) OCCT 7.6.3
+  // leaves the model's global section unset (unit flag 0, no unit name, unit value 0, resolution 0),
+  // and the writer then scales every coordinate by 1 / 0: the file held INF for each non-zero
+  // coordinate, which OCCT's reader turned into 927 faces, 496 of them invalid (test_acceptance_*).
+  IGESCAFControl_Writer writer;
   writer.SetNameMode(true);
   writer.SetColorMode(true);
   writer.SetLayerMode(true);

@@ -5,7 +5,10 @@
 #include <Bnd_Box.hxx>
 #include <BRepMesh_IncrementalMesh.hxx>
 #include <BRep_Tool.hxx>
+#include <NCollection_DataMap.hxx>
 #include <Poly_Triangulation.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_ShapeMapHasher.hxx>
 #include <TopoDS.hxx>
 
 #include <algorithm>
@@ -31,8 +34,20 @@ PartTriangles triangulate_part(const brep::Part& part, const TriangulationOption
     // Mesh a copy: the part is shared with other exporters and must not keep this mesh.
     BRepBuilderAPI_Copy copier(g.shape, /*copyGeom=*/false, /*copyMesh=*/false);
     BRepMesh_IncrementalMesh(copier.Shape(), deflection, false, options.angular_deflection, true);
+    // Each face as it sits in the solid's shells: after the feature booleans the orientation of a face in
+    // the part's name list need not be the one it has in the shell (a tool face enters the result
+    // reversed), and only the shell's orientation points outward. Names are matched by IsSame.
+    NCollection_DataMap<TopoDS_Shape, TopoDS_Face, TopTools_ShapeMapHasher> in_shell;
+    for (TopExp_Explorer e(copier.Shape(), TopAbs_FACE); e.More(); e.Next())
+      if (!in_shell.IsBound(e.Current())) in_shell.Bind(e.Current(), TopoDS::Face(e.Current()));
+    if (in_shell.Extent() != static_cast<int>(g.faces.size()))
+      throw ExportError("body \"" + part[b].name + "\" has " + std::to_string(in_shell.Extent()) + " faces but " +
+                        std::to_string(g.faces.size()) + " face names");
     for (std::size_t fi = 0; fi < g.faces.size(); ++fi) {
-      const TopoDS_Face face = TopoDS::Face(copier.ModifiedShape(g.faces[fi].face));
+      const TopoDS_Shape copied = copier.ModifiedShape(g.faces[fi].face);
+      if (!in_shell.IsBound(copied))
+        throw ExportError("face \"" + g.faces[fi].name + "\" of body \"" + part[b].name + "\" is not in the body's shells");
+      const TopoDS_Face face = in_shell.Find(copied);
       TopLoc_Location loc;
       Handle(Poly_Triangulation) t = BRep_Tool::Triangulation(face, loc);
       if (t.IsNull())
