@@ -16,6 +16,7 @@
 // interface (BCTypeUserDefined, with a Descriptor naming its zones). Each interface is also a
 // ZoneGridConnectivity entry of the same name in both zones: Abutting1to1, GridLocation Vertex,
 // PointList of the zone's interface nodes and PointListDonor of the same nodes in the other zone.
+// Zones are written in region order; the CGNS library lists them by name when reading.
 #include <string>
 
 #include "src/mesh/mesh_files.hpp"
