@@ -36,8 +36,8 @@ cg_add_library(coolinggen_brep DIRS src/brep features DEPS coolinggen_model cool
 cg_add_library(coolinggen_export DIRS export DEPS coolinggen_brep coolinggen_vtk_deps coolinggen_cgns_deps nlohmann_json::nlohmann_json)
 vtk_module_autoinit(TARGETS coolinggen_export MODULES ${VTK_LIBRARIES})
 target_compile_definitions(coolinggen_export PRIVATE COOLINGGEN_VERSION="${PROJECT_VERSION}")
-# Meshing through gmsh's C++ API (gmsh takes the OCCT shape).
-cg_add_library(coolinggen_mesh DIRS src/mesh DEPS coolinggen_brep coolinggen_gmsh_deps coolinggen_vtk_deps)
+# Meshing through gmsh's C++ API (gmsh takes the OCCT shape); mesh.cgns with export's CGNS file helpers.
+cg_add_library(coolinggen_mesh DIRS src/mesh DEPS coolinggen_brep coolinggen_export coolinggen_gmsh_deps coolinggen_vtk_deps)
 vtk_module_autoinit(TARGETS coolinggen_mesh MODULES ${VTK_LIBRARIES})
 # Configuration file (JSON) -> plain option structs and the blade model's definitions (no OCCT).
 cg_add_library(coolinggen_config DIRS src/config DEPS coolinggen_model nlohmann_json::nlohmann_json)

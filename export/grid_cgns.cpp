@@ -6,14 +6,11 @@
 #include <vector>
 
 #include "export/atomic_file.hpp"
+#include "export/cgns_file.hpp"
 
 namespace cg::io {
 
 namespace {
-
-void check(int status, const std::string& what) {
-  if (status != CG_OK) throw ExportError("CGNS: " + what + ": " + cg_get_error());
-}
 
 CGNS_ENUMT(BCType_t) bc_type(grid::BoundaryKind k) {
   switch (k) {
@@ -53,64 +50,53 @@ std::array<int, 2> transform(const grid::FaceRange& r, const grid::FaceRange& d)
 
 void write_cgns(const std::filesystem::path& file, const grid::MultiBlockGrid& g, const std::string& base) {
   write_atomically(file, [&](const std::filesystem::path& tmp) {
-    int fn = 0, B = 0;
-    check(cg_open(tmp.c_str(), CG_MODE_WRITE, &fn), "open " + tmp.string());
-    try {
-      check(cg_base_write(fn, base.c_str(), 2, 2, &B), "base");
-      check(cg_goto(fn, B, "end"), "goto base");
-      check(cg_units_write(CGNS_ENUMV(MassUnitsNull), CGNS_ENUMV(Millimeter), CGNS_ENUMV(TimeUnitsNull),
-                           CGNS_ENUMV(TemperatureUnitsNull), CGNS_ENUMV(Degree)),
-            "units");
-      std::vector<int> zone(g.blocks.size());
-      for (std::size_t k = 0; k < g.blocks.size(); ++k) {
-        const grid::Block& b = g.blocks[k];
-        cgsize_t size[6] = {b.ni + 1, b.nj + 1, b.ni, b.nj, 0, 0};
-        check(cg_zone_write(fn, B, b.name.c_str(), size, CGNS_ENUMV(Structured), &zone[k]), "zone " + b.name);
-        std::vector<double> x(b.nodes.size()), y(b.nodes.size());  // i fastest, as CGNS stores structured data
-        for (std::size_t n = 0; n < b.nodes.size(); ++n) {
-          x[n] = b.nodes[n].x();
-          y[n] = b.nodes[n].y();
-        }
-        int C = 0;
-        check(cg_coord_write(fn, B, zone[k], CGNS_ENUMV(RealDouble), "CoordinateX", x.data(), &C), "CoordinateX");
-        check(cg_coord_write(fn, B, zone[k], CGNS_ENUMV(RealDouble), "CoordinateY", y.data(), &C), "CoordinateY");
+    CgnsFile out(tmp);
+    const int fn = out.id(), B = out.write_base(base, 2, 2);
+    std::vector<int> zone(g.blocks.size());
+    for (std::size_t k = 0; k < g.blocks.size(); ++k) {
+      const grid::Block& b = g.blocks[k];
+      cgsize_t size[6] = {b.ni + 1, b.nj + 1, b.ni, b.nj, 0, 0};
+      cgns_check(cg_zone_write(fn, B, b.name.c_str(), size, CGNS_ENUMV(Structured), &zone[k]), "zone " + b.name);
+      std::vector<double> x(b.nodes.size()), y(b.nodes.size());  // i fastest, as CGNS stores structured data
+      for (std::size_t n = 0; n < b.nodes.size(); ++n) {
+        x[n] = b.nodes[n].x();
+        y[n] = b.nodes[n].y();
       }
-      for (const grid::BoundaryCondition& bc : g.boundaries) {
-        const auto& b = g.blocks[static_cast<std::size_t>(bc.block)];
-        const auto pr = point_range(b, bc.range);
-        int BC = 0;
-        check(cg_boco_write(fn, B, zone[static_cast<std::size_t>(bc.block)], bc.name.c_str(), bc_type(bc.kind),
-                            CGNS_ENUMV(PointRange), 2, pr.data(), &BC),
-              "boundary " + bc.name);
-      }
-      // Each interface from both sides; the reverse side of a periodic pair has the opposite translation.
-      for (const grid::Connection& c : g.connections)
-        for (int side = 0; side < 2; ++side) {
-          const int zb = side == 0 ? c.block : c.donor, zd = side == 0 ? c.donor : c.block;
-          const grid::FaceRange& r = side == 0 ? c.range : c.donor_range;
-          const grid::FaceRange& d = side == 0 ? c.donor_range : c.range;
-          const auto& blk = g.blocks[static_cast<std::size_t>(zb)];
-          const auto& don = g.blocks[static_cast<std::size_t>(zd)];
-          const auto pr = point_range(blk, r), pd = point_range(don, d);
-          const auto t = transform(r, d);
-          const std::string name = c.name + (side == 0 ? "" : "_donor");
-          int I = 0;
-          check(cg_1to1_write(fn, B, zone[static_cast<std::size_t>(zb)], name.c_str(), don.name.c_str(), pr.data(),
-                              pd.data(), t.data(), &I),
-                "connection " + name);
-          if (c.periodic) {
-            const float sign = side == 0 ? 1.0f : -1.0f;
-            const float centre[2] = {0, 0}, angle[2] = {0, 0};
-            const float shift[2] = {sign * static_cast<float>(c.translation.x()), sign * static_cast<float>(c.translation.y())};
-            check(cg_1to1_periodic_write(fn, B, zone[static_cast<std::size_t>(zb)], I, centre, angle, shift),
-                  "periodic " + name);
-          }
-        }
-    } catch (...) {
-      cg_close(fn);
-      throw;
+      out.write_coordinate(B, zone[k], "CoordinateX", x);
+      out.write_coordinate(B, zone[k], "CoordinateY", y);
     }
-    check(cg_close(fn), "close");
+    for (const grid::BoundaryCondition& bc : g.boundaries) {
+      const auto& b = g.blocks[static_cast<std::size_t>(bc.block)];
+      const auto pr = point_range(b, bc.range);
+      int BC = 0;
+      cgns_check(cg_boco_write(fn, B, zone[static_cast<std::size_t>(bc.block)], bc.name.c_str(), bc_type(bc.kind),
+                                 CGNS_ENUMV(PointRange), 2, pr.data(), &BC),
+                 "boundary " + bc.name);
+    }
+    // Each interface from both sides; the reverse side of a periodic pair has the opposite translation.
+    for (const grid::Connection& c : g.connections)
+      for (int side = 0; side < 2; ++side) {
+        const int zb = side == 0 ? c.block : c.donor, zd = side == 0 ? c.donor : c.block;
+        const grid::FaceRange& r = side == 0 ? c.range : c.donor_range;
+        const grid::FaceRange& d = side == 0 ? c.donor_range : c.range;
+        const auto& blk = g.blocks[static_cast<std::size_t>(zb)];
+        const auto& don = g.blocks[static_cast<std::size_t>(zd)];
+        const auto pr = point_range(blk, r), pd = point_range(don, d);
+        const auto t = transform(r, d);
+        const std::string name = c.name + (side == 0 ? "" : "_donor");
+        int I = 0;
+        cgns_check(cg_1to1_write(fn, B, zone[static_cast<std::size_t>(zb)], name.c_str(), don.name.c_str(), pr.data(),
+                                 pd.data(), t.data(), &I),
+                   "connection " + name);
+        if (c.periodic) {
+          const float sign = side == 0 ? 1.0f : -1.0f;
+          const float centre[2] = {0, 0}, angle[2] = {0, 0};
+          const float shift[2] = {sign * static_cast<float>(c.translation.x()), sign * static_cast<float>(c.translation.y())};
+          cgns_check(cg_1to1_periodic_write(fn, B, zone[static_cast<std::size_t>(zb)], I, centre, angle, shift),
+                     "periodic " + name);
+        }
+      }
+    out.close();
   });
 }
 

@@ -37,7 +37,7 @@ struct MeshConfig {
   int curvature_elements = 16;          ///< per 2 pi on every surface
   int feature_curvature_elements = 40;  ///< per 2 pi on the cooling-feature faces
   bool metal = true, coolant = true;    ///< "domains"
-  bool msh = true, vtu = true;          ///< "formats"
+  bool msh = true, vtu = true, cgns = false;  ///< "formats" (default ["msh", "vtu"])
   bool group_by_face_name = false;      ///< "physical_groups": "face_name" (default "kind")
   int threads = 2;
   bool optimize = true;

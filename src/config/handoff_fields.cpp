@@ -1,5 +1,7 @@
 #include "src/config/handoff_fields.hpp"
 
+#include <vector>
+
 namespace cg::config {
 namespace {
 
@@ -8,6 +10,17 @@ bool boolean_or(const Field& f, const char* key, bool fallback) {
   const Field b = f.at(key);
   if (!b.json().is_boolean()) fail(b.path(), "must be true or false, got " + json_type_name(b.json()));
   return b.json().get<bool>();
+}
+
+// An array of distinct entries of `names`: sets the flag of each entry listed, clears the others.
+void read_flags(const Field& d, std::initializer_list<const char*> names, const std::vector<bool*>& flags) {
+  const std::size_t n = d.expect_array(1, names.size());
+  for (bool* f : flags) *f = false;
+  for (std::size_t i = 0; i < n; ++i) {
+    bool& on = *flags[static_cast<std::size_t>(d.item(i).choice(names))];
+    if (on) fail(d.item(i).path(), "lists " + d.item(i).json().dump() + " twice");
+    on = true;
+  }
 }
 
 }  // namespace
@@ -38,18 +51,8 @@ MeshConfig mesh_config(const Field& f) {
   m.min_size = f.number_or("min_size", m.min_size, closed(0.001, m.max_size), "mm (<= max_size)");
   m.curvature_elements = f.integer_or("curvature_elements", m.curvature_elements, 0, 200);
   m.feature_curvature_elements = f.integer_or("feature_curvature_elements", m.feature_curvature_elements, 0, 200);
-  if (f.has("domains")) {
-    const Field d = f.at("domains");
-    const std::size_t n = d.expect_array(1, 2);
-    m.metal = m.coolant = false;
-    for (std::size_t i = 0; i < n; ++i) (d.item(i).choice({"metal", "coolant"}) == 0 ? m.metal : m.coolant) = true;
-  }
-  if (f.has("formats")) {
-    const Field d = f.at("formats");
-    const std::size_t n = d.expect_array(1, 2);
-    m.msh = m.vtu = false;
-    for (std::size_t i = 0; i < n; ++i) (d.item(i).choice({"msh", "vtu"}) == 0 ? m.msh : m.vtu) = true;
-  }
+  if (f.has("domains")) read_flags(f.at("domains"), {"metal", "coolant"}, {&m.metal, &m.coolant});
+  if (f.has("formats")) read_flags(f.at("formats"), {"msh", "vtu", "cgns"}, {&m.msh, &m.vtu, &m.cgns});
   if (f.has("physical_groups")) m.group_by_face_name = f.at("physical_groups").choice({"kind", "face_name"}) == 1;
   m.threads = f.integer_or("threads", m.threads, 1, 256);
   m.optimize = boolean_or(f, "optimize", m.optimize);

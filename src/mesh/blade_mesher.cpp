@@ -12,6 +12,7 @@
 #include <map>
 #include <unordered_map>
 
+#include "src/mesh/mesh_cgns.hpp"
 #include "src/mesh/mesh_files.hpp"
 
 namespace cg::mesh {
@@ -350,6 +351,7 @@ MeshResult mesh_blade(const brep::Part& part, const TopoDS_Shape& uncooled, cons
     const auto vtu = write_vtu_files(files, data);
     r.files.insert(r.files.end(), vtu.begin(), vtu.end());
   }
+  if (o.write_cgns) r.files.push_back(write_cgns_file(files, data));
   r.seconds_total = since(t_start);
   return r;
 }

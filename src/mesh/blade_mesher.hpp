@@ -55,7 +55,7 @@ struct MeshResult {
 
 /// Meshes the part's bodies (options.metal) and its coolant domain (options.coolant; `uncooled` is the
 /// blade solid before the features, its faces named in `uncooled_faces`) and writes the selected files
-/// through `files`: mesh.msh, mesh_<region>.vtu, mesh_surfaces.vtu. `progress` (optional) sees the
+/// through `files`: mesh.msh, mesh_<region>.vtu, mesh_surfaces.vtu, mesh.cgns. `progress` (optional) sees the
 /// steps and may stop the job between them (Cancelled). Throws MeshError when the options are out of
 /// range or a step fails (the message names the step).
 MeshResult mesh_blade(const brep::Part& part, const TopoDS_Shape& uncooled, const std::vector<brep::NamedFace>& uncooled_faces,

@@ -25,6 +25,7 @@ struct MeshOptions {
   bool coolant = true;            ///< mesh the coolant domain (when the blade has cavities)
   bool write_msh = true;          ///< mesh.msh (gmsh 4.1, physical groups only)
   bool write_vtu = true;          ///< mesh_<region>.vtu (tetrahedra) and mesh_surfaces.vtu (triangles)
+  bool write_cgns = false;        ///< mesh.cgns (src/mesh/mesh_cgns.hpp: a zone per region, families, interfaces)
   GroupBy groups = GroupBy::Kind; ///< surface physical groups per feature kind or per full face name
   int threads = 2;                ///< gmsh threads (HXT volume mesher, surface meshing), >= 1
   bool optimize = true;           ///< gmsh's tetrahedron optimisation (Mesh.Optimize)

@@ -22,6 +22,7 @@ mesh::MeshOptions mesh_options(const config::MeshConfig& c) {
   m.coolant = c.coolant;
   m.write_msh = c.msh;
   m.write_vtu = c.vtu;
+  m.write_cgns = c.cgns;
   m.groups = c.group_by_face_name ? mesh::GroupBy::FaceName : mesh::GroupBy::Kind;
   m.threads = c.threads;
   m.optimize = c.optimize;
@@ -33,7 +34,7 @@ MeshOutputs write_mesh(const config::Config& c, const BuildResult& r, const fs::
   out.directory = dir;
   StageRunner stages(progress, out.timings);
   check_cancel(progress, "meshing");
-  std::vector<std::string> owned{kReportFile, "report.md", "mesh.msh", "mesh_surfaces.vtu", "mesh_coolant.vtu"};
+  std::vector<std::string> owned{kReportFile, "report.md", "mesh.msh", "mesh.cgns", "mesh_surfaces.vtu", "mesh_coolant.vtu"};
   for (const brep::NamedBody& b : r.part) owned.push_back("mesh_" + b.name + ".vtu");
   OutputDirectory od(dir, kReportFile, owned);
   if (r.valid())

@@ -42,6 +42,9 @@ BOOST_AUTO_TEST_CASE(defaults) {
   BOOST_TEST(c.mesh.max_size == 1.5);
   BOOST_TEST(c.mesh.metal);
   BOOST_TEST(c.mesh.coolant);
+  BOOST_TEST(c.mesh.msh);
+  BOOST_TEST(c.mesh.vtu);
+  BOOST_TEST(!c.mesh.cgns);  // mesh.cgns on request
 }
 
 BOOST_AUTO_TEST_CASE(values_are_read) {
@@ -59,6 +62,7 @@ BOOST_AUTO_TEST_CASE(values_are_read) {
   BOOST_TEST(c.mesh.coolant);
   BOOST_TEST(c.mesh.msh);
   BOOST_TEST(!c.mesh.vtu);
+  BOOST_TEST(!c.mesh.cgns);
   BOOST_TEST(c.mesh.group_by_face_name);
   BOOST_TEST(!c.mesh.optimize);
   BOOST_TEST(c.mesh.feature_curvature_elements == 30);
@@ -73,6 +77,10 @@ BOOST_AUTO_TEST_CASE(errors_name_the_field) {
   expect_error([](json& d) { d["mesh"] = {{"max_size", 1}, {"min_size", 2}}; }, "mesh.min_size", "max_size");
   expect_error([](json& d) { d["mesh"] = {{"domains", {"air"}}}; }, "mesh.domains[0]", "coolant");
   expect_error([](json& d) { d["mesh"] = {{"optimize", 1}}; }, "mesh.optimize", "true or false");
+  expect_error([](json& d) { d["mesh"] = {{"formats", {"cgsn"}}}; }, "mesh.formats[0]", "\"cgns\"");
+  expect_error([](json& d) { d["mesh"] = {{"formats", {"cgns", "cgns"}}}; }, "mesh.formats[1]", "twice");
+  expect_error([](json& d) { d["mesh"] = {{"formats", json::array()}}; }, "mesh.formats", "between 1 and 3");
+  expect_error([](json& d) { d["mesh"] = {{"domains", {"metal", "metal"}}}; }, "mesh.domains[1]", "twice");
   expect_error([](json& d) { d["mesh"] = {{"size", 1}}; }, "mesh", "size");
   expect_error([](json& d) { d["mesh"] = 3; }, "mesh", "object");
 }

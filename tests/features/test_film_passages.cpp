@@ -27,8 +27,8 @@
 
 #include "brep/step_read_back.hpp"
 #include "brep/temp_files.hpp"
+#include "support/short_blade.hpp"
 #include "src/brep/verify.hpp"
-#include "src/config/builtin_example.hpp"
 #include "src/config/config.hpp"
 #include "src/pipeline/build.hpp"
 #include "src/pipeline/cooling.hpp"
@@ -40,20 +40,8 @@ using nlohmann::json;
 namespace {
 
 json config_doc() {
-  json d = json::parse(config::builtin_example_json());
-  d["name"] = "film_passages";
-  d["flow_path"] = {{"type", "straight"}, {"span", 16}};
-  json mid = d["sections"][1];  // the mid-span section alone, thickened: a prismatic blade whose LE radius
-  mid["span"] = 0.0;               // (2.6 mm) exceeds wall + gap + sheet (1.9 mm), so an insert fits the LE chamber
-  mid["parametric"]["max_thickness"] = 12.0;
-  mid["parametric"]["le_radius"] = 2.6;
-  d["sections"] = json::array({mid});
+  json d = test::short_example_blade("film_passages", 16);  // an insert fits its LE chamber
   d["cooling"] = json::parse(R"({
-    "core": {
-      "wall_thickness": 1.0, "tip_cap": {"thickness": 1.0}, "hub_floor": {"thickness": 1.0},
-      "ribs": [{"suction_chord": 0.3, "pressure_chord": -0.3, "thickness": 1.0, "fillet_radius": 0.3}],
-      "inlets": [{"chamber": 1, "end": "hub", "diameter": 1.0}, {"chamber": 2, "end": "hub", "diameter": 1.2}]
-    },
     "showerhead": {"rows": 3, "diameter": 0.3, "row_spacing_d": 4, "pitch_d": 6, "radial_angle_deg": 60,
                    "span_start": 0.25, "span_end": 0.75, "chamber": 1},
     "film_rows": [
@@ -64,6 +52,7 @@ json config_doc() {
     "inserts": [{"chamber": 1, "gap": 0.6, "sheet_thickness": 0.3, "hub_end": "closed", "tip_end": "closed",
                  "jets": {"diameter": 0.4, "spacing_x_d": 8, "spacing_y_d": 8}}]
   })");
+  d["cooling"]["core"] = test::two_chamber_core();
   return d;
 }
 
