@@ -6,7 +6,9 @@
 //     "solid": { "volume_mm3", "volume_error_mm3", "surface_area_mm2", "bbox_mm": {"min", "max", "size"},
 //                "face_count", "solid_count", "faces": {name: count}, "mesh_triangles" },
 //     "checks": { name: {"passed": bool, "message": str} }, "warnings": [str], "timings_s": {stage: s},
-//     "outputs": [file names written with this report, report.json included] }
+//     "outputs": [file names written with this report, report.json included],
+//     "bodies": [{"name", "valid", "volume_mm3", "surface_area_mm2", "face_count", "faces"}] (every body,
+//                blade first; added by the pipeline), then the pipeline's other sections }
 // "outputs" makes the report the index of its directory (src/pipeline/output_directory.hpp).
 #include <nlohmann/json.hpp>
 

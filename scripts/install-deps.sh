@@ -7,7 +7,7 @@ packages=(
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
   libocct-data-exchange-dev libocct-visualization-dev libocct-ocaf-dev
   libtbb-dev libeigen3-dev libboost-test-dev nlohmann-json3-dev libcli11-dev
-  libvtk9-dev libgmsh-dev libcgns-dev cgns-convert libssl-dev xvfb xauth
+  libvtk9-dev libgmsh-dev libcgns-dev admesh cgns-convert libssl-dev xvfb xauth
 )
 missing=()
 for p in "${packages[@]}"; do

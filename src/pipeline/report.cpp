@@ -122,6 +122,19 @@ io::ReportContent report_content(const config::Config& c, const BuildResult& r, 
   if (r.film) rc.model["cooling"]["film"] = r.film->to_json();
   for (const StageTiming& s : timings) rc.timings_s[s.stage] = s.seconds;
   rc.outputs = outputs;
+  // "solid" describes the blade; "bodies" every body of the part (blade first, then inserts), so a
+  // reader of the files (STEP solids, IGES shells, one .vtp per body) can check each one.
+  nlohmann::ordered_json bodies = nlohmann::ordered_json::array();
+  for (std::size_t i = 0; i < r.part.size() && i < r.checks.size(); ++i) {
+    const brep::SolidCheck& k = r.checks[i];
+    bodies.push_back({{"name", r.part[i].name},
+                      {"valid", k.all_passed()},
+                      {"volume_mm3", k.volume},
+                      {"surface_area_mm2", k.area()},
+                      {"face_count", k.face_count},
+                      {"faces", brep::count_face_names(r.part[i].geometry)}});
+  }
+  rc.extra["bodies"] = bodies;
   return rc;
 }
 

@@ -1,0 +1,18 @@
+// The hand-off files of the built-in example (`coolinggen build -o DIR`: the cooled HPT rotor blade with
+// chambers, ribs, fillets, turbulators, pins, TE slots, 153 film holes and a showerhead; STEP AP242),
+// each read back by a reader that is not ours (tests/acceptance/handoff_checks.hpp).
+#define BOOST_TEST_MODULE acceptance_builtin
+#include <boost/test/unit_test.hpp>
+
+#include "acceptance/handoff_checks.hpp"
+
+using namespace cg;
+
+namespace {
+const test::ProductBuild& build() { return test::product_build(""); }
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(step_ap242_one_valid_named_solid) { test::check_step(build()); }
+BOOST_AUTO_TEST_CASE(iges_sews_into_a_closed_shell) { test::check_iges(build()); }
+BOOST_AUTO_TEST_CASE(stl_closed_and_outward) { test::check_stl(build()); }
+BOOST_AUTO_TEST_CASE(vtk_closed_outward_normals_out) { test::check_vtk(build()); }

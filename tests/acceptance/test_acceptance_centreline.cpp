@@ -1,0 +1,17 @@
+// The hand-off files of the rotor with centreline TE slots (data/examples/hpt_rotor_centreline.json;
+// STEP AP214), each read back by a reader that is not ours.
+#define BOOST_TEST_MODULE acceptance_centreline
+#include <boost/test/unit_test.hpp>
+
+#include "acceptance/handoff_checks.hpp"
+
+using namespace cg;
+
+namespace {
+const test::ProductBuild& build() { return test::product_build("hpt_rotor_centreline.json"); }
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(step_ap214_one_valid_named_solid) { test::check_step(build()); }
+BOOST_AUTO_TEST_CASE(iges_sews_into_a_closed_shell) { test::check_iges(build()); }
+BOOST_AUTO_TEST_CASE(stl_closed_and_outward) { test::check_stl(build()); }
+BOOST_AUTO_TEST_CASE(vtk_closed_outward_normals_out) { test::check_vtk(build()); }
