@@ -18,6 +18,8 @@
 #include <Geom_BSplineCurve.hxx>
 #include <Geom_BSplineSurface.hxx>
 #include <Geom_BezierCurve.hxx>
+#include <Geom_ConicalSurface.hxx>
+#include <Geom_CylindricalSurface.hxx>
 #include <Geom_ElementarySurface.hxx>
 #include <Geom_RectangularTrimmedSurface.hxx>
 #include <GeomConvert.hxx>
@@ -32,10 +34,14 @@
 #include <Interface_Static.hxx>
 #include <Standard_Version.hxx>
 
+#include "adaptors/occt_convert.hpp"
 #include "export/atomic_file.hpp"
+#include "src/fit/approximate.hpp"
 #include "export/part_document.hpp"
 #include "export/version.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <tuple>
 #include <vector>
 
@@ -47,6 +53,90 @@ void set_param(const char* name, const char* value) {
 }
 void set_param(const char* name, int value) {
   if (!Interface_Static::SetIVal(name, value)) throw ExportError(std::string("cannot set the IGES parameter ") + name);
+}
+
+// The parameter u of GeomConvert's periodic B-spline form of a cylinder or cone at angle `phi`: its
+// three equal spans [a, a + D] (D = 2 pi / 3, knots at the angles a) are rational quadratic arcs, on
+// which tan((phi - m) / 2) = tan(D / 4) (2 (u - a) / D - 1), m the span's middle angle.
+double converted_angle_parameter(double phi) {
+  const double period = 2 * M_PI, span = period / 3;
+  const double turns = std::floor(phi / period), local = phi - turns * period;
+  const double a = std::min(2.0, std::floor(local / span)) * span, m = a + span / 2;
+  return turns * period + m + span / 2 * std::tan((local - m) / 2) / std::tan(span / 4);
+}
+
+// The pcurve c2 (on a cylinder or cone, u the angle) carried over to `now`, the periodic B-spline form
+// of that surface (NewSurface): u mapped exactly at 8 (p + 1) samples per span of c2, fitted by least
+// squares on c2's knots (degree at least 3), knots added where the fit is off, up to 4 times; accepted
+// when the fitted pcurve puts every check point (the samples and the midpoints between them) on `now`
+// within a tenth of the edge's tolerance of where c2 put it on the cylinder. Null otherwise: then
+// OCCT's projection (ProjLib_ComputeApproxOnPolarSurface, ~30 ms per film-hole edge) does it.
+Handle(Geom2d_Curve) angular_pcurve(const Geom2d_Curve& c2, double first, double last, const Geom_Surface& old,
+                                    const Geom_Surface& now, double tol) {
+  Handle(Geom2d_BSplineCurve) b = Geom2dConvert::CurveToBSplineCurve(new Geom2d_TrimmedCurve(Handle(Geom2d_Curve)::DownCast(c2.Copy()), first, last));
+  if (b->Degree() < 3) b->IncreaseDegree(3);
+  const BSplineCurve<2> base = occt::from_occt(*b);
+  const int p = base.degree();
+  std::vector<double> knots = base.knots();
+  // The map is only C1 where the angle crosses a span boundary of `now` (its second derivative jumps):
+  // there the fit gets a knot of multiplicity p - 1, found by bisection between samples.
+  const double third = 2 * M_PI / 3;
+  auto sector = [&](double t) { return std::floor(c2.Value(t).X() / third); };
+  const int samples = 64 * (static_cast<int>(knots.size()) - 2 * p - 1);
+  for (int i = 0; i < samples; ++i) {
+    double a = first + (last - first) * i / samples, z = first + (last - first) * (i + 1) / samples;
+    const double sa = sector(a);
+    if (sector(z) == sa) continue;
+    for (int k = 0; k < 60 && z - a > 1e-15 * (1 + std::abs(z)); ++k) (sector(0.5 * (a + z)) == sa ? a : z) = 0.5 * (a + z);
+    const double t = 0.5 * (a + z);
+    if (t - first > 1e-9 * (last - first) && last - t > 1e-9 * (last - first))
+      knots.insert(std::upper_bound(knots.begin(), knots.end(), t), static_cast<std::size_t>(p - 1), t);
+  }
+  // Spans of at most pi / 16 of angle to start with (c2's own spans are often one per loop piece).
+  std::vector<double> refined;
+  for (std::size_t k = static_cast<std::size_t>(p); k + static_cast<std::size_t>(p) + 1 < knots.size(); ++k) {
+    const double a = knots[k], z = knots[k + 1];
+    if (!(z > a)) continue;
+    const int n = static_cast<int>(std::ceil(std::abs(c2.Value(z).X() - c2.Value(a).X()) / (M_PI / 16)));
+    for (int i = 1; i < n; ++i) refined.push_back(a + (z - a) * i / n);
+  }
+  for (double t : refined) knots.insert(std::upper_bound(knots.begin(), knots.end(), t), t);
+  const double limit = 0.1 * tol;
+  for (int round = 0; round < 8; ++round) {
+    std::vector<double> params;
+    PointList<2> points;
+    for (std::size_t k = static_cast<std::size_t>(p); k + static_cast<std::size_t>(p) + 1 < knots.size(); ++k) {
+      const double a = knots[k], z = knots[k + 1];
+      if (!(z > a)) continue;
+      const int n = 8 * (p + 1);
+      for (int i = params.empty() ? 0 : 1; i <= n; ++i) params.push_back(a + (z - a) * i / n);
+    }
+    for (double t : params) {
+      const gp_Pnt2d q = c2.Value(t);
+      points.emplace_back(converted_angle_parameter(q.X()), q.Y());
+    }
+    BSplineCurve<2> fit;
+    try {
+      fit = fit_least_squares<2>(points, params, p, knots);
+    } catch (const InvalidGeometry&) {
+      return {};
+    }
+    // Check at the samples and between them; collect the spans that miss.
+    std::vector<double> insert;
+    for (std::size_t i = 0; i + 1 < params.size(); ++i)
+      for (double t : {params[i], 0.5 * (params[i] + params[i + 1])}) {
+        const gp_Pnt2d q = c2.Value(t);
+        const auto w = fit.point(t);
+        if (old.Value(q.X(), q.Y()).Distance(now.Value(w.x(), w.y())) > limit) {
+          const auto span = std::upper_bound(knots.begin(), knots.end(), t);
+          const double mid = 0.5 * (*(span - 1) + *span);
+          if (insert.empty() || insert.back() != mid) insert.push_back(mid);
+        }
+      }
+    if (insert.empty()) return occt::to_occt(fit);
+    for (double u : insert) knots.insert(std::upper_bound(knots.begin(), knots.end(), u), u);
+  }
+  return {};
 }
 
 // OCCT writes analytic surfaces as IGES analytic entities (planes 108, cylinders as surfaces of
@@ -90,13 +180,23 @@ class KeepBSplineFaces : public BRepTools_NurbsConvertModification {
     double f3 = 0, l3 = 0, f2 = 0, l2 = 0;
     const Handle(Geom_Curve) c3 = BRep_Tool::Curve(e, cl, f3, l3);
     const Handle(Geom2d_Curve) c2 = BRep_Tool::CurveOnSurface(e, f, f2, l2);
-    const bool keeps = !BRep_Tool::Degenerated(e) && !c2.IsNull() && s->IsKind(STANDARD_TYPE(Geom_BSplineSurface)) &&
-                       (c3.IsNull() || keeps_parameter(c3));
-    if (!keeps) return BRepTools_NurbsConvertModification::NewCurve2d(e, f, new_e, new_f, c, tol);
-    c = c2->IsKind(STANDARD_TYPE(Geom2d_BSplineCurve)) ? Handle(Geom2d_Curve)::DownCast(c2->Copy())
-                                                         : Geom2dConvert::CurveToBSplineCurve(new Geom2d_TrimmedCurve(c2, f2, l2));
-    tol = BRep_Tool::Tolerance(e);
-    return Standard_True;
+    const bool usable = !BRep_Tool::Degenerated(e) && !c2.IsNull() && (c3.IsNull() || keeps_parameter(c3));
+    if (usable && s->IsKind(STANDARD_TYPE(Geom_BSplineSurface))) {
+      c = c2->IsKind(STANDARD_TYPE(Geom2d_BSplineCurve)) ? Handle(Geom2d_Curve)::DownCast(c2->Copy())
+                                                           : Geom2dConvert::CurveToBSplineCurve(new Geom2d_TrimmedCurve(c2, f2, l2));
+      tol = BRep_Tool::Tolerance(e);
+      return Standard_True;
+    }
+    if (usable && (s->IsKind(STANDARD_TYPE(Geom_CylindricalSurface)) || s->IsKind(STANDARD_TYPE(Geom_ConicalSurface)))) {
+      TopLoc_Location nl;
+      const Handle(Geom_Surface) now = BRep_Tool::Surface(new_f, nl);
+      c = angular_pcurve(*c2, f2, l2, *s, *now, BRep_Tool::Tolerance(e));
+      if (!c.IsNull()) {
+        tol = BRep_Tool::Tolerance(e);
+        return Standard_True;
+      }
+    }
+    return BRepTools_NurbsConvertModification::NewCurve2d(e, f, new_e, new_f, c, tol);
   }
 
  private:
