@@ -376,7 +376,7 @@ brep::Part nurbs_part(const brep::Part& part) {
 
 void write_iges(const std::filesystem::path& file, const brep::Part& part, const IgesOptions& options) {
   IGESControl_Controller::Init();
-  set_param("write.iges.brep.mode", 0);  // faces: 144 over 128 with 126 trims, not an MSBO B-rep (186)
+  set_param("write.iges.brep.mode", options.mode == IgesMode::Brep ? 1 : 0);
   set_param("write.iges.unit", "MM");
   set_param("write.iges.header.product", options.product_name.c_str());
   set_param("write.iges.header.author", kToolName);

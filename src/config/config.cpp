@@ -209,7 +209,7 @@ Config parse_config(const nlohmann::json& document, const std::filesystem::path&
   c.output.product_name = c.name;
   if (root.has("output")) {
     const Field out = root.at("output");
-    out.expect_object({"formats", "step_schema", "product_name", "stl_deflection", "stl_angular_deflection_deg",
+    out.expect_object({"formats", "step_schema", "iges_mode", "product_name", "stl_deflection", "stl_angular_deflection_deg",
                        "section_spans"});
     if (out.has("formats")) {
       const Field formats = out.at("formats");
@@ -219,6 +219,8 @@ Config parse_config(const nlohmann::json& document, const std::filesystem::path&
     }
     if (out.has("step_schema"))
       c.output.step_schema = out.at("step_schema").choice({"AP214", "AP242"}) == 1 ? "AP242" : "AP214";
+    if (out.has("iges_mode"))
+      c.output.iges_mode = out.at("iges_mode").choice({"faces", "brep"}) == 1 ? "brep" : "faces";
     if (out.has("product_name")) c.output.product_name = out.at("product_name").string();
     read_handoff_output_fields(out, c.output);
   }

@@ -24,6 +24,7 @@ struct OutputOptions {
   /// Model files to write (report.json is always written); default all (README, Outputs).
   std::vector<std::string> formats{"step", "iges", "brep", "stl", "vtk", "preview", "sections", "report_md"};
   std::string step_schema = "AP242";         ///< "AP214" | "AP242"
+  std::string iges_mode = "faces";           ///< "faces" (144 trimmed surfaces) | "brep" (186 MSBO solids)
   std::string product_name;                  ///< name of the product in the STEP file (default: the config's name)
   double stl_deflection = 0.01;              ///< mm, chordal deflection of STL / VTK / preview triangles
   double stl_angular_deflection_deg = 20;    ///< deg

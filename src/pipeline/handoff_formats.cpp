@@ -100,7 +100,7 @@ std::vector<OutputFormat> handoff_formats() {
       {"iges", "IGES (144 trimmed NURBS surfaces, names and levels per feature)", {"blade.igs"},
        [](OutputDirectory& d, const config::Config& c, const BuildResult& r, ProgressSink*) {
          need_part(r, "IGES");
-         d.write("blade.igs", [&](const fs::path& t) { io::write_iges(t, r.part, {product(c)}); });
+         d.write("blade.igs", [&](const fs::path& t) { io::write_iges(t, r.part, {product(c), c.output.iges_mode == "brep" ? io::IgesMode::Brep : io::IgesMode::Faces}); });
        }},
       {"brep", "OCCT BREP of all bodies", {"blade.brep"},
        [](OutputDirectory& d, const config::Config&, const BuildResult& r, ProgressSink*) {

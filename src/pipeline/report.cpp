@@ -82,6 +82,7 @@ nlohmann::ordered_json report_model(const config::Config& c, const blade::BladeM
                 {"seam_chordwise", m.seam}}},
               {"overbuild", m.options.overbuild},
               {"step_schema", c.output.step_schema},
+              {"iges_mode", c.output.iges_mode},
               {"config", c.source}};
 }
 

@@ -16,6 +16,7 @@
 #include <BRep_Builder.hxx>
 #include <IGESCAFControl_Reader.hxx>
 #include <IGESControl_Controller.hxx>
+#include <IGESControl_Reader.hxx>
 #include <Interface_Static.hxx>
 #include <Poly_Triangulation.hxx>
 #include <RWStl.hxx>
@@ -152,6 +153,29 @@ inline IgesReadBack read_iges_back(const std::filesystem::path& file, double sew
   }
   std::sort(r.solid_volumes.begin(), r.solid_volumes.end());
   app->Close(doc);
+  return r;
+}
+
+/// An MSBO (186) IGES file through OCCT's plain reader, no sewing: the solids and their validity.
+struct IgesSolids {
+  int solids = 0, invalid = 0, free_edges = 0;
+  std::vector<double> volumes;
+};
+
+inline IgesSolids read_iges_solids(const std::filesystem::path& file) {
+  IgesSolids r;
+  IGESControl_Controller::Init();
+  IGESControl_Reader reader;
+  if (reader.ReadFile(file.string().c_str()) != IFSelect_RetDone) return r;
+  reader.TransferRoots();
+  const TopoDS_Shape s = reader.OneShape();
+  for (TopExp_Explorer e(s, TopAbs_SOLID); e.More(); e.Next()) {
+    ++r.solids;
+    r.invalid += !BRepCheck_Analyzer(e.Current()).IsValid();
+    r.free_edges += free_edges(e.Current());
+    r.volumes.push_back(std::abs(volume(e.Current())));
+  }
+  std::sort(r.volumes.begin(), r.volumes.end());
   return r;
 }
 

@@ -36,6 +36,7 @@ void expect_error(const std::function<void(json&)>& edit, const std::string& pat
 BOOST_AUTO_TEST_CASE(defaults) {
   const config::Config c = parse([](json& d) { d.erase("output"); });
   BOOST_TEST(c.output.step_schema == "AP242");
+  BOOST_TEST(c.output.iges_mode == "faces");
   BOOST_TEST(c.output.formats.size() == 8u);  // every format (README, Outputs)
   BOOST_TEST(c.output.stl_deflection == 0.01);
   BOOST_TEST(c.output.section_spans.size() == 5u);
