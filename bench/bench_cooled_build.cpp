@@ -69,7 +69,13 @@ bool timed_build(const config::Config& c, const char* what) {
   std::printf("%s: config -> verified STEP in %.2f s, all outputs in %.2f s (%s)\n", what, to_step, total,
               r.valid() ? "valid" : r.failed_checks().c_str());
   for (const auto& s : r.timings) std::printf("  %-12s %7.3f s\n", s.stage.c_str(), s.seconds);
-  for (const auto& s : w.timings) std::printf("  %-12s %7.3f s\n", s.stage.c_str(), s.seconds);
+  double step = 0, iges = 0;
+  for (const auto& s : w.timings) {
+    std::printf("  %-12s %7.3f s\n", s.stage.c_str(), s.seconds);
+    if (s.stage == "step") step = s.seconds;
+    if (s.stage == "iges") iges = s.seconds;
+  }
+  if (step > 0 && iges > 0) std::printf("  IGES / STEP stage: %.2f (goal <= 2)\n", iges / step);
   if (!r.checks.empty())
     for (const brep::Check* c : r.checks.front().checks()) std::printf("    verify/%-25s %7.3f s\n", c->name.c_str(), c->seconds);
   if (r.cooling)

@@ -11,7 +11,10 @@
 #include <vtkSmartPointer.h>
 #include <vtkXMLPolyDataReader.h>
 
+#include <fstream>
+
 #include "acceptance/product_build.hpp"
+#include "export/version.hpp"
 #include "brep/step_read_back.hpp"
 
 namespace cg::test {
@@ -47,11 +50,43 @@ inline void check_step(const ProductBuild& b) {
   std::sort(volumes.begin(), volumes.end());
   check_volumes(volumes, b, "STEP");
   BOOST_TEST(r.face_names == b.face_names, "STEP face names: " << r.face_names.size() << " of " << b.faces);
+  // Header and product: the schema, millimetres, the product name, this tool as the originating system.
+  const std::string text = read_text(b.file("blade.step"));
+  BOOST_TEST(text.find(b.step_schema == "AP242" ? "AP242" : "AUTOMOTIVE_DESIGN") != std::string::npos);
+  BOOST_TEST(text.find("SI_UNIT(.MILLI.,.METRE.)") != std::string::npos);
+  const std::string header = text.substr(0, text.find("ENDSEC;"));
+  BOOST_TEST(header.find("FILE_NAME('" + b.product + "'") != std::string::npos, header);
+  BOOST_TEST(header.find(std::string("'") + io::kToolName + " " + io::tool_version() + "'") != std::string::npos, header);
+  BOOST_TEST(text.find("PRODUCT('" + b.product + "'") != std::string::npos);
+  BOOST_TEST(text.find("COLOUR_RGB") != std::string::npos);
+}
+
+/// Entity types of an IGES file's directory section (fixed 80-column records, section letter 'D' in
+/// column 73; each entry is two records, the type in columns 1-8 of the first).
+inline std::map<int, int> iges_entity_types(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  std::string line;
+  std::map<int, int> types;
+  int record = 0;
+  while (std::getline(in, line))
+    if (line.size() >= 73 && line[72] == 'D' && record++ % 2 == 0) ++types[std::stoi(line.substr(0, 8))];
+  return types;
 }
 
 /// IGES (OCCT's reader, then sewing at 1e-3 mm, as a mesher reading trimmed surfaces does): every face
 /// read and valid, one closed shell per body with the part's volume, names (406) and levels read back.
 inline void check_iges(const ProductBuild& b) {
+  // Geometry only as 144 (one per face) / 142 (its boundary on the surface) / 102 (the boundary as a
+  // chain of 126) / 128 (one per face) / 126; the rest is grouping or attributes: 402 (product and
+  // body groups), 406 (face names), 314 (colours).
+  const std::map<int, int> types = iges_entity_types(b.file("blade.igs"));
+  BOOST_TEST((types.count(144) == 1u && types.at(144) == b.faces));
+  BOOST_TEST((types.count(128) == 1u && types.at(128) == b.faces));
+  for (const auto& [type, n] : types)
+    BOOST_TEST((type == 144 || type == 142 || type == 102 || type == 128 || type == 126 || type == 402 || type == 406 ||
+                type == 314),
+               "unexpected IGES entity type " << type << " (" << n << "x)");
+  BOOST_TEST(read_text(b.file("blade.igs")).find(std::string(io::kToolName) + " " + io::tool_version()) != std::string::npos);
   const IgesReadBack r = read_iges_back(b.file("blade.igs"));
   BOOST_TEST_REQUIRE(r.read);
   BOOST_TEST(r.faces == b.faces);

@@ -34,6 +34,8 @@ struct ProductBuild {
   int faces = 0;
   double area = 0;                            ///< mm^2, all bodies
   double stl_deflection = 0.01;               ///< mm, the config's output.stl_deflection
+  std::string product;                        ///< the config's output.product_name (default: its name)
+  std::string step_schema = "AP242";          ///< the config's output.step_schema
 
   const std::filesystem::path file(const std::string& name) const { return dir / name; }
 };
@@ -55,7 +57,10 @@ inline const ProductBuild& product_build(const std::string& config) {
   const nlohmann::json cfg = nlohmann::json::parse(
       config.empty() ? std::string(config::builtin_example_json())
                      : read_text(std::filesystem::path(COOLINGGEN_SOURCE_DIR) / "data/examples" / config));
-  b.stl_deflection = cfg.value("output", nlohmann::json::object()).value("stl_deflection", b.stl_deflection);
+  const nlohmann::json out = cfg.value("output", nlohmann::json::object());
+  b.stl_deflection = out.value("stl_deflection", b.stl_deflection);
+  b.product = out.value("product_name", cfg.at("name").get<std::string>());
+  b.step_schema = out.value("step_schema", b.step_schema);
   for (const auto& body : b.report.at("bodies")) {
     b.bodies.push_back(body.at("name").get<std::string>());
     BOOST_TEST(body.at("valid").get<bool>(), b.bodies.back());
@@ -73,6 +78,7 @@ inline const ProductBuild& product_build(const std::string& config) {
   for (TopExp_Explorer e(exact, TopAbs_SOLID); e.More(); e.Next()) b.volumes.push_back(volume(e.Current()));
   std::sort(b.volumes.begin(), b.volumes.end());
   BOOST_TEST_REQUIRE(count_shapes(exact, TopAbs_FACE) == b.faces, "blade.brep has the report's faces");
+  BOOST_TEST_REQUIRE(b.volumes.size() == b.bodies.size(), "blade.brep has a solid per body");
   return builds.emplace(config, std::move(b)).first->second;
 }
 
