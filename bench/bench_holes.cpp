@@ -101,6 +101,9 @@ Workload cooled_blade_workload() {
   w.holes = [](int count) {
     features::FilmFieldOptions o;
     o.count = count;
+    // Spanwise pitch 2 D (1.0 mm) rather than the field's default 1.2 mm: at 1.2 mm only 929 of the
+    // 1000 holes found room beside the example's ribs (33 rows of at most 34).
+    o.min_pitch = 1.0;
     return features::film_hole_field(example_model(), cooled.blade, o);
   };
   return w;
@@ -292,20 +295,31 @@ int main(int argc, char** argv) {
   double per_hole_first = 0, per_hole_last = 0;
   int first_n = 0, last_n = 0;
   for (const int n : counts) {
-    const auto tg = Clock::now();
-    const std::vector<features::CylindricalHole> holes = w.holes(n);
-    std::printf("(%d holes placed: %.1f s, not timed)\n", n, since(tg));
-    const OursResult r = run_drill(w, holes, options, global);
-    all_ok = all_ok && r.ok;
-    if (!first_n) first_n = n, per_hole_first = r.seconds / n;
-    last_n = n, per_hole_last = r.seconds / n;
-    for (const int m : occt)
-      if (m == n) run_occt_plain(w, holes, r.independent, r.seconds);
-    for (const int m : steps)
-      if (m == n) run_boolean_step(w, holes, r.independent);
+    // A case that throws (placement, drilling or a reference) is a failed case, not the end of the bench.
+    try {
+      const auto tg = Clock::now();
+      const std::vector<features::CylindricalHole> holes = w.holes(n);
+      std::printf("(%d holes placed: %.1f s, not timed)\n", n, since(tg));
+      const OursResult r = run_drill(w, holes, options, global);
+      all_ok = all_ok && r.ok;
+      if (!first_n) first_n = n, per_hole_first = r.seconds / n;
+      last_n = n, per_hole_last = r.seconds / n;
+      for (const int m : occt)
+        if (m == n) run_occt_plain(w, holes, r.independent, r.seconds);
+      for (const int m : steps)
+        if (m == n) run_boolean_step(w, holes, r.independent);
+    } catch (const std::exception& e) {
+      std::printf("FAILED: %d holes: %s\n", n, e.what());
+      all_ok = false;
+    }
   }
   for (const int m : occt)
-    if (m > 0 && std::find(counts.begin(), counts.end(), m) == counts.end()) run_occt_plain(w, w.holes(m), {}, NAN);
+    if (m > 0 && std::find(counts.begin(), counts.end(), m) == counts.end()) try {
+        run_occt_plain(w, w.holes(m), {}, NAN);
+      } catch (const std::exception& e) {
+        std::printf("FAILED: OCCT case, %d holes: %s\n", m, e.what());
+        all_ok = false;
+      }
   if (last_n != first_n)
     std::printf("cost per hole at %d / at %d: %.2f (goal <= 1.5)\n", last_n, first_n, per_hole_last / per_hole_first);
   std::printf("%s\n", all_ok ? "all results verified" : "FAILED: a result did not pass its checks");
