@@ -65,21 +65,11 @@ double converted_angle_parameter(double phi) {
   return turns * period + m + span / 2 * std::tan((local - m) / 2) / std::tan(span / 4);
 }
 
-// The pcurve c2 (on a cylinder or cone, u the angle) carried over to `now`, the periodic B-spline form
-// of that surface (NewSurface): u mapped exactly at 8 (p + 1) samples per span of c2, fitted by least
-// squares on c2's knots (degree at least 3), knots added where the fit is off, up to 4 times; accepted
-// when the fitted pcurve puts every check point (the samples and the midpoints between them) on `now`
-// within a tenth of the edge's tolerance of where c2 put it on the cylinder. Null otherwise: then
-// OCCT's projection (ProjLib_ComputeApproxOnPolarSurface, ~30 ms per film-hole edge) does it.
-Handle(Geom2d_Curve) angular_pcurve(const Geom2d_Curve& c2, double first, double last, const Geom_Surface& old,
-                                    const Geom_Surface& now, double tol) {
-  Handle(Geom2d_BSplineCurve) b = Geom2dConvert::CurveToBSplineCurve(new Geom2d_TrimmedCurve(Handle(Geom2d_Curve)::DownCast(c2.Copy()), first, last));
-  if (b->Degree() < 3) b->IncreaseDegree(3);
-  const BSplineCurve<2> base = occt::from_occt(*b);
-  const int p = base.degree();
-  std::vector<double> knots = base.knots();
-  // The map is only C1 where the angle crosses a span boundary of `now` (its second derivative jumps):
-  // there the fit gets a knot of multiplicity p - 1, found by bisection between samples.
+// Knots for the fit of the mapped pcurve: c2's own, plus a knot of multiplicity p - 1 where the angle
+// crosses a span boundary of the converted surface (the map is only C1 there: its second derivative
+// jumps; found by bisection between 64 samples per span), plus knots so that no span sweeps more than
+// pi / 16 of angle (c2's own spans are often one per loop piece).
+std::vector<double> mapped_pcurve_knots(const Geom2d_Curve& c2, double first, double last, std::vector<double> knots, int p) {
   const double third = 2 * M_PI / 3;
   auto sector = [&](double t) { return std::floor(c2.Value(t).X() / third); };
   const int samples = 64 * (static_cast<int>(knots.size()) - 2 * p - 1);
@@ -92,7 +82,6 @@ Handle(Geom2d_Curve) angular_pcurve(const Geom2d_Curve& c2, double first, double
     if (t - first > 1e-9 * (last - first) && last - t > 1e-9 * (last - first))
       knots.insert(std::upper_bound(knots.begin(), knots.end(), t), static_cast<std::size_t>(p - 1), t);
   }
-  // Spans of at most pi / 16 of angle to start with (c2's own spans are often one per loop piece).
   std::vector<double> refined;
   for (std::size_t k = static_cast<std::size_t>(p); k + static_cast<std::size_t>(p) + 1 < knots.size(); ++k) {
     const double a = knots[k], z = knots[k + 1];
@@ -101,16 +90,38 @@ Handle(Geom2d_Curve) angular_pcurve(const Geom2d_Curve& c2, double first, double
     for (int i = 1; i < n; ++i) refined.push_back(a + (z - a) * i / n);
   }
   for (double t : refined) knots.insert(std::upper_bound(knots.begin(), knots.end(), t), t);
-  const double limit = 0.1 * tol;
+  return knots;
+}
+
+// 8 (p + 1) sample parameters per non-empty span of `knots`, each span's ends shared.
+std::vector<double> span_samples(const std::vector<double>& knots, int p) {
+  std::vector<double> params;
+  for (std::size_t k = static_cast<std::size_t>(p); k + static_cast<std::size_t>(p) + 1 < knots.size(); ++k) {
+    const double a = knots[k], z = knots[k + 1];
+    if (!(z > a)) continue;
+    const int n = 8 * (p + 1);
+    for (int i = params.empty() ? 0 : 1; i <= n; ++i) params.push_back(a + (z - a) * i / n);
+  }
+  return params;
+}
+
+// The pcurve c2 (on a cylinder or cone, u the angle) carried over to `now`, the periodic B-spline form
+// of that surface (NewSurface): u mapped exactly (converted_angle_parameter) at the samples, fitted by
+// least squares (degree at least 3) on mapped_pcurve_knots, a knot added in every span where the fit
+// is off, up to 8 rounds; accepted when the fitted pcurve puts every check point (the samples and the
+// midpoints between them) on `now` within a tenth of the edge's tolerance of where c2 put it on the
+// cylinder. Null otherwise: then OCCT's projection (ProjLib_ComputeApproxOnPolarSurface, ~30 ms per
+// film-hole edge) does it.
+Handle(Geom2d_Curve) angular_pcurve(const Geom2d_Curve& c2, double first, double last, const Geom_Surface& old,
+                                    const Geom_Surface& now, double tol) {
+  Handle(Geom2d_BSplineCurve) b =
+      Geom2dConvert::CurveToBSplineCurve(new Geom2d_TrimmedCurve(Handle(Geom2d_Curve)::DownCast(c2.Copy()), first, last));
+  if (b->Degree() < 3) b->IncreaseDegree(3);
+  const int p = b->Degree();
+  std::vector<double> knots = mapped_pcurve_knots(c2, first, last, occt::from_occt(*b).knots(), p);
   for (int round = 0; round < 8; ++round) {
-    std::vector<double> params;
+    const std::vector<double> params = span_samples(knots, p);
     PointList<2> points;
-    for (std::size_t k = static_cast<std::size_t>(p); k + static_cast<std::size_t>(p) + 1 < knots.size(); ++k) {
-      const double a = knots[k], z = knots[k + 1];
-      if (!(z > a)) continue;
-      const int n = 8 * (p + 1);
-      for (int i = params.empty() ? 0 : 1; i <= n; ++i) params.push_back(a + (z - a) * i / n);
-    }
     for (double t : params) {
       const gp_Pnt2d q = c2.Value(t);
       points.emplace_back(converted_angle_parameter(q.X()), q.Y());
@@ -121,13 +132,12 @@ Handle(Geom2d_Curve) angular_pcurve(const Geom2d_Curve& c2, double first, double
     } catch (const InvalidGeometry&) {
       return {};
     }
-    // Check at the samples and between them; collect the spans that miss.
     std::vector<double> insert;
     for (std::size_t i = 0; i + 1 < params.size(); ++i)
       for (double t : {params[i], 0.5 * (params[i] + params[i + 1])}) {
         const gp_Pnt2d q = c2.Value(t);
         const auto w = fit.point(t);
-        if (old.Value(q.X(), q.Y()).Distance(now.Value(w.x(), w.y())) > limit) {
+        if (old.Value(q.X(), q.Y()).Distance(now.Value(w.x(), w.y())) > 0.1 * tol) {
           const auto span = std::upper_bound(knots.begin(), knots.end(), t);
           const double mid = 0.5 * (*(span - 1) + *span);
           if (insert.empty() || insert.back() != mid) insert.push_back(mid);
