@@ -93,13 +93,13 @@ std::vector<double> mapped_pcurve_knots(const Geom2d_Curve& c2, double first, do
   return knots;
 }
 
-// 8 (p + 1) sample parameters per non-empty span of `knots`, each span's ends shared.
+// 3 (p + 1) sample parameters per non-empty span of `knots`, each span's ends shared.
 std::vector<double> span_samples(const std::vector<double>& knots, int p) {
   std::vector<double> params;
   for (std::size_t k = static_cast<std::size_t>(p); k + static_cast<std::size_t>(p) + 1 < knots.size(); ++k) {
     const double a = knots[k], z = knots[k + 1];
     if (!(z > a)) continue;
-    const int n = 8 * (p + 1);
+    const int n = 3 * (p + 1);
     for (int i = params.empty() ? 0 : 1; i <= n; ++i) params.push_back(a + (z - a) * i / n);
   }
   return params;
