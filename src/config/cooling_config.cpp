@@ -255,6 +255,9 @@ CoolingConfig parse_cooling(const Field& f, const std::filesystem::path& base_di
   c.film = parse_film_cooling(f);
   if (!c.film.empty() && !c.passages.core)
     fail(f.path(), "film rows, a showerhead and inserts need \"core\": the chambers they feed from or sit in");
+  // An empty section would build an uncooled blade without a word: a cooling section must cool.
+  if (c.passages.empty() && c.film.empty())
+    fail(f.path(), "no cooling feature given: add \"core\" or \"radial_passages\", or leave \"cooling\" out for an uncooled blade");
   return c;
 }
 

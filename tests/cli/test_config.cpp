@@ -109,6 +109,7 @@ BOOST_AUTO_TEST_CASE(out_of_range_values) {
   expect_error([](json& d) { d["units"] = "cm"; }, "units", "\"mm\"");
   expect_error([](json& d) { d["output"]["step_schema"] = "AP203"; }, "output.step_schema", "\"AP242\"");
   expect_error([](json& d) { d["output"]["iges_mode"] = "msbo"; }, "output.iges_mode", "\"brep\"");
+  expect_error([](json& d) { d["cooling"] = json::object(); }, "cooling", "no cooling feature given");
   expect_error([](json& d) { d["flow_path"] = {{"type", "straight"}, {"span", -3}}; }, "flow_path.span", "(0, 100000] mm");
 }
 
