@@ -67,12 +67,12 @@ double converted_angle_parameter(double phi) {
 
 // Knots for the fit of the mapped pcurve: c2's own, plus a knot of multiplicity p - 1 where the angle
 // crosses a span boundary of the converted surface (the map is only C1 there: its second derivative
-// jumps; found by bisection between 64 samples per span), plus knots so that no span sweeps more than
+// jumps; found by bisection between 16 samples per span), plus knots so that no span sweeps more than
 // pi / 16 of angle (c2's own spans are often one per loop piece).
 std::vector<double> mapped_pcurve_knots(const Geom2d_Curve& c2, double first, double last, std::vector<double> knots, int p) {
   const double third = 2 * M_PI / 3;
   auto sector = [&](double t) { return std::floor(c2.Value(t).X() / third); };
-  const int samples = 64 * (static_cast<int>(knots.size()) - 2 * p - 1);
+  const int samples = 16 * (static_cast<int>(knots.size()) - 2 * p - 1);
   for (int i = 0; i < samples; ++i) {
     double a = first + (last - first) * i / samples, z = first + (last - first) * (i + 1) / samples;
     const double sa = sector(a);
@@ -93,13 +93,13 @@ std::vector<double> mapped_pcurve_knots(const Geom2d_Curve& c2, double first, do
   return knots;
 }
 
-// 3 (p + 1) sample parameters per non-empty span of `knots`, each span's ends shared.
+// 2 (p + 1) sample parameters per non-empty span of `knots`, each span's ends shared.
 std::vector<double> span_samples(const std::vector<double>& knots, int p) {
   std::vector<double> params;
   for (std::size_t k = static_cast<std::size_t>(p); k + static_cast<std::size_t>(p) + 1 < knots.size(); ++k) {
     const double a = knots[k], z = knots[k + 1];
     if (!(z > a)) continue;
-    const int n = 3 * (p + 1);
+    const int n = 2 * (p + 1);
     for (int i = params.empty() ? 0 : 1; i <= n; ++i) params.push_back(a + (z - a) * i / n);
   }
   return params;
