@@ -113,10 +113,10 @@ int main(int argc, char** argv) {
   const double t_iges = seconds([&] { io::write_iges(dir / "blade.igs", p.part, {"bench"}); });
   const double t_brep = seconds([&] { io::write_brep(dir / "blade.brep", p.part); });
   const double t_vtk = seconds([&] { io::write_vtk(dir, "blade", p.part, tri); });
-  std::vector<io::SectionCut> cuts;
+  std::vector<features::SpanSection> cuts;
   const std::vector<double> spans = quick ? std::vector<double>{0.2, 0.6} : std::vector<double>{0.1, 0.3, 0.5, 0.7, 0.9};
   const double t_sec = seconds([&] {
-    cuts = io::cut_sections(p.part, io::blade_section_surfaces(p.model, spans));
+    cuts = features::span_sections(p.part, features::span_surfaces(p.model, spans));
     io::write_sections_svg(dir / "sections.svg", cuts, "bench");
   });
   io::PreviewResult prev;

@@ -67,8 +67,10 @@ void object_table(std::ostringstream& o, const json& rows) {
 
 void sections(std::ostringstream& o, const json& secs) {
   o << "## Coolant passages along span\n\nFrom the section cuts of `sections.svg` (straight vane: planes at "
-       "the span height; meridional blade: the streamline surfaces of revolution). A passage is a cavity of "
-       "the blade section; its area excludes inserts, its wetted perimeter includes them; D_h = 4 A / P.\n\n";
+       "the span height; meridional blade: the streamline surfaces of revolution), the same cuts as the "
+       "design checks' cross-sections. A passage is a cavity of the blade section, its walls closed over "
+       "the holes and slots that cross the cut (those are holes in the metal, counted apart); its area "
+       "excludes inserts, its wetted perimeter includes them; D_h = 4 A / P.\n\n";
   std::vector<std::vector<std::string>> rows;
   for (const auto& s : secs) {
     const json& ps = s.value("passages", json::array());
@@ -83,9 +85,11 @@ void sections(std::ostringstream& o, const json& secs) {
     }
     rows.push_back({num(s.value("span", 0.0), 2), num(s.value("chord_mm", 0.0), 2), num(s.value("metal_area_mm2", 0.0), 2),
                     std::to_string(ps.size()), num(sum, 2), names.empty() ? "-" : names, areas.empty() ? "-" : areas,
-                    dh.empty() ? "-" : dh});
+                    dh.empty() ? "-" : dh,
+                    num(s.value("hole_count", 0)) + " (" + num(s.value("hole_area_mm2", 0.0), 2) + " mm²)"});
   }
-  table(o, {"span", "chord mm", "metal area mm²", "passages", "coolant area mm²", "walls", "area mm² each", "D_h mm each"}, rows);
+  table(o, {"span", "chord mm", "metal area mm²", "passages", "coolant area mm²", "names", "area mm² each", "D_h mm each", "holes"},
+        rows);
 }
 
 void mesh_section(std::ostringstream& o, const json& m) {

@@ -31,7 +31,7 @@ struct Box {
   Eigen::Vector2d size() const { return hi - lo; }
 };
 
-Box box_of(const SectionCut& c) {
+Box box_of(const features::SpanSection& c) {
   Box b;
   for (const auto& curve : c.curves)
     for (const auto& p : curve.points) b.add(p);
@@ -48,7 +48,7 @@ double scale_bar_mm(double width_mm) {
 
 }  // namespace
 
-std::string sections_svg(const std::vector<SectionCut>& cuts, const std::string& title) {
+std::string sections_svg(const std::vector<features::SpanSection>& cuts, const std::string& title) {
   std::vector<Box> boxes;
   double max_w = 1e-9, max_h = 1e-9;
   int max_passages = 0;
@@ -90,14 +90,17 @@ std::string sections_svg(const std::vector<SectionCut>& cuts, const std::string&
   }
 
   for (std::size_t i = 0; i < cuts.size(); ++i) {
-    const SectionCut& c = cuts[i];
+    const features::SpanSection& c = cuts[i];
     const double ox = (i % columns) * kPanelW, oy = legend_h + (i / columns) * kPanelH;
     s << "<g>\n<rect x=\"" << fmt(ox + 4) << "\" y=\"" << fmt(oy + 4) << "\" width=\"" << fmt(kPanelW - 8) << "\" height=\""
       << fmt(kPanelH - 8) << "\" fill=\"none\" stroke=\"#c8c8c8\"/>\n";
     s << "<text x=\"" << fmt(ox + 16) << "\" y=\"" << fmt(oy + 26) << "\" font-size=\"15\" font-weight=\"bold\">span "
       << fmt(c.span, 2) << "</text>\n";
+    double hole_area = 0;
+    for (const auto& h : c.holes) hole_area += h.area;
     s << "<text x=\"" << fmt(ox + 16) << "\" y=\"" << fmt(oy + 46) << "\" font-size=\"12\">chord " << fmt(c.chord)
-      << " mm, metal " << fmt(c.metal_area) << " mm², " << c.passages.size() << " passage(s)</text>\n";
+      << " mm, metal " << fmt(c.metal_area) << " mm², " << c.passages.size() << " passage(s), " << c.holes.size()
+      << " hole(s) " << fmt(hole_area) << " mm²</text>\n";
     if (c.curves.empty()) {
       s << "<text x=\"" << fmt(ox + 16) << "\" y=\"" << fmt(oy + 90) << "\" font-size=\"13\">no section</text>\n</g>\n";
       continue;
@@ -143,9 +146,9 @@ std::string sections_svg(const std::vector<SectionCut>& cuts, const std::string&
         s << "<text x=\"" << fmt(ox + col[k]) << "\" y=\"" << fmt(y) << "\" font-size=\"12\""
           << (bold ? " font-weight=\"bold\"" : "") << ">" << cells[k] << "</text>\n";
     };
-    if (!c.passages.empty()) row(ty, {"passage", "area mm²", "D_h mm", "wall"}, true);
+    if (!c.passages.empty()) row(ty, {"#", "area mm²", "D_h mm", "passage"}, true);
     for (std::size_t k = 0; k < c.passages.size(); ++k) {
-      const Passage& p = c.passages[k];
+      const features::SectionPassage& p = c.passages[k];
       s << "<text x=\"" << fmt(X(p.centroid)) << "\" y=\"" << fmt(Y(p.centroid) + 4) << "\" font-size=\"11\" text-anchor=\"middle\" "
         << "font-weight=\"bold\">" << k + 1 << "</text>\n";
       ty += kTableLine;
@@ -163,7 +166,7 @@ std::string sections_svg(const std::vector<SectionCut>& cuts, const std::string&
   return s.str();
 }
 
-void write_sections_svg(const std::filesystem::path& file, const std::vector<SectionCut>& cuts, const std::string& title) {
+void write_sections_svg(const std::filesystem::path& file, const std::vector<features::SpanSection>& cuts, const std::string& title) {
   const std::string text = sections_svg(cuts, title);
   write_atomically(file, [&](const std::filesystem::path& tmp) {
     std::ofstream out(tmp, std::ios::binary);

@@ -1,10 +1,8 @@
 #pragma once
 // Design checks and measures on the built (cooled) blade: thicknesses with BRepExtrema_DistShapeShape
 // between the named faces of both sides, cross-sections of every passage on stream surfaces (area,
-// wetted perimeter, hydraulic diameter), and the cavity count (every chamber must open to a coolant
+// wetted perimeter, hydraulic diameter; features/span_sections.hpp), and the cavity count (every chamber must open to a coolant
 // inlet: a closed cavity is a separate shell of the solid).
-#include <gp_Pln.hxx>
-
 #include <string>
 #include <vector>
 
@@ -25,13 +23,8 @@ ThicknessMeasure measure_between(const brep::NamedShape& shape, const std::strin
 void measure_passages(const blade::BladeModel& model, const brep::NamedShape& cooled, const PassagesDefinition& def,
                       const CoreBuild* core, const RadialPassageBuild* radial, PassageReport& report);
 
-/// The plane of the cross-sections at a span fraction: z = const on a straight vane; on a meridional blade
-/// the plane normal to the radial direction through the centre of `cooled`'s box, at the radius of the
-/// mid-chord point of that span (normal to the mainly radial coolant flow).
-gp_Pln passage_section_plane(const blade::BladeModel& model, const TopoDS_Shape& cooled, double span);
-
-/// Cross-sections of the named passages at the given spans (stream surfaces of the flow path).
-/// `passage_of` maps a face name to a passage name ("" = not a passage face, e.g. the outer wall).
+/// Cross-sections of the named passages ("chamber_2", "radial_passage_7") at the given spans: the
+/// passages of span_sections (span_sections.hpp) on `cooled`, the sections sections.svg draws.
 std::vector<PassageMeasure> passage_sections(const blade::BladeModel& model, const brep::NamedShape& cooled,
                                              const std::vector<double>& spans,
                                              const std::vector<std::string>& passages);

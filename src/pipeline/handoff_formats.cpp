@@ -33,7 +33,7 @@ struct Shared {
   std::mutex mutex;
   Handle(TopoDS_TShape) owner;
   std::shared_future<io::PartTriangles> triangles;
-  std::shared_future<std::vector<io::SectionCut>> sections;
+  std::shared_future<std::vector<features::SpanSection>> sections;
   std::vector<std::string> notes;
 };
 
@@ -73,7 +73,7 @@ void start_sections(const config::Config& c, const BuildResult& r) {
   std::lock_guard<std::mutex> lock(s.mutex);
   if (s.sections.valid()) return;
   s.sections = start_in_background([&r, spans = c.output.section_spans] {
-                 return io::cut_sections(r.part, io::blade_section_surfaces(r.model, spans));
+                 return features::span_sections(r.part, features::span_surfaces(r.model, spans));
                }).share();
 }
 
@@ -82,7 +82,7 @@ const io::PartTriangles& triangles(const config::Config& c, const BuildResult& r
   return shared_for(r).triangles.get();  // rethrows the triangulation's error
 }
 
-const std::vector<io::SectionCut>& sections(const config::Config& c, const BuildResult& r) {
+const std::vector<features::SpanSection>& sections(const config::Config& c, const BuildResult& r) {
   start_sections(c, r);
   return shared_for(r).sections.get();
 }

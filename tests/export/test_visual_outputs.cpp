@@ -2,9 +2,11 @@
 //  - STL: binary layout (84 + 50 n bytes) with the triangle count the writer reports.
 //  - VTK: the .vtp pieces read back with VTK have every triangle tagged with a valid feature id and the
 //    name tables; the .vtm names every piece.
-//  - Sections of the C3X vane (planar cuts): passage areas against the analytic area of the cut of a
-//    straight cylinder by a plane, pi r^2 / |d.n| (minus the insert's ring), to 2e-3 relative (the
-//    polygons follow the curves to 0.005 mm on radii of ~2 mm: area error <~ 2 * 0.005 / r).
+//  - Sections of the C3X vane (planar cuts, features/span_sections.hpp): passage areas against the
+//    analytic area of the cut of a straight cylinder by a plane, pi r^2 / |d.n| (minus the insert's
+//    ring), to 1e-6 relative (the curves are traced onto the faces to 1e-11 mm and integrated exactly;
+//    measured 2e-7: the boolean's edges lie off the faces within their tolerance), with the film holes
+//    into chamber 1 closed over.
 //  - sections.svg and preview.png exist and are not blank: drawing extent = chord x scale; the PNG has
 //    a plausible share of non-background pixels spread over the picture, and pixels in the chamber
 //    colour (the cooling shows through the semi-transparent wall). Without any X server the PNG test is
@@ -39,7 +41,7 @@
 #include "export/atomic_file.hpp"
 #include "export/cooled_part.hpp"
 #include "export/preview.hpp"
-#include "export/sections.hpp"
+#include "features/span_sections.hpp"
 #include "export/sections_svg.hpp"
 #include "export/stl_writer.hpp"
 #include "export/triangulation.hpp"
@@ -103,16 +105,16 @@ BOOST_AUTO_TEST_CASE(c3x_passage_areas_match_the_cylinders) {
   test::CooledPartOptions o;
   o.holes = 2;
   const test::CooledPart c3x = test::cooled_c3x(o);
-  const auto surfaces = io::blade_section_surfaces(c3x.model, {0.3, 0.6});
-  const auto cuts = io::cut_sections(c3x.part, surfaces);
+  const auto surfaces = features::span_surfaces(c3x.model, {0.3, 0.6});
+  const auto cuts = features::span_sections(c3x.part, surfaces);
   BOOST_TEST_REQUIRE(cuts.size() == 2u);
   // The fixture's chambers: recover axis and radius from the tool faces is not possible after the cut,
   // so rebuild them the same way (make_cooled_part is deterministic) from a part without holes.
   for (const auto& cut : cuts) {
-    BOOST_TEST(cut.open_loops == 0);
+    BOOST_TEST(cut.unclosed_openings == 0);
     BOOST_TEST_REQUIRE(cut.passages.size() == 2u);
-    BOOST_TEST(cut.passages[0].name == "chamber_1_wall");
-    BOOST_TEST(cut.passages[1].name == "chamber_2_wall");
+    BOOST_TEST(cut.passages[0].name == "chamber_1");  // the passage of the faces chamber_1_wall
+    BOOST_TEST(cut.passages[1].name == "chamber_2");
     BOOST_TEST(std::abs(cut.chord - 144.93) < 2.0);  // the C3X true chord (NASA CR-168015), +- LE/TE rounding
   }
   // Analytic: the plane z = const cuts the cylinder (axis d, radius r) in an ellipse of area pi r^2 / |d_z|.
@@ -124,8 +126,10 @@ BOOST_AUTO_TEST_CASE(c3x_passage_areas_match_the_cylinders) {
       double expected = test::kPi * r * r / dz;
       const double at = (cut.span * 144.93 - p.first.z()) / (p.second.z() - p.first.z());  // along the chamber
       if (k == 1 && at > 0.25 && at < 0.7) expected -= test::kPi * (0.49 - 0.25) * r * r / dz;  // the insert ring
-      BOOST_TEST(std::abs(cut.passages[k].area - expected) <= 2e-3 * expected,
+      BOOST_TEST(std::abs(cut.passages[k].area - expected) <= 1e-6 * expected,
                  "span " << cut.span << " chamber " << k + 1 << ": " << cut.passages[k].area << " vs " << expected);
+      BOOST_TEST_MESSAGE("span " << cut.span << " chamber " << k + 1 << ": relative area error "
+                                 << (cut.passages[k].area - expected) / expected);
     }
   }
 }
@@ -134,8 +138,8 @@ namespace {
 
 // The section the plain way: BRepAlgoAPI_Section of the whole blade body with the surface of revolution
 // over +-90 deg, its edges drawn at 0.005 mm as (x, r dtheta) points.
-std::vector<io::SectionCurve> full_section(const brep::NamedShape& body, const io::RevolvedCut& r) {
-  const Handle(Geom2d_BSplineCurve) c2 = occt::to_occt(r.meridional);
+std::vector<features::SectionCurve> full_section(const brep::NamedShape& body, const features::SpanSurface& r) {
+  const Handle(Geom2d_BSplineCurve) c2 = occt::to_occt(*r.meridional);
   TColgp_Array1OfPnt poles(1, c2->NbPoles());
   TColStd_Array1OfReal weights(1, c2->NbPoles()), knots(1, c2->NbKnots());
   TColStd_Array1OfInteger mults(1, c2->NbKnots());
@@ -149,11 +153,11 @@ std::vector<io::SectionCurve> full_section(const brep::NamedShape& body, const i
   sec.Approximation(true);
   sec.Build();
   BOOST_TEST_REQUIRE(sec.IsDone());
-  std::vector<io::SectionCurve> curves;
+  std::vector<features::SectionCurve> curves;
   for (TopExp_Explorer e(sec.Shape(), TopAbs_EDGE); e.More(); e.Next()) {
     BRepAdaptor_Curve curve(TopoDS::Edge(e.Current()));
     GCPnts_TangentialDeflection d(curve, 0.05, 0.005, 4);
-    io::SectionCurve c;
+    features::SectionCurve c;
     for (int k = 1; k <= d.NbPoints(); ++k) {
       const gp_Pnt q = d.Value(k);
       c.points.emplace_back(q.X(), std::hypot(q.Y(), q.Z()) * std::remainder(std::atan2(q.Z(), q.Y()) - r.theta_centre, 2 * test::kPi));
@@ -163,9 +167,9 @@ std::vector<io::SectionCurve> full_section(const brep::NamedShape& body, const i
   return curves;
 }
 
-double distance_to_polylines(const Eigen::Vector2d& p, const std::vector<io::SectionCurve>& curves) {
+double distance_to_polylines(const Eigen::Vector2d& p, const std::vector<features::SectionCurve>& curves) {
   double best = HUGE_VAL;
-  for (const io::SectionCurve& c : curves)
+  for (const features::SectionCurve& c : curves)
     for (std::size_t k = 0; k + 1 < c.points.size(); ++k) {
       const Eigen::Vector2d a = c.points[k], ab = c.points[k + 1] - a;
       const double t = ab.squaredNorm() > 0 ? std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.0;
@@ -176,27 +180,26 @@ double distance_to_polylines(const Eigen::Vector2d& p, const std::vector<io::Sec
 
 }  // namespace
 
-// cut_sections sections only the faces whose boxes can meet the surface, with the surface of revolution
-// trimmed to the angles they span: the same curves as the plain section of the whole body. Every point
-// of either lies within 0.01 mm of the other's polylines (two drawings of one curve at 0.005 mm each),
-// and each new loop is closed.
+// span_sections traces the curves on the faces whose boxes can meet the surface of revolution: the same
+// curves as OCCT's plain section of the whole body. Every point of either lies within 0.01 mm of the
+// other's polylines (OCCT's drawn at 0.005 mm, ours through points on the curves, chords within
+// 0.006 mm), and every opening crossing the cut is closed.
 BOOST_AUTO_TEST_CASE(prefiltered_sections_match_the_full_section) {
-  const auto surfaces = io::blade_section_surfaces(example().model, {0.2, 0.5, 0.8});
-  const auto cuts = io::cut_sections(example().part, surfaces);
+  const auto surfaces = features::span_surfaces(example().model, {0.2, 0.5, 0.8});
+  const auto cuts = features::span_sections(example().part, surfaces);
   BOOST_TEST_REQUIRE(cuts.size() == 3u);
   for (std::size_t i = 0; i < cuts.size(); ++i) {
-    const auto* r = std::get_if<io::RevolvedCut>(&surfaces[i].surface);
-    BOOST_TEST_REQUIRE(r != nullptr);  // the example is a meridional blade
-    BOOST_TEST(cuts[i].open_loops == 0);
-    const std::vector<io::SectionCurve> full = full_section(example().part[0].geometry, *r);
-    std::vector<io::SectionCurve> blade;
-    for (const io::SectionCurve& c : cuts[i].curves)
+    BOOST_TEST_REQUIRE((surfaces[i].kind == features::SpanSurfaceKind::Revolved));  // the example is a meridional blade
+    BOOST_TEST(cuts[i].unclosed_openings == 0);
+    const std::vector<features::SectionCurve> full = full_section(example().part[0].geometry, surfaces[i]);
+    std::vector<features::SectionCurve> blade;
+    for (const features::SectionCurve& c : cuts[i].curves)
       if (c.body == 0) blade.push_back(c);
     BOOST_TEST_REQUIRE(full.size() > 3u);
     double worst_full = 0, worst_new = 0;
-    for (const io::SectionCurve& c : full)
+    for (const features::SectionCurve& c : full)
       for (const Eigen::Vector2d& p : c.points) worst_full = std::max(worst_full, distance_to_polylines(p, blade));
-    for (const io::SectionCurve& c : blade)
+    for (const features::SectionCurve& c : blade)
       for (const Eigen::Vector2d& p : c.points) worst_new = std::max(worst_new, distance_to_polylines(p, full));
     BOOST_TEST(worst_full <= 0.01, "span " << cuts[i].span << ": a point of the full section is " << worst_full << " mm away");
     BOOST_TEST(worst_new <= 0.01, "span " << cuts[i].span << ": a point of the new section is " << worst_new << " mm away");
@@ -204,11 +207,11 @@ BOOST_AUTO_TEST_CASE(prefiltered_sections_match_the_full_section) {
 }
 
 BOOST_AUTO_TEST_CASE(sections_svg_shows_the_sections) {
-  const auto surfaces = io::blade_section_surfaces(example().model, {0.1, 0.3, 0.6, 0.9});
-  const auto cuts = io::cut_sections(example().part, surfaces);
+  const auto surfaces = features::span_surfaces(example().model, {0.1, 0.3, 0.6, 0.9});
+  const auto cuts = features::span_sections(example().part, surfaces);
   BOOST_TEST_REQUIRE(cuts.size() == 4u);
   for (const auto& c : cuts) {
-    BOOST_TEST(c.open_loops == 0);
+    BOOST_TEST(c.unclosed_openings == 0);
     BOOST_TEST(c.chord > 25.0);  // the example's chord is about 36 mm at every span
     BOOST_TEST(c.chord < 45.0);
     BOOST_TEST(c.metal_area > 0);
