@@ -1,6 +1,7 @@
 // The coolinggen executable run as a process: the built-in example and a straight C3X vane give a
 // valid STEP (read back: one valid solid, volume equal to the report's to 1e-6 relative, the
-// integration accuracy) and report.json; bad configs exit non-zero with one line on stderr naming
+// integration accuracy) and report.json (the built-in example's passage table: every chamber at every
+// span, holes as holes); bad configs exit non-zero with one line on stderr naming
 // the field, and write nothing (not even the output directory).
 #define BOOST_TEST_MODULE cli_process
 #include <boost/test/unit_test.hpp>
@@ -69,6 +70,22 @@ BOOST_AUTO_TEST_CASE(builtin_example_builds) {
                                  "sections.svg", "report.json", "report.md"};
   if (files.count("preview.png")) expected.insert("preview.png");
   BOOST_TEST(files == expected);
+  // The passage table (report.json "sections", what sections.svg shows): all four chambers at every
+  // span, the film and showerhead holes crossing the cuts as holes, none of them a passage (issue 20).
+  const auto report = nlohmann::json::parse(read_text(dir.path / "out" / "report.json"));
+  std::size_t holes = 0;
+  for (const auto& s : report.at("sections")) {
+    std::vector<std::string> names;
+    for (const auto& p : s.at("passages")) names.push_back(p.at("name").get<std::string>());
+    BOOST_TEST((names == std::vector<std::string>{"chamber_1", "chamber_2", "chamber_3", "chamber_4"}), "span " << s.at("span"));
+    for (const auto& h : s.at("holes")) {
+      const std::string n = h.at("name").get<std::string>();
+      BOOST_TEST((n.rfind("showerhead_", 0) == 0 || n.rfind("film_row_", 0) == 0 || n.rfind("te_slot_", 0) == 0), n);
+    }
+    holes += s.at("holes").size();
+  }
+  BOOST_TEST(report.at("sections").size() == 5u);
+  BOOST_TEST(holes >= 15u);  // 18 at the five default spans
 }
 
 // data/examples/c3x_vane.json: a straight vane from the C3X points (file path relative to the config).

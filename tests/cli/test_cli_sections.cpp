@@ -1,0 +1,124 @@
+// What `coolinggen build` writes about the sections (report.json "sections", sections.svg), run as a
+// process, and the designs whose design-check sections used to fail (data/repro/section_loop_*.json,
+// issue 21: "a section loop does not close", exit 3).
+//  - the repro designs get through the cooling stage and its design checks; the film checks against the
+//    chambers, which run after them, refuse both with one line naming the field (exit 2);
+//  - the one-rib repro without its refused film row builds: report.json "sections", at the spans of the
+//    design checks, lists both chambers at every span, the holes crossing the cut as holes (showerhead
+//    and film holes, never as passages), and each chamber's area and wetted perimeter equal the design
+//    checks' (measured before the holes, report.json model.cooling.passages) within 2e-5 relative (the
+//    holes' openings closed over: loops end at the crossings of edges that lie up to their tolerance off
+//    the walls); sections.svg, read with Boost's XML parser, has one panel per span whose header and
+//    table say the same.
+#define BOOST_TEST_MODULE cli_sections
+#include <boost/test/unit_test.hpp>
+
+#include <boost/property_tree/ptree.hpp>
+#include <boost/property_tree/xml_parser.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+
+#include "brep/temp_files.hpp"
+#include "cli/run_cli.hpp"
+
+namespace fs = std::filesystem;
+using namespace cg;
+using nlohmann::json;
+
+namespace {
+
+const fs::path kRepro = fs::path(COOLINGGEN_SOURCE_DIR) / "data" / "repro";
+
+json load(const fs::path& p) { return json::parse(test::read_text(p)); }
+
+// Every text element of the SVG, in document order.
+void texts(const boost::property_tree::ptree& node, std::vector<std::string>& out) {
+  for (const auto& [name, child] : node) {
+    if (name == "text") out.push_back(child.get_value<std::string>());
+    texts(child, out);
+  }
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(repro_designs_are_refused_naming_a_field) {
+  const std::vector<std::pair<std::string, std::string>> cases{
+      {"section_loop_one_rib.json", "cooling.film_rows[0].chord"},
+      {"section_loop_serpentine.json", "cooling.showerhead.stagnation_arc_length"}};
+  for (const auto& [file, field] : cases) {
+    test::TempDir dir("cli_repro");
+    const test::Run r = test::run_cli("build " + test::q(kRepro / file) + " -o " + test::q(dir.path / "out"), dir.path);
+    BOOST_TEST(r.exit_code == 2, file << ": " << r.err);
+    BOOST_TEST(test::count_lines(r.err) == 1, r.err);
+    BOOST_TEST(r.err.find(field) != std::string::npos, r.err);
+    BOOST_TEST(r.err.find("section") == std::string::npos, r.err);
+    BOOST_TEST(!fs::exists(dir.path / "out"));
+  }
+}
+
+BOOST_AUTO_TEST_CASE(sections_of_a_built_design_match_the_design_checks) {
+  test::TempDir dir("cli_sections");
+  json d = load(kRepro / "section_loop_one_rib.json");
+  d["name"] = "one_rib";
+  d["cooling"]["film_rows"].erase(0);  // the row the film checks refuse
+  // The design checks' spans (no turnaround: 0.05 + 0.1 k), every other one.
+  d["output"] = {{"formats", {"sections", "report_md"}}, {"section_spans", {0.15, 0.35, 0.55, 0.75, 0.95}}};
+  std::ofstream(dir.path / "one_rib.json") << d.dump(1);
+  const test::Run r = test::run_cli("build " + test::q(dir.path / "one_rib.json") + " -o " + test::q(dir.path / "out"), dir.path);
+  BOOST_TEST_REQUIRE(r.exit_code == 0, r.err);
+  const json report = load(dir.path / "out" / "report.json");
+  const json& sections = report.at("sections");
+  const json& checks = report.at("model").at("cooling").at("passages");
+  BOOST_TEST_REQUIRE(sections.size() == 5u);
+  BOOST_TEST_REQUIRE(checks.size() == 2u);
+  std::size_t holes = 0;
+  for (const json& s : sections) {
+    const double span = s.at("span").get<double>();
+    std::vector<std::string> names;
+    for (const json& p : s.at("passages")) names.push_back(p.at("name").get<std::string>());
+    BOOST_TEST((names == std::vector<std::string>{"chamber_1", "chamber_2"}), "span " << span);
+    BOOST_TEST(s.at("hole_count").get<std::size_t>() == s.at("holes").size());
+    for (const json& h : s.at("holes")) {
+      const std::string n = h.at("name").get<std::string>();
+      BOOST_TEST((n.rfind("showerhead_", 0) == 0 || n.rfind("film_row_", 0) == 0), n);
+      BOOST_TEST(h.at("area_mm2").get<double>() > 0);
+      ++holes;
+    }
+    for (const json& p : s.at("passages")) {
+      const json* at_span = nullptr;
+      for (const json& m : checks)
+        if (m.at("name") == p.at("name"))
+          for (const json& c : m.at("sections"))
+            if (std::abs(c.at("span").get<double>() - span) < 1e-9) at_span = &c;
+      BOOST_TEST_REQUIRE(at_span != nullptr, p.at("name") << " at span " << span << " not in the design checks");
+      for (const char* key : {"area_mm2", "wetted_perimeter_mm"}) {
+        const double ours = p.at(key).get<double>(), check = at_span->at(key).get<double>();
+        BOOST_TEST(std::abs(ours - check) <= 2e-5 * check, p.at("name") << " " << key << " at span " << span << ": " << ours << " vs " << check);
+      }
+    }
+  }
+  BOOST_TEST(holes >= 10u);  // the showerhead's three rows cross most cuts
+  // sections.svg: per panel "span s", then "... N passage(s), M hole(s) ..." and the table's names.
+  boost::property_tree::ptree svg;
+  boost::property_tree::read_xml((dir.path / "out" / "sections.svg").string(), svg);
+  std::vector<std::string> t;
+  texts(svg, t);
+  std::size_t panel = 0;
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    if (t[i].rfind("span ", 0) != 0) continue;
+    BOOST_TEST_REQUIRE(panel < sections.size());
+    BOOST_TEST_REQUIRE(i + 1 < t.size());
+    const std::string expect = "2 passage(s), " + std::to_string(sections[panel].at("hole_count").get<std::size_t>()) + " hole(s)";
+    BOOST_TEST(t[i + 1].find(expect) != std::string::npos, t[i + 1] << " (expected " << expect << ")");
+    std::set<std::string> listed;
+    for (std::size_t j = i + 2; j < t.size() && t[j].rfind("span ", 0) != 0; ++j)
+      if (t[j].rfind("chamber_", 0) == 0) listed.insert(t[j]);
+    BOOST_TEST((listed == std::set<std::string>{"chamber_1", "chamber_2"}), "panel " << panel);
+    ++panel;
+  }
+  BOOST_TEST(panel == sections.size());
+}
