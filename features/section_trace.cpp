@@ -220,88 +220,112 @@ void edge_crossings(const TopoDS_Edge& edge, int index, SpanSurfaceEvaluator& s,
   }
 }
 
-// Traces every curve of one face: from its crossings, then the closed ones from grid seeds.
-void trace_face(const SectionBody& body, int fi, const std::vector<int>& verts, SectionTrace& out, SpanSurfaceEvaluator& s,
-                BRepTopAdaptor_FClass2d& cls) {
-  const brep::NamedFace& nf = body.shape->faces[static_cast<std::size_t>(fi)];
-  const CurveTracer tr(nf.face, s, &cls);
-  const std::size_t first_piece = out.pieces.size();
-  std::vector<Target> targets;
-  for (int v : verts) {
-    const SectionFaceVertex& fv = out.vertices[static_cast<std::size_t>(v)];
-    const SectionCrossing& c = out.crossings[static_cast<std::size_t>(fv.crossing)];
-    double t = 0;
-    s.value(c.point, nullptr, &t);
-    targets.push_back({fv.uv, c.point, t, false});
+// uv grid lines of a face for the closed-curve seeds: two per knot interval (one beyond 32 intervals)
+// of a B-spline surface, at least 12 intervals over the face's uv range.
+std::vector<double> seed_grid(const TopoDS_Face& face, bool along_u) {
+  double u0, u1, v0, v1;
+  BRepTools::UVBounds(face, u0, u1, v0, v1);
+  const double a = along_u ? u0 : v0, b = along_u ? u1 : v1;
+  std::vector<double> g;
+  const BRepAdaptor_Surface sa(face, false);
+  if (sa.GetType() == GeomAbs_BSplineSurface) {
+    const int n = along_u ? sa.NbUIntervals(GeomAbs_C2) : sa.NbVIntervals(GeomAbs_C2);
+    TColStd_Array1OfReal t(1, n + 1);
+    if (along_u) sa.UIntervals(t, GeomAbs_C2); else sa.VIntervals(t, GeomAbs_C2);
+    std::vector<double> knots{a};
+    for (int i = 1; i <= n + 1; ++i)
+      if (t(i) > a && t(i) < b) knots.push_back(t(i));
+    knots.push_back(b);
+    const int per = knots.size() > 33 ? 1 : 2;
+    for (std::size_t i = 0; i + 1 < knots.size(); ++i)
+      for (int k = 0; k < per; ++k) g.push_back(knots[i] + (knots[i + 1] - knots[i]) * k / per);
+    g.push_back(b);
   }
-  auto fail = [&](const std::string& why, const Vec3& p) {
-    throw FeatureFailure("section at span " + std::to_string(s.surface().span) + ": the curve on face " + nf.name +
+  if (g.size() < 13) {
+    g.clear();
+    for (int k = 0; k <= 12; ++k) g.push_back(a + (b - a) * k / 12);
+  }
+  return g;
+}
+
+// The curves of one face: from its crossings, then the closed ones from grid seeds.
+class FaceSection {
+ public:
+  FaceSection(const SectionBody& body, int face, SectionTrace& out, SpanSurfaceEvaluator& s, BRepTopAdaptor_FClass2d& cls)
+      : nf_(body.shape->faces[static_cast<std::size_t>(face)]), face_(face), tr_(nf_.face, s, &cls), out_(out), s_(s),
+        cls_(cls), first_piece_(out.pieces.size()) {}
+
+  // From each crossing not yet reached into the face, to the crossing the curve gets to.
+  void from_crossings(const std::vector<int>& verts) {
+    std::vector<Target> targets;
+    for (int v : verts) {
+      const SectionCrossing& c = out_.crossings[static_cast<std::size_t>(vertex(v).crossing)];
+      double t = 0;
+      s_.value(c.point, nullptr, &t);
+      targets.push_back({vertex(v).uv, c.point, t, false});
+    }
+    for (std::size_t k = 0; k < targets.size(); ++k) {
+      if (targets[k].consumed) continue;
+      targets[k].consumed = true;
+      const SectionFaceVertex& fv = vertex(verts[k]);
+      const auto start = tr_.correct(fv.uv);
+      if (!start) fail("the corrector does not converge", targets[k].p);
+      // Into the face: the curve's uv direction (f_v, -f_u) against the boundary's inward normal.
+      double sign = start->fv * fv.inward.X() - start->fu * fv.inward.Y() >= 0 ? 1 : -1;
+      // On a seam the crossing is on the face twice: the curve may end at its twin only after going round.
+      int twin = -1;
+      for (std::size_t j = 0; j < targets.size(); ++j)
+        if (j != k && vertex(verts[j]).crossing == fv.crossing) twin = static_cast<int>(j);
+      TraceEnd end = TraceEnd::WrongWay;
+      SectionPiece piece;
+      int reached = -1;
+      std::string why;
+      for (int attempt = 0; attempt < 2 && end == TraceEnd::WrongWay; ++attempt, sign = -sign) {
+        piece = SectionPiece{};
+        piece.face = face_;
+        piece.points.push_back(targets[k].p);
+        end = follow(tr_, s_, *start, sign, targets, twin, kMaxLength, piece, reached, why);
+      }
+      if (end != TraceEnd::Target) fail(end == TraceEnd::WrongWay ? "it leaves the face both ways" : why, targets[k].p);
+      piece.first = fv.crossing;
+      piece.last = vertex(verts[static_cast<std::size_t>(reached)]).crossing;
+      out_.pieces.push_back(std::move(piece));
+    }
+  }
+
+  // Closed curves inside the face: from sign changes of f along the grid lines that no traced piece
+  // passes through.
+  void closed_curves() {
+    const std::vector<double> gu = seed_grid(nf_.face, true), gv = seed_grid(nf_.face, false);
+    const std::size_t nv = gv.size();
+    std::vector<double> f(gu.size() * nv);
+    for (std::size_t i = 0; i < gu.size(); ++i)
+      for (std::size_t j = 0; j < nv; ++j) f[i * nv + j] = tr_.eval(gp_Pnt2d(gu[i], gv[j])).g;
+    for (std::size_t i = 0; i < gu.size(); ++i)
+      for (std::size_t j = 0; j < nv; ++j) {
+        const double fij = f[i * nv + j];
+        if (i + 1 < gu.size() && (fij < 0) != (f[(i + 1) * nv + j] < 0))
+          seed(gp_Pnt2d(gu[i], gv[j]), gp_Pnt2d(gu[i + 1], gv[j]), fij, f[(i + 1) * nv + j]);
+        if (j + 1 < nv && (fij < 0) != (f[i * nv + j + 1] < 0))
+          seed(gp_Pnt2d(gu[i], gv[j]), gp_Pnt2d(gu[i], gv[j + 1]), fij, f[i * nv + j + 1]);
+      }
+  }
+
+ private:
+  static constexpr double kMaxLength = 1e4;  // mm, no section curve is longer
+
+  const SectionFaceVertex& vertex(int v) const { return out_.vertices[static_cast<std::size_t>(v)]; }
+
+  [[noreturn]] void fail(const std::string& why, const Vec3& p) const {
+    throw FeatureFailure("section at span " + std::to_string(s_.surface().span) + ": the curve on face " + nf_.name +
                          " from (" + std::to_string(p.x()) + ", " + std::to_string(p.y()) + ", " + std::to_string(p.z()) +
                          ") cannot be followed: " + why);
-  };
-  const double max_length = 1e4;
-  for (std::size_t k = 0; k < targets.size(); ++k) {
-    if (targets[k].consumed) continue;
-    targets[k].consumed = true;
-    const SectionFaceVertex& fv = out.vertices[static_cast<std::size_t>(verts[k])];
-    const auto start = tr.correct(fv.uv);
-    if (!start) fail("the corrector does not converge", targets[k].p);
-    // Into the face: the curve's uv direction (f_v, -f_u) against the boundary's inward normal.
-    double sign = start->fv * fv.inward.X() - start->fu * fv.inward.Y() >= 0 ? 1 : -1;
-    // On a seam the crossing is on the face twice: the curve may end at its twin only after going round.
-    int twin = -1;
-    for (std::size_t j = 0; j < targets.size(); ++j)
-      if (j != k && out.vertices[static_cast<std::size_t>(verts[j])].crossing == fv.crossing) twin = static_cast<int>(j);
-    TraceEnd end = TraceEnd::WrongWay;
-    SectionPiece piece;
-    int reached = -1;
-    std::string why;
-    for (int attempt = 0; attempt < 2 && end == TraceEnd::WrongWay; ++attempt, sign = -sign) {
-      piece = SectionPiece{};
-      piece.face = fi;
-      piece.points.push_back(targets[k].p);
-      end = follow(tr, s, *start, sign, targets, twin, max_length, piece, reached, why);
-    }
-    if (end != TraceEnd::Target) fail(end == TraceEnd::WrongWay ? "it leaves the face both ways" : why, targets[k].p);
-    piece.first = fv.crossing;
-    piece.last = out.vertices[static_cast<std::size_t>(verts[static_cast<std::size_t>(reached)])].crossing;
-    out.pieces.push_back(std::move(piece));
   }
-  // Closed curves inside the face: sign changes of f along a uv grid, away from the traced pieces.
-  double u0, u1, v0, v1;
-  BRepTools::UVBounds(nf.face, u0, u1, v0, v1);
-  BRepAdaptor_Surface sa(nf.face, false);
-  auto grid = [&](bool along_u) {
-    const double a = along_u ? u0 : v0, b = along_u ? u1 : v1;
-    std::vector<double> g{a};
-    if (sa.GetType() == GeomAbs_BSplineSurface) {
-      const int n = along_u ? sa.NbUIntervals(GeomAbs_C2) : sa.NbVIntervals(GeomAbs_C2);
-      TColStd_Array1OfReal t(1, n + 1);
-      if (along_u) sa.UIntervals(t, GeomAbs_C2); else sa.VIntervals(t, GeomAbs_C2);
-      std::vector<double> knots{a};
-      for (int i = 1; i <= n + 1; ++i)
-        if (t(i) > a && t(i) < b) knots.push_back(t(i));
-      knots.push_back(b);
-      const int per = knots.size() > 33 ? 1 : 2;
-      g.clear();
-      for (std::size_t i = 0; i + 1 < knots.size(); ++i)
-        for (int k = 0; k < per; ++k) g.push_back(knots[i] + (knots[i + 1] - knots[i]) * k / per);
-      g.push_back(b);
-    }
-    if (g.size() < 13) {
-      g.clear();
-      for (int k = 0; k <= 12; ++k) g.push_back(a + (b - a) * k / 12);
-    }
-    return g;
-  };
-  const std::vector<double> gu = grid(true), gv = grid(false);
-  const std::size_t nv = gv.size();
-  std::vector<double> f(gu.size() * nv);
-  for (std::size_t i = 0; i < gu.size(); ++i)
-    for (std::size_t j = 0; j < nv; ++j) f[i * nv + j] = tr.eval(gp_Pnt2d(gu[i], gv[j])).g;
-  auto on_traced = [&](const Vec3& p) {
-    for (std::size_t k = first_piece; k < out.pieces.size(); ++k) {
-      const auto& pts = out.pieces[k].points;
+
+  // Whether p lies on a piece this face traced (within the chords' sag: points 1 mm apart at most).
+  bool on_traced(const Vec3& p) const {
+    for (std::size_t k = first_piece_; k < out_.pieces.size(); ++k) {
+      const auto& pts = out_.pieces[k].points;
       for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
         const Vec3 ab = pts[i + 1] - pts[i];
         const double t = ab.squaredNorm() > 0 ? std::clamp((p - pts[i]).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.0;
@@ -309,34 +333,34 @@ void trace_face(const SectionBody& body, int fi, const std::vector<int>& verts, 
       }
     }
     return false;
-  };
-  auto seed = [&](gp_Pnt2d a, gp_Pnt2d b, double fa, double fb) {
-    const double r = newton::solve_bracketed_secant(
-        [&](double x) { return tr.eval(gp_Pnt2d(a.X() + x * (b.X() - a.X()), a.Y() + x * (b.Y() - a.Y()))).g; }, 0.0, 1.0,
-        fa, fb, 1e-13);
-    const gp_Pnt2d uv(a.X() + r * (b.X() - a.X()), a.Y() + r * (b.Y() - a.Y()));
-    if (cls.Perform(uv) != TopAbs_IN) return;
-    const auto n = tr.correct(uv);
+  }
+
+  // The root of f on the grid segment a-b; a closed curve traced from it when it is new.
+  void seed(gp_Pnt2d a, gp_Pnt2d b, double fa, double fb) {
+    auto at = [&](double x) { return gp_Pnt2d(a.X() + x * (b.X() - a.X()), a.Y() + x * (b.Y() - a.Y())); };
+    const gp_Pnt2d uv = at(newton::solve_bracketed_secant([&](double x) { return tr_.eval(at(x)).g; }, 0.0, 1.0, fa, fb, 1e-13));
+    if (cls_.Perform(uv) != TopAbs_IN) return;
+    const auto n = tr_.correct(uv);
     if (!n || on_traced(n->p)) return;
     std::vector<Target> closing{{n->uv, n->p, n->t, false}};
     SectionPiece piece;
-    piece.face = fi;
+    piece.face = face_;
     piece.points.push_back(n->p);
     int reached = -1;
     std::string why;
-    if (follow(tr, s, *n, 1, closing, 0, max_length, piece, reached, why) != TraceEnd::Target)
+    if (follow(tr_, s_, *n, 1, closing, 0, kMaxLength, piece, reached, why) != TraceEnd::Target)
       fail("a closed curve inside the face does not close" + (why.empty() ? std::string() : ": " + why), n->p);
-    out.pieces.push_back(std::move(piece));
-  };
-  for (std::size_t i = 0; i < gu.size(); ++i)
-    for (std::size_t j = 0; j < nv; ++j) {
-      const double fij = f[i * nv + j];
-      if (i + 1 < gu.size() && (fij < 0) != (f[(i + 1) * nv + j] < 0))
-        seed(gp_Pnt2d(gu[i], gv[j]), gp_Pnt2d(gu[i + 1], gv[j]), fij, f[(i + 1) * nv + j]);
-      if (j + 1 < nv && (fij < 0) != (f[i * nv + j + 1] < 0))
-        seed(gp_Pnt2d(gu[i], gv[j]), gp_Pnt2d(gu[i], gv[j + 1]), fij, f[i * nv + j + 1]);
-    }
-}
+    out_.pieces.push_back(std::move(piece));
+  }
+
+  const brep::NamedFace& nf_;
+  int face_;
+  CurveTracer tr_;
+  SectionTrace& out_;
+  SpanSurfaceEvaluator& s_;
+  BRepTopAdaptor_FClass2d& cls_;
+  std::size_t first_piece_;
+};
 
 }  // namespace
 
@@ -416,7 +440,9 @@ SectionTrace trace_section(const SectionBody& body, SpanSurfaceEvaluator& s, Fac
         out.vertices.push_back({f, c, uv, gp_Vec2d(-d.Y(), d.X())});  // the face lies left of its edges
       }
     }
-    trace_face(body, f, verts, out, s, classifiers.of(f));
+    FaceSection fs(body, f, out, s, classifiers.of(f));
+    fs.from_crossings(verts);
+    fs.closed_curves();
   }
   return out;
 }

@@ -373,7 +373,8 @@ bool is_opening_face(const std::string& name) {
 std::string passage_of_face(const std::string& name) {
   if (name.rfind("chamber_", 0) == 0 && name.size() > 13 && name.compare(name.size() - 5, 5, "_wall") == 0)
     return name.substr(0, name.size() - 5);
-  if (brep::feature_kind(name) == "radial_passage") return name;
+  const std::string kind = brep::feature_kind(name);
+  if (kind == "radial_passage" || kind == "inlet") return name;  // an inlet through the hub floor is a passage too
   return "";
 }
 

@@ -31,7 +31,8 @@ namespace cg::features {
 
 /// Faces of an opening in the wall (a hole's or slot's faces): film_row_*, showerhead_*, te_slot_*.
 bool is_opening_face(const std::string& face_name);
-/// The passage a face bounds: "chamber_<k>_wall" -> "chamber_<k>", "radial_passage_<k>" -> itself;
+/// The passage a face bounds: "chamber_<k>_wall" -> "chamber_<k>", "radial_passage_<k>" and "inlet_<k>"
+/// (through the hub floor) -> themselves;
 /// "" for any other face.
 std::string passage_of_face(const std::string& face_name);
 
