@@ -201,22 +201,42 @@ TraceEnd follow(const CurveTracer& tr, SpanSurfaceEvaluator& s, Node cur, double
   return TraceEnd::Lost;
 }
 
-// The crossings of one edge with the surface.
+// The crossings of one edge with the surface: g along the edge's 3D curve, sampled (four per continuity
+// interval, at least 12), each sign change solved by bracketed secant. Between samples of one sign an
+// interval is split until |g| at its ends exceeds its length (g changes by at most the distance moved:
+// no root inside) or it is shorter than 1e-7 mm: two crossings close together, where the cut just
+// passes through a small hole's opening, are found as well.
 void edge_crossings(const TopoDS_Edge& edge, int index, SpanSurfaceEvaluator& s, std::vector<SectionCrossing>& out) {
   if (BRep_Tool::Degenerated(edge)) return;
-  BRepAdaptor_Curve c(edge);
-  const double a = c.FirstParameter(), b = c.LastParameter();
-  const int n = std::clamp(4 * c.NbIntervals(GeomAbs_C2), 12, 1024);
+  const BRepAdaptor_Curve c(edge);
+  const double a = c.FirstParameter(), b = c.LastParameter(), xtol = 1e-15 * (std::abs(a) + std::abs(b) + (b - a));
   auto g = [&](double t) { return s.value(vec(c.Value(t))); };
-  double t_prev = a, g_prev = g(a);
-  for (int k = 1; k <= n; ++k) {
-    const double t = a + (b - a) * k / n, gt = g(t);
-    if ((g_prev < 0) != (gt < 0)) {
-      const double r = newton::solve_bracketed_secant(g, t_prev, t, g_prev, gt, 1e-15 * (std::abs(a) + std::abs(b) + (b - a)));
+  struct Sample {
+    double t, g;
+    Vec3 p;
+  };
+  auto sample = [&](double t) {
+    const Vec3 p = vec(c.Value(t));
+    return Sample{t, s.value(p), p};
+  };
+  auto scan = [&](auto& self, const Sample& x, const Sample& y, int depth) -> void {
+    if ((x.g < 0) != (y.g < 0)) {
+      const double r = newton::solve_bracketed_secant(g, x.t, y.t, x.g, y.g, xtol);
       out.push_back({index, r, vec(c.Value(r))});
+      return;
     }
-    t_prev = t;
-    g_prev = gt;
+    const Sample m = sample(0.5 * (x.t + y.t));
+    const double arc = 1.05 * ((m.p - x.p).norm() + (y.p - m.p).norm());  // chords of halves turning < 20 deg
+    if (std::abs(x.g) + std::abs(y.g) > arc || arc < 1e-7 || depth > 60) return;
+    self(self, x, m, depth + 1);
+    self(self, m, y, depth + 1);
+  };
+  const int n = std::clamp(4 * c.NbIntervals(GeomAbs_C2), 12, 1024);
+  Sample prev = sample(a);
+  for (int k = 1; k <= n; ++k) {
+    const Sample cur = sample(a + (b - a) * k / n);
+    scan(scan, prev, cur, 0);
+    prev = cur;
   }
 }
 

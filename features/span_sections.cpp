@@ -117,7 +117,9 @@ class BodySection {
   void loops(std::vector<Loop>& sealed, std::vector<Loop>& holes, int& unclosed) {
     std::vector<int> all(trace_.pieces.size());
     for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
-    const std::set<std::string> closed = close_openings(chain(all), unclosed);
+    std::vector<Loop> as_cut = chain(all);
+    int left = 0;
+    const std::set<std::string> closed = close_openings(as_cut, left);
     std::vector<int> wall, hole;
     for (std::size_t i = 0; i < trace_.pieces.size(); ++i) {
       const int p = static_cast<int>(i);
@@ -125,8 +127,21 @@ class BodySection {
       if (trace_.pieces[i].bridge || !in_hole) wall.push_back(p);
       if (in_hole) hole.push_back(p);
     }
-    sealed = chain(wall);
-    holes = chain(hole);
+    try {
+      sealed = chain(wall);
+      holes = chain(hole);
+      unclosed += left;
+    } catch (const FeatureFailure&) {
+      // Bridges that do not join up (openings meeting each other on a wall): the loops as cut, every
+      // opening left open.
+      sealed.clear();
+      holes.clear();
+      for (Loop& l : as_cut) {
+        const bool hole_only = std::all_of(l.steps.begin(), l.steps.end(), [&](const Step& st) { return opening(st.piece); });
+        (hole_only ? holes : sealed).push_back(std::move(l));
+      }
+      unclosed += left + static_cast<int>(closed.size());
+    }
     for (Loop& l : holes)
       for (const Step& st : l.steps)
         if (!trace_.pieces[static_cast<std::size_t>(st.piece)].bridge) l.name = face_name(st.piece);
