@@ -2,7 +2,8 @@
 // The curves in which a span surface (section_surface.hpp) cuts the faces of one body, traced on the
 // exact surfaces. How:
 //  1. every edge of the faces the surface can meet is cut once: g along its 3D curve, sampled (four per
-//     continuity interval, at least 12), each sign change solved by bracketed secant. A crossing belongs to
+//     continuity interval, at least 12; an interval without a sign change split until |g| at its ends
+//     exceeds its length, as g is 1-Lipschitz), each sign change solved by bracketed secant. A crossing belongs to
 //     the edge, so both faces at it end their curves at the same crossing: loops are chained by crossing,
 //     never by a distance tolerance (edges of boolean results are up to 1e-3 mm and more off their faces);
 //  2. on each face, from each of its crossings (in uv from the edge's curve on the face, heading inside:
