@@ -1,5 +1,10 @@
 #pragma once
-// Cooled test parts made here, independent of the feature library (being built on other branches):
+// Cooled test parts made here, independent of the feature library. Kept (issue 20) where a test needs
+// what the features cannot give: straight cylindrical chambers whose plane sections are exact ellipses
+// and whose removed volume is known (test_visual_outputs), and a cheap part with an insert tube for the
+// output-directory and mesh tests. The hand-off files of real feature-built blades are checked in
+// tests/acceptance.
+// The parts:
 // a blade from a config (the built-in example or the C3X vane) with straight cylindrical chambers
 // along the camber line (open at the hub), a row of film holes from the pressure side into the first
 // chamber, and a separate insert tube inside the second chamber. Faces are named from the history of
