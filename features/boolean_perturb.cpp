@@ -1,4 +1,5 @@
 #include "features/boolean_perturb.hpp"
+#include "src/core/format.hpp"
 
 #include <BRepAdaptor_Surface.hxx>
 #include <TopExp_Explorer.hxx>
@@ -44,12 +45,11 @@ std::optional<gp_Ax1> detect_symmetry_axis(const TopoDS_Shape& tool) {
 Perturbed perturb_tool(const brep::NamedShape& tool, const std::optional<gp_Ax1>& axis, int attempt, double shift) {
   Perturbed p;
   gp_Trsf t;
-  char what[96];
   if (axis && attempt % 2 == 1) {
     const double angle = attempt == 1 ? 0.37 : 0.37 + 1.2 * (attempt / 2);
     t.SetRotation(*axis, angle);
     p.same_geometry = true;
-    std::snprintf(what, sizeof what, "rotated %.1f deg about its axis", angle * 180 / 3.14159265358979323846);
+    p.what = "rotated " + format_number(angle * 180 / 3.14159265358979323846) + " deg about its axis";
   } else {
     gp_Vec d(1, 1, 1);
     if (axis) {
@@ -61,9 +61,8 @@ Perturbed perturb_tool(const brep::NamedShape& tool, const std::optional<gp_Ax1>
     }
     const double amount = shift * std::max(1, attempt / 2);
     t.SetTranslation(d.Normalized() * amount);
-    std::snprintf(what, sizeof what, "shifted %.3f mm", amount);
+    p.what = "shifted " + format_number(amount) + " mm";
   }
-  p.what = what;
   const TopLoc_Location loc(t);
   p.shape.shape = tool.shape.Moved(loc);
   for (const brep::NamedFace& f : tool.faces) p.shape.faces.push_back({TopoDS::Face(f.face.Moved(loc)), f.name});

@@ -18,6 +18,7 @@
 #include "src/core/error.hpp"
 #include "src/fit/interpolate.hpp"
 #include "src/fit/skin.hpp"
+#include "src/core/format.hpp"
 
 namespace cg::features {
 namespace {
@@ -64,7 +65,7 @@ HollowBlade make_hollow_blade(const blade::BladeModel& model, const HollowBladeO
     x1 = x;
   }
   require(x1 >= o.chord_start + 0.2, "hollow blade: the blade is thinner than 2 wall + min_cavity = " +
-                                         std::to_string(need) + " mm over most of the chord");
+                                         format_number(need) + " mm over most of the chord");
   hb.chord_end = x1;
 
   std::vector<BSplineCurve<3>> sections;
@@ -172,7 +173,7 @@ std::vector<FeatureTool> make_hole_tools(const blade::BladeModel& model, const H
           const Eigen::Vector3d origin = start + rho * (std::cos(phi) * e1 + std::sin(phi) * e2);
           const RaySurfaceHit ho = outer.first_hit(origin, d, 30), hi = inner.first_hit(origin, d, 30);
           require(ho.found && hi.found && ho.ray_param < hi.ray_param,
-                  "holes: a hole does not cross the wall into the core (span " + std::to_string(span) + ")");
+                  "holes: a hole does not cross the wall into the core (span " + format_number(span) + ")");
           s_min = std::min(s_min, ho.ray_param);
           s_max = std::max(s_max, hi.ray_param);
           volume += gw[q] * rho * r * (hi.ray_param - ho.ray_param) * (2 * kPi / kPhi);
@@ -182,7 +183,7 @@ std::vector<FeatureTool> make_hole_tools(const blade::BladeModel& model, const H
       // The far side of the cavity must stay clear of the tool's end.
       const RaySurfaceHit far = inner.first_hit(start + (s_max + 1e-6) * d, d, 30);
       require(!far.found || far.ray_param > length - s_max + 0.5 * along,
-              "holes: the cavity is too thin for a hole at span " + std::to_string(span));
+              "holes: the cavity is too thin for a hole at span " + format_number(span));
       char name[64];
       std::snprintf(name, sizeof name, "%s%d_hole_%03d", o.name_prefix.c_str(), row + 1, j + 1);
       const gp_Ax2 ax(gp_Pnt(start.x(), start.y(), start.z()), gp_Dir(d.x(), d.y(), d.z()),

@@ -25,7 +25,7 @@
 #include <sstream>
 
 #include "features/face_names.hpp"
-#include "src/blade/format.hpp"
+#include "src/core/format.hpp"
 #include "src/brep/blade_solid.hpp"
 #include "src/core/newton.hpp"
 #include "src/core/parallel.hpp"
@@ -33,7 +33,6 @@
 namespace cg::features {
 namespace {
 
-using blade::detail::fmt;
 
 using Vec3 = Eigen::Vector3d;
 
@@ -116,13 +115,13 @@ void check_definition(const CoreDefinition& def) {
     if (i > 0 && !(r.suction_chord > def.ribs[i - 1].suction_chord))
       throw PassageInputError(rib_field(i, "suction_chord"),
                               "ribs must be listed from the LE to the TE: must be > " +
-                                  fmt(def.ribs[i - 1].suction_chord) + " (ribs[" + std::to_string(i - 1) + "]), got " +
-                                  fmt(r.suction_chord));
+                                  format_number(def.ribs[i - 1].suction_chord) + " (ribs[" + std::to_string(i - 1) + "]), got " +
+                                  format_number(r.suction_chord));
     if (i > 0 && !(r.pressure_chord < def.ribs[i - 1].pressure_chord))
       throw PassageInputError(rib_field(i, "pressure_chord"),
                               "ribs must be listed from the LE to the TE: must be < " +
-                                  fmt(def.ribs[i - 1].pressure_chord) + " (ribs[" + std::to_string(i - 1) +
-                                  "], pressure-side chords are negative), got " + fmt(r.pressure_chord));
+                                  format_number(def.ribs[i - 1].pressure_chord) + " (ribs[" + std::to_string(i - 1) +
+                                  "], pressure-side chords are negative), got " + format_number(r.pressure_chord));
     if (r.turnaround) {
       const TurnaroundDefinition& t = *r.turnaround;
       const bool open = t.end == SpanEnd::Tip ? def.tip_cap.open : def.hub_floor.open;
@@ -133,8 +132,8 @@ void check_definition(const CoreDefinition& def) {
                                     " is open");
       if (t.tip_radius > 0.5 * r.thickness * (1 + 1e-12))
         throw PassageInputError(rib_field(i, "turnaround.tip_radius"),
-                                "must be in (0, thickness / 2 = " + fmt(0.5 * r.thickness) + "] mm, got " +
-                                    fmt(t.tip_radius));
+                                "must be in (0, thickness / 2 = " + format_number(0.5 * r.thickness) + "] mm, got " +
+                                    format_number(t.tip_radius));
     }
   }
   const int chambers = static_cast<int>(n) + 1;
@@ -191,18 +190,18 @@ void check_rib_placement(const blade::BladeCoordinates& coords, const CoreDefini
       const double reach = 0.5 * r.thickness + r.fillet_radius + 0.1;  // mm the rib needs beyond its chord
       if (r.suction_chord + reach / ls >= cr.suction_chord)
         throw PassageInputError(rib_field(i, "suction_chord"),
-                                "rib " + std::to_string(i + 1) + " lies outside the core at span " + fmt(s) +
-                                    ": with its thickness and fillets it reaches chord " + fmt(r.suction_chord + reach / ls) +
-                                    ", the inner wall ends at suction chord " + fmt(cr.suction_chord) + " there");
+                                "rib " + std::to_string(i + 1) + " lies outside the core at span " + format_number(s) +
+                                    ": with its thickness and fillets it reaches chord " + format_number(r.suction_chord + reach / ls) +
+                                    ", the inner wall ends at suction chord " + format_number(cr.suction_chord) + " there");
       if (r.pressure_chord - reach / lp <= cr.pressure_chord)
         throw PassageInputError(rib_field(i, "pressure_chord"),
-                                "rib " + std::to_string(i + 1) + " lies outside the core at span " + fmt(s) +
-                                    ": with its thickness and fillets it reaches chord " + fmt(r.pressure_chord - reach / lp) +
-                                    ", the inner wall ends at pressure chord " + fmt(cr.pressure_chord) + " there");
+                                "rib " + std::to_string(i + 1) + " lies outside the core at span " + format_number(s) +
+                                    ": with its thickness and fillets it reaches chord " + format_number(r.pressure_chord - reach / lp) +
+                                    ", the inner wall ends at pressure chord " + format_number(cr.pressure_chord) + " there");
       if (r.suction_chord - reach / ls <= 0 || r.pressure_chord + reach / lp >= 0)
         throw PassageInputError(rib_field(i, r.suction_chord - reach / ls <= 0 ? "suction_chord" : "pressure_chord"),
                                 "rib " + std::to_string(i + 1) + " with its thickness and fillets reaches over the "
-                                "leading edge at span " + fmt(s));
+                                "leading edge at span " + format_number(s));
       if (i == 0) continue;
       const RibDefinition& q = def.ribs[i - 1];
       const double need = std::max(r.thickness, q.thickness);
@@ -217,7 +216,7 @@ void check_rib_placement(const blade::BladeCoordinates& coords, const CoreDefini
         throw PassageInputError(rib_field(i, ss ? "suction_chord" : "pressure_chord"),
                                 "ribs " + std::to_string(i) + " and " + std::to_string(i + 1) + " overlap or are closer "
                                 "than their thickness on the " + (ss ? "suction" : "pressure") + " side at span " +
-                                    fmt(s) + ": clear width " + fmt(ss ? clear_s : clear_p) + " mm, at least " + fmt(need) +
+                                    format_number(s) + ": clear width " + format_number(ss ? clear_s : clear_p) + " mm, at least " + format_number(need) +
                                     " mm needed");
     }
   }
@@ -565,7 +564,7 @@ void build_core_cells(const blade::BladeModel& model, const CoreDefinition& def,
     InletRim rim;
     rim.system = out.chambers[static_cast<std::size_t>(in.chamber - 1)].system;
     rim.field = field + ".diameter";
-    rim.message = name + " (diameter " + fmt(in.diameter) + " mm) does not fit into chamber " +
+    rim.message = name + " (diameter " + format_number(in.diameter) + " mm) does not fit into chamber " +
                   std::to_string(in.chamber) + " where it passes the " + (hub ? "hub floor" : "tip cap") +
                   ": its rim leaves the chamber; use a smaller diameter or move it";
     const double tm = along(wall, 0.5 * reach);

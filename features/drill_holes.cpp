@@ -29,6 +29,7 @@
 #include "features/drill_hole_plan.hpp"
 #include "features/drill_hole_topology.hpp"
 #include "src/core/error.hpp"
+#include "src/core/format.hpp"
 
 namespace cg::features {
 
@@ -296,8 +297,8 @@ DrillResult drill_holes(const brep::NamedShape& input, const std::vector<Cylindr
       // The fixed rule first (fast); before a disagreement counts, BRepGProp's adaptive rule at 1e-9.
       if (!agrees()) measure(true);
       if (!agrees())
-        f = "hole '" + dh.name + "': removed volume " + std::to_string(dh.volume) + " mm^3 by its faces, " +
-            std::to_string(dh.independent_volume) + " mm^3 by quadrature, closure " + std::to_string(dh.closure);
+        f = "hole '" + dh.name + "': removed volume " + format_number(dh.volume) + " mm^3 by its faces, " +
+            format_number(dh.independent_volume) + " mm^3 by quadrature, closure " + format_number(dh.closure);
       if (!f.empty()) return;
       if (!BRepCheck_Analyzer(s.face).IsValid()) {
         f = "hole '" + dh.name + "': its face fails BRepCheck";
@@ -335,7 +336,7 @@ DrillResult drill_holes(const brep::NamedShape& input, const std::vector<Cylindr
     balance[static_cast<std::size_t>(face)] = after - before + caps;
     // Tolerance: the integrations' relative accuracy (1e-9 each, x10) plus 1e-6 of the caps.
     if (!(std::abs(after - before + caps) <= 1e-8 * (std::abs(before) + std::abs(after)) + 1e-6 * cap_sum_abs + 1e-9))
-      f = "face '" + fi.name + "': integral with holes " + std::to_string(after) + " != without " + std::to_string(before) +
+      f = "face '" + fi.name + "': integral with holes " + format_number(after) + " != without " + format_number(before) +
           " - caps " + std::to_string(caps);
   });
   std::string failed;

@@ -8,6 +8,7 @@
 #include "src/algo/project_point_curve.hpp"
 #include "src/core/error.hpp"
 #include "src/fit/approximate.hpp"
+#include "src/core/format.hpp"
 
 namespace cg::features {
 namespace {
@@ -47,7 +48,7 @@ EndWall::EndWall(const blade::BladeModel& model, SpanEnd end, double shift, doub
       const double u = base.first_param() + (base.last_param() - base.first_param()) * k / n;
       if (off.speed_ratio(u) <= 0.05)
         throw InvalidGeometry(std::string(end == SpanEnd::Hub ? "hub" : "casing") + " contour: a shift of " +
-                              std::to_string(shift) + " mm exceeds its radius of curvature");
+                              format_number(shift) + " mm exceeds its radius of curvature");
       pts.push_back(off.point(u));
     }
     contour_ = approximate<2>(pts, 3, tolerance).curve;

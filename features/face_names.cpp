@@ -18,6 +18,7 @@
 
 #include "src/brep/solid_integrals.hpp"
 #include "src/core/error.hpp"
+#include "src/core/format.hpp"
 
 namespace cg::features {
 
@@ -68,9 +69,9 @@ std::vector<brep::NamedFace> FaceNames::list(const TopoDS_Shape& shape, const st
       GProp_GProps p;
       BRepGProp::SurfaceProperties(f, p);
       throw AlgorithmFailure(what + ": a face has no name (lost in the boolean history): surface type " +
-                             std::to_string(static_cast<int>(ad.GetType())) + ", area " + std::to_string(p.Mass()) +
-                             " mm^2 at (" + std::to_string(p.CentreOfMass().X()) + ", " +
-                             std::to_string(p.CentreOfMass().Y()) + ", " + std::to_string(p.CentreOfMass().Z()) + ")");
+                             std::to_string(static_cast<int>(ad.GetType())) + ", area " + format_number(p.Mass()) +
+                             " mm^2 at (" + format_number(p.CentreOfMass().X()) + ", " +
+                             format_number(p.CentreOfMass().Y()) + ", " + format_number(p.CentreOfMass().Z()) + ")");
     }
     out.push_back({TopoDS::Face(f), n});
   }

@@ -19,6 +19,7 @@
 
 #include "features/face_names.hpp"
 #include "features/verified_boolean.hpp"
+#include "src/core/format.hpp"
 
 namespace cg::features {
 namespace {
@@ -167,8 +168,8 @@ FalseSeamRepair repair_false_seams(const brep::NamedShape& part) {
     if (!BRepCheck_Analyzer(faces(i)).IsValid()) throw FeatureFailure("false seam repair: a repaired face is not valid");
   const double v1 = volume_of(touched);
   if (!(std::abs(v1 - v0) <= 1e-9 * (std::abs(v0) + 1.0)))
-    throw FeatureFailure("false seam repair changed the faces' volume integral (" + std::to_string(v0) + " -> " +
-                         std::to_string(v1) + " mm^3)");
+    throw FeatureFailure("false seam repair changed the faces' volume integral (" + format_number(v0) + " -> " +
+                         format_number(v1) + " mm^3)");
   out.shape.shape = shape;
   out.shape.faces = FaceNames(part.faces).carried(copy, shape).list(shape, "false seam repair");
   return out;

@@ -5,6 +5,7 @@
 
 #include "features/film_holes.hpp"
 #include "features/film_rows.hpp"
+#include "src/core/format.hpp"
 
 namespace cg::features {
 
@@ -84,12 +85,12 @@ FilmCoolingResult build_film_cooling(const blade::BladeModel& model, const brep:
     const InsertMeasure& m = inserts[i].measure;
     const double tol = 5e-3;
     if (m.measured_gap < m.gap - tol)
-      throw FeatureFailure(m.name + ": the gap to the blade measures " + std::to_string(m.measured_gap) +
-                           " mm on the built solids, configured " + std::to_string(m.gap) + " mm");
+      throw FeatureFailure(m.name + ": the gap to the blade measures " + format_number(m.measured_gap) +
+                           " mm on the built solids, configured " + format_number(m.gap) + " mm");
     if (std::abs(m.measured_sheet_min - m.sheet_thickness) > tol || std::abs(m.measured_sheet_max - m.sheet_thickness) > tol)
-      throw FeatureFailure(m.name + ": the sheet measures " + std::to_string(m.measured_sheet_min) + " to " +
-                           std::to_string(m.measured_sheet_max) + " mm on the built solid, configured " +
-                           std::to_string(m.sheet_thickness) + " mm");
+      throw FeatureFailure(m.name + ": the sheet measures " + format_number(m.measured_sheet_min) + " to " +
+                           format_number(m.measured_sheet_max) + " mm on the built solid, configured " +
+                           format_number(m.sheet_thickness) + " mm");
     rep.inserts.push_back(inserts[i].measure);
     for (const auto& [stage, s] : inserts[i].seconds) rep.seconds.emplace_back(inserts[i].body.name + "_" + stage, s);
     out.inserts.push_back(inserts[i].body);

@@ -1,4 +1,5 @@
 #include "features/film_rows.hpp"
+#include "src/core/format.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,12 +10,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr int kRowSegments = 64;
-
-std::string num(double x) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.4g", x);
-  return b;
-}
 
 // Cumulative polyline length at the even nodes of `pts`, extrapolated (Richardson, polyline error h^2).
 std::vector<double> cumulative_length(const std::vector<Eigen::Vector3d>& pts) {
@@ -92,9 +87,9 @@ std::vector<double> hole_positions(double len, double pitch, int count, double s
 }
 
 void check_span_range(double s0, double s1, const std::string& field) {
-  if (!(s0 >= 0 && s0 < 1)) throw FilmInputError(field + ".span_start", "span_start " + num(s0) + " is outside the blade's span range [0, 1)");
+  if (!(s0 >= 0 && s0 < 1)) throw FilmInputError(field + ".span_start", "span_start " + format_number(s0) + " is outside the blade's span range [0, 1)");
   if (!(s1 > s0 && s1 <= 1))
-    throw FilmInputError(field + ".span_end", "span_end " + num(s1) + " must lie in (span_start, 1] = (" + num(s0) + ", 1]");
+    throw FilmInputError(field + ".span_end", "span_end " + format_number(s1) + " must lie in (span_start, 1] = (" + format_number(s0) + ", 1]");
 }
 
 }  // namespace
@@ -112,9 +107,9 @@ double RowPositioner::chord(const RowPosition& position, double span) {
   if (position.kind == RowPosition::Kind::Chord) return position.value;
   const auto [suction, pressure] = side_lengths(span);
   const double arc = position.value, side = arc >= 0 ? suction : pressure;
-  require(std::abs(arc) <= side, "arc length " + num(arc) + " mm lies beyond the TE (the " +
-                                     (arc >= 0 ? "suction" : "pressure") + " side is " + num(side) + " mm long at span " +
-                                     num(span) + ")");
+  require(std::abs(arc) <= side, "arc length " + format_number(arc) + " mm lies beyond the TE (the " +
+                                     (arc >= 0 ? "suction" : "pressure") + " side is " + format_number(side) + " mm long at span " +
+                                     format_number(span) + ")");
   return arc / side;
 }
 
@@ -124,10 +119,10 @@ std::vector<HoleSpec> place_row(const blade::BladeCoordinates& coords, RowPositi
   const double D = row.shape.diameter;
   if ((row.count > 0) == (row.pitch_d > 0)) throw FilmInputError(field, "give exactly one of count and pitch_d");
   if (row.pitch_d > 0 && row.pitch_d < 1)
-    throw FilmInputError(field + ".pitch_d", "pitch " + num(row.pitch_d) + " D is below the diameter: holes would overlap");
+    throw FilmInputError(field + ".pitch_d", "pitch " + format_number(row.pitch_d) + " D is below the diameter: holes would overlap");
   const RowPosition& at = row.position;
   if (at.kind == RowPosition::Kind::Chord && !(std::abs(at.value) < 1))
-    throw FilmInputError(field + ".chord", "chord " + num(at.value) + " must lie in (-1, 1)");
+    throw FilmInputError(field + ".chord", "chord " + format_number(at.value) + " must lie in (-1, 1)");
   RowCurve rc;
   try {
     rc = row_curve(coords, positioner, at, row.span_start, row.span_end);
@@ -136,8 +131,8 @@ std::vector<HoleSpec> place_row(const blade::BladeCoordinates& coords, RowPositi
   }
   const double pitch = row.count > 0 ? rc.length() / row.count : row.pitch_d * D;
   if (pitch < D)
-    throw FilmInputError(field + ".count", num(row.count) + " holes over the row's " + num(rc.length()) + " mm give a pitch of " +
-                                               num(pitch) + " mm, below the diameter " + num(D) + " mm");
+    throw FilmInputError(field + ".count", format_number(row.count) + " holes over the row's " + format_number(rc.length()) + " mm give a pitch of " +
+                                               format_number(pitch) + " mm, below the diameter " + format_number(D) + " mm");
   const std::string name = "film_row_" + std::to_string(row_number);
   std::vector<HoleSpec> holes;
   const std::vector<double> xs = hole_positions(rc.length(), pitch, row.count, row.stagger);
@@ -167,9 +162,9 @@ std::vector<HoleSpec> place_row(const blade::BladeCoordinates& coords, RowPositi
 std::vector<HoleSpec> place_showerhead(const blade::BladeCoordinates& coords, RowPositioner& positioner,
                                        const ShowerheadDefinition& sh, const std::string& field) {
   check_span_range(sh.span_start, sh.span_end, field);
-  if (sh.pitch_d < 1) throw FilmInputError(field + ".pitch_d", "pitch " + num(sh.pitch_d) + " D is below the diameter");
+  if (sh.pitch_d < 1) throw FilmInputError(field + ".pitch_d", "pitch " + format_number(sh.pitch_d) + " D is below the diameter");
   if (sh.row_spacing_d < 1)
-    throw FilmInputError(field + ".row_spacing_d", "row spacing " + num(sh.row_spacing_d) + " D is below the diameter: rows would overlap");
+    throw FilmInputError(field + ".row_spacing_d", "row spacing " + format_number(sh.row_spacing_d) + " D is below the diameter: rows would overlap");
   std::vector<HoleSpec> holes;
   const double D = sh.diameter;
   for (int k = 1; k <= sh.rows; ++k) {

@@ -16,6 +16,7 @@
 
 #include "features/face_names.hpp"
 #include "src/core/parallel.hpp"
+#include "src/core/format.hpp"
 
 namespace cg::features {
 brep::NamedShape cut_passage_tools(const brep::NamedShape& part, const std::vector<FeatureTool>& tools,
@@ -104,7 +105,7 @@ brep::NamedShape apply_passage_tools(const brep::NamedShape& part, const std::ve
       const double d = std::min(r.wall, r.ends);
       if (d <= 1e-6 || !r.inside)
         throw FeatureFailure(t.feature + ": not strictly inside the blade (distance to its boundary " +
-                             std::to_string(d) + " mm)");
+                             format_number(d) + " mm)");
       report.min_clearance = std::min(report.min_clearance, d);
       report.wall_clearance = std::min(report.wall_clearance, r.wall);
       for (TopExp_Explorer e(r.solid, TopAbs_SHELL); e.More(); e.Next()) bb.Add(result, e.Current().Reversed());
@@ -119,8 +120,8 @@ brep::NamedShape apply_passage_tools(const brep::NamedShape& part, const std::ve
       tr.passed = ok;
       report.voids.push_back(tr);
       if (!ok)
-        throw FeatureFailure(t.feature + ": as a void it removes " + std::to_string(r.removed) + " mm^3, expected " +
-                             std::to_string(t.expected_volume) + " mm^3");
+        throw FeatureFailure(t.feature + ": as a void it removes " + format_number(r.removed) + " mm^3, expected " +
+                             format_number(t.expected_volume) + " mm^3");
     }
     current.shape = result;
     for (const FeatureTool& t : interior)

@@ -10,6 +10,7 @@
 #include "features/radial_passages.hpp"
 #include "features/wall_features.hpp"
 #include "src/core/background.hpp"
+#include "src/core/format.hpp"
 
 namespace cg::features {
 
@@ -111,8 +112,8 @@ PassagesResult build_passages(const blade::BladeModel& model, const brep::NamedS
   std::string failed;
   for (const auto& t : out.report.thickness)
     if (!t.passed)
-      failed += (failed.empty() ? "" : "; ") + t.feature + " measures " + std::to_string(t.min) + " mm, configured " +
-                std::to_string(t.configured) + " mm";
+      failed += (failed.empty() ? "" : "; ") + t.feature + " measures " + format_number(t.min) + " mm, configured " +
+                format_number(t.configured) + " mm";
   if (!out.report.all_chambers_fed)
     failed += (failed.empty() ? "" : "; ") + std::to_string(out.report.closed_cavities) + " closed cavities (no inlet)";
   if (!failed.empty()) throw FeatureFailure("design checks of the cooling passages failed: " + failed);

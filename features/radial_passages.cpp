@@ -8,13 +8,12 @@
 #include <sstream>
 
 #include "features/face_names.hpp"
-#include "src/blade/format.hpp"
+#include "src/core/format.hpp"
 #include "src/blade/blade_coordinates.hpp"
 
 namespace cg::features {
 namespace {
 
-using blade::detail::fmt;
 constexpr double kPi = 3.14159265358979323846;
 }  // namespace
 
@@ -40,9 +39,9 @@ RadialPassageBuild build_radial_passages(const blade::BladeModel& model,
       const double d = loc.found ? loc.coordinate.depth : -HUGE_VAL;
       if (!(d > r))
         throw PassageInputError(field + ".position", "radial passage " + std::to_string(k + 1) + " (diameter " +
-                                                         fmt(p.diameter) + " mm at [" + fmt(p.position.x()) + ", " +
-                                                         fmt(p.position.y()) + "] mm) breaks through the wall at span " +
-                                                         fmt(s) + ": its axis is " + fmt(d) + " mm inside the wall");
+                                                         format_number(p.diameter) + " mm at [" + format_number(p.position.x()) + ", " +
+                                                         format_number(p.position.y()) + "] mm) breaks through the wall at span " +
+                                                         format_number(s) + ": its axis is " + format_number(d) + " mm inside the wall");
       wall = std::min(wall, d - r);
     }
     for (std::size_t j = 0; j < k; ++j)

@@ -12,7 +12,7 @@
 #include <sstream>
 
 #include "adaptors/occt_convert.hpp"
-#include "src/blade/format.hpp"
+#include "src/core/format.hpp"
 #include "src/algo/project_point_surface.hpp"
 #include "src/core/error.hpp"
 #include "src/core/newton.hpp"
@@ -22,7 +22,6 @@
 namespace cg::features {
 namespace {
 
-using blade::detail::fmt;
 
 using Vec3 = Eigen::Vector3d;
 constexpr double kPi = 3.14159265358979323846;
@@ -160,10 +159,10 @@ class TubeBuilder {
     const double far_side = up ? lo : hi, near_side = up ? hi : lo;
     const double f_far = f(far_side), f_near = f(near_side);
     if (f_far <= 0)
-      throw InvalidGeometry("rib " + std::to_string(index_) + ": the turnaround gap " + fmt(e.gap) +
+      throw InvalidGeometry("rib " + std::to_string(index_) + ": the turnaround gap " + format_number(e.gap) +
                             " mm leaves no rib (the end wall is closer than the gap even at the rib's other end)");
     if (f_near >= 0)
-      throw InvalidGeometry("rib " + std::to_string(index_) + ": cannot place the turnaround end " + fmt(e.gap) +
+      throw InvalidGeometry("rib " + std::to_string(index_) + ": cannot place the turnaround end " + format_number(e.gap) +
                             " mm from its end wall within the blade");
     // f falls from the far side to the near side; to 1e-14 of the span range (~1e-12 mm).
     return newton::solve_bracketed_secant(f, far_side, near_side, f_far, f_near, 1e-14 * std::abs(hi - lo));
@@ -271,8 +270,8 @@ RibTube build_rib_tube(const blade::BladeCoordinates& coords, const blade::Thick
     const TurnaroundDefinition& t = *rib.turnaround;
     require(t.gap > 0, who + ": turnaround gap must be > 0 mm");
     require(t.tip_radius > 0 && t.tip_radius <= 0.5 * rib.thickness * (1 + 1e-12),
-            who + ": tip radius must be in (0, thickness / 2 = " + fmt(0.5 * rib.thickness) + "] mm, got " +
-                fmt(t.tip_radius));
+            who + ": tip radius must be in (0, thickness / 2 = " + format_number(0.5 * rib.thickness) + "] mm, got " +
+                format_number(t.tip_radius));
     EndSpec& e = t.end == SpanEnd::Tip ? tip : hub;
     e.kind = EndKind::Turnaround;
     e.radius = std::min(t.tip_radius, 0.5 * rib.thickness);
@@ -322,8 +321,8 @@ RibTube build_rib_tube(const blade::BladeCoordinates& coords, const blade::Thick
       out.max_station_error = worst;
       if (worst > tolerance && n < 49) continue;
       if (worst > tolerance)
-        throw AlgorithmFailure(who + ": the skinned rib surfaces stay " + fmt(worst) + " mm from the exact rib (tolerance " +
-                               fmt(tolerance) + " mm)");
+        throw AlgorithmFailure(who + ": the skinned rib surfaces stay " + format_number(worst) + " mm from the exact rib (tolerance " +
+                               format_number(tolerance) + " mm)");
       // The open ends must lie outside the core: farther than t from no wall point, i.e. within the wall.
       for (double a : {st.front(), st.back()}) {
         const TubeBuilder::Profile e = tb.profile(a);

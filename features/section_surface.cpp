@@ -11,6 +11,7 @@
 
 #include "adaptors/occt_convert.hpp"
 #include "src/core/error.hpp"
+#include "src/core/format.hpp"
 
 namespace cg::features {
 namespace {
@@ -25,7 +26,7 @@ constexpr int kSamples = 512;  // streamline samples: foot search start, area fu
 std::vector<SpanSurface> span_surfaces(const blade::BladeModel& model, const std::vector<double>& spans) {
   std::vector<SpanSurface> out;
   for (double s : spans) {
-    if (!(s >= 0 && s <= 1)) throw InvalidGeometry("section span must be in [0, 1], got " + std::to_string(s));
+    if (!(s >= 0 && s <= 1)) throw InvalidGeometry("section span must be in [0, 1], got " + format_number(s));
     SpanSurface ss;
     ss.span = s;
     if (model.trim.straight) {

@@ -16,6 +16,7 @@
 
 #include "features/verified_boolean.hpp"
 #include "src/core/newton.hpp"
+#include "src/core/format.hpp"
 
 namespace cg::features {
 namespace {
@@ -337,8 +338,8 @@ class FaceSection {
   const SectionFaceVertex& vertex(int v) const { return out_.vertices[static_cast<std::size_t>(v)]; }
 
   [[noreturn]] void fail(const std::string& why, const Vec3& p) const {
-    throw FeatureFailure("section at span " + std::to_string(s_.surface().span) + ": the curve on face " + nf_.name +
-                         " from (" + std::to_string(p.x()) + ", " + std::to_string(p.y()) + ", " + std::to_string(p.z()) +
+    throw FeatureFailure("section at span " + format_number(s_.surface().span) + ": the curve on face " + nf_.name +
+                         " from (" + format_number(p.x()) + ", " + format_number(p.y()) + ", " + format_number(p.z()) +
                          ") cannot be followed: " + why);
   }
 

@@ -9,6 +9,7 @@
 #include "features/section_trace.hpp"
 #include "features/verified_boolean.hpp"
 #include "src/core/parallel.hpp"
+#include "src/core/format.hpp"
 
 namespace cg::features {
 namespace {
@@ -178,8 +179,8 @@ class BodySection {
           }
         if (next < 0) {
           const Vec3 q = trace_.crossings[static_cast<std::size_t>(cur)].point;
-          throw FeatureFailure("section at span " + std::to_string(s_.surface().span) + ": a section loop does not close at (" +
-                               std::to_string(q.x()) + ", " + std::to_string(q.y()) + ", " + std::to_string(q.z()) +
+          throw FeatureFailure("section at span " + format_number(s_.surface().span) + ": a section loop does not close at (" +
+                               format_number(q.x()) + ", " + format_number(q.y()) + ", " + format_number(q.z()) +
                                ") after face " + face_name(l.steps.back().piece));
         }
         used[static_cast<std::size_t>(next)] = 1;

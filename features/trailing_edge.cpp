@@ -13,14 +13,13 @@
 
 #include "features/face_names.hpp"
 #include "features/ruled_block.hpp"
-#include "src/blade/format.hpp"
+#include "src/core/format.hpp"
 #include "src/algo/segment_distance.hpp"
 #include "src/core/newton.hpp"
 
 namespace cg::features {
 namespace {
 
-using blade::detail::fmt;
 using Vec3 = Eigen::Vector3d;
 constexpr double kPi = 3.14159265358979323846;
 // Gauss cells per direction and span between breaks: the integrands are smooth between the breaks
@@ -47,7 +46,7 @@ TeFrame te_frame(const blade::BladeCoordinates& coords, const CoreDefinition& de
   const TrailingEdgeDefinition& te = *def.trailing_edge;
   const blade::InnerWallSection cr = blade::inner_wall_crease(coords, def.wall_thickness, s);
   if (!cr.trimmed)
-    throw PassageInputError(field("type"), "the inner wall rounds the trailing edge at span " + fmt(s) +
+    throw PassageInputError(field("type"), "the inner wall rounds the trailing edge at span " + format_number(s) +
                                                " (TE radius >= wall thickness): the last chamber has no TE end to "
                                                "eject from");
   TeFrame f;
@@ -176,15 +175,15 @@ void check_centreline_widths(const TrailingEdgeDefinition& te, const std::string
   const double w = te.slot_width;
   if (!(w_out > 0))
     throw PassageInputError(field("land_taper_deg"), name + ": the lands' taper closes the slot before it leaves the "
-                                                             "blade at span " + fmt(s) + " (width " + fmt(w_out) +
+                                                             "blade at span " + format_number(s) + " (width " + format_number(w_out) +
                                                              " mm there); must be < " +
-                                                             fmt(std::atan(w / (2 * x_out)) * 180 / kPi) + " deg here");
+                                                             format_number(std::atan(w / (2 * x_out)) * 180 / kPi) + " deg here");
   if (count > 1 && !(w_in < pitch - 0.05))
     throw PassageInputError(field("land_taper_deg"),
-                            name + ": with the taper the slots' inlets in the chamber (" + fmt(-x_in) +
-                                " mm upstream of the crease, " + fmt(w_in) + " mm wide) touch their neighbours at span " +
-                                fmt(s) + "; must be < " +
-                                fmt(std::atan((pitch - 0.05 - w) / (2 * -x_in)) * 180 / kPi) + " deg here");
+                            name + ": with the taper the slots' inlets in the chamber (" + format_number(-x_in) +
+                                " mm upstream of the crease, " + format_number(w_in) + " mm wide) touch their neighbours at span " +
+                                format_number(s) + "; must be < " +
+                                format_number(std::atan((pitch - 0.05 - w) / (2 * -x_in)) * 180 / kPi) + " deg here");
 }
 
 }  // namespace
@@ -194,44 +193,44 @@ void check_trailing_edge_definition(const CoreDefinition& def) {
   const TrailingEdgeDefinition& te = *def.trailing_edge;
   auto in_range = [](double v, double lo, double hi, const std::string& name, const char* unit) {
     if (!(v > lo && v <= hi))
-      throw PassageInputError(field(name), "must be in (" + fmt(lo) + ", " + fmt(hi) + "] " + unit + ", got " + fmt(v));
+      throw PassageInputError(field(name), "must be in (" + format_number(lo) + ", " + format_number(hi) + "] " + unit + ", got " + format_number(v));
   };
   in_range(te.slot_height, 0, 10, "slot_height", "mm");
   in_range(te.slot_width, 0, 50, "slot_width", "mm");
   if (te.pitch > 0) {
     if (!(te.pitch > te.slot_width))
-      throw PassageInputError(field("pitch"), "slot pitch must be > slot_width = " + fmt(te.slot_width) +
-                                                  " mm (the lands between the slots need width), got " + fmt(te.pitch));
+      throw PassageInputError(field("pitch"), "slot pitch must be > slot_width = " + format_number(te.slot_width) +
+                                                  " mm (the lands between the slots need width), got " + format_number(te.pitch));
   } else if (te.count < 1) {
     throw PassageInputError(field("count"), "give the slot pitch or a count >= 1");
   }
   if (!(te.span_margin >= 0 && te.span_margin <= 50))
-    throw PassageInputError(field("span_margin"), "must be in [0, 50] mm, got " + fmt(te.span_margin));
+    throw PassageInputError(field("span_margin"), "must be in [0, 50] mm, got " + format_number(te.span_margin));
   if (!(te.land_taper_deg >= 0 && te.land_taper_deg < 45))
-    throw PassageInputError(field("land_taper_deg"), "must be in [0, 45) deg, got " + fmt(te.land_taper_deg));
+    throw PassageInputError(field("land_taper_deg"), "must be in [0, 45) deg, got " + format_number(te.land_taper_deg));
   if (te.type == TrailingEdgeType::PressureSideCutback) {
     in_range(te.lip_thickness, 0, 10, "lip_thickness", "mm");
     in_range(te.cutback_length, 0, 50, "cutback_length", "mm");
     const double w_te = te.slot_width - 2 * (te.cutback_length + 1.0) * std::tan(te.land_taper_deg * kPi / 180);
     if (!(w_te > 0))
       throw PassageInputError(field("land_taper_deg"),
-                              "the lands' taper closes the slots before the TE (slot width there " + fmt(w_te) +
+                              "the lands' taper closes the slots before the TE (slot width there " + format_number(w_te) +
                                   " mm): must be < " +
-                                  fmt(std::atan(te.slot_width / (2 * (te.cutback_length + 1.0))) * 180 / kPi) + " deg");
+                                  format_number(std::atan(te.slot_width / (2 * (te.cutback_length + 1.0))) * 180 / kPi) + " deg");
   }
   if (te.pin_fins) {
     const PinFinDefinition& p = *te.pin_fins;
     in_range(p.diameter, 0, 10, "pin_fins.diameter", "mm");
     if (!(p.spanwise_pitch > p.diameter))
-      throw PassageInputError(field("pin_fins.spanwise_pitch"), "must be > diameter = " + fmt(p.diameter) + " mm, got " +
-                                                                    fmt(p.spanwise_pitch));
+      throw PassageInputError(field("pin_fins.spanwise_pitch"), "must be > diameter = " + format_number(p.diameter) + " mm, got " +
+                                                                    format_number(p.spanwise_pitch));
     if (!(p.streamwise_pitch > p.diameter))
-      throw PassageInputError(field("pin_fins.streamwise_pitch"), "must be > diameter = " + fmt(p.diameter) +
-                                                                      " mm, got " + fmt(p.streamwise_pitch));
+      throw PassageInputError(field("pin_fins.streamwise_pitch"), "must be > diameter = " + format_number(p.diameter) +
+                                                                      " mm, got " + format_number(p.streamwise_pitch));
     if (p.rows < 1 || p.rows > 20)
       throw PassageInputError(field("pin_fins.rows"), "must be in [1, 20], got " + std::to_string(p.rows));
     if (!(p.slot_gap >= 0 && p.slot_gap <= 20))
-      throw PassageInputError(field("pin_fins.slot_gap"), "must be in [0, 20] mm, got " + fmt(p.slot_gap));
+      throw PassageInputError(field("pin_fins.slot_gap"), "must be in [0, 20] mm, got " + format_number(p.slot_gap));
   }
 }
 
@@ -251,7 +250,7 @@ TrailingEdgeBuild build_trailing_edge(const blade::BladeModel& model, const Core
   // Slot positions.
   const double lo = 0.5 * te.slot_width, hi = line.length() - 0.5 * te.slot_width;
   if (hi < lo)
-    throw PassageInputError(field("span_margin"), "no slot fits between the end walls (" + fmt(line.length()) +
+    throw PassageInputError(field("span_margin"), "no slot fits between the end walls (" + format_number(line.length()) +
                                                       " mm along the chamber's TE end)");
   double pitch = te.pitch;
   int count = te.count;
@@ -260,8 +259,8 @@ TrailingEdgeBuild build_trailing_edge(const blade::BladeModel& model, const Core
   } else {
     pitch = count > 1 ? (hi - lo) / (count - 1) : 0.0;
     if (count > 1 && !(pitch > te.slot_width))
-      throw PassageInputError(field("count"), std::to_string(count) + " slots give a pitch of " + fmt(pitch) +
-                                                  " mm, not more than slot_width " + fmt(te.slot_width) +
+      throw PassageInputError(field("count"), std::to_string(count) + " slots give a pitch of " + format_number(pitch) +
+                                                  " mm, not more than slot_width " + format_number(te.slot_width) +
                                                   " mm: at most " +
                                                   std::to_string(static_cast<int>(std::floor((hi - lo) / te.slot_width))) +
                                                   " slots fit");
@@ -289,8 +288,8 @@ TrailingEdgeBuild build_trailing_edge(const blade::BladeModel& model, const Core
       info.x_lip = f.te_x - te.cutback_length;
       if (!(info.x_lip > f.crease_x + 0.1))
         throw PassageInputError(field("cutback_length"),
-                                "must be < " + fmt(f.te_x - f.crease_x - 0.1) + " mm at span " + fmt(s) +
-                                    " (the lip must lie downstream of the last chamber's end), got " + fmt(te.cutback_length));
+                                "must be < " + format_number(f.te_x - f.crease_x - 0.1) + " mm at span " + format_number(s) +
+                                    " (the lip must lie downstream of the last chamber's end), got " + format_number(te.cutback_length));
       const Across b = across(lines, f, info.x_lip, 0.0, true);
       if (!b.ok) throw FeatureFailure(name + ": cannot find the blade's pressure side at the lip");
       info.floor_y = b.hi - te.lip_thickness - te.slot_height;
@@ -300,9 +299,9 @@ TrailingEdgeBuild build_trailing_edge(const blade::BladeModel& model, const Core
         const Across c = across(lines, f, x, 0.0, true);
         if (!c.ok || info.floor_y - c.lo < 0.1)
           throw PassageInputError(field("slot_height"),
-                                  name + ": slot_height + lip_thickness leave " + fmt(c.ok ? info.floor_y - c.lo : 0.0) +
-                                      " mm of suction-side wall under the cutback at span " + fmt(s) +
-                                      " (at least 0.1 mm); must be <= " + fmt(b.hi - b.lo - 0.1) + " mm together here");
+                                  name + ": slot_height + lip_thickness leave " + format_number(c.ok ? info.floor_y - c.lo : 0.0) +
+                                      " mm of suction-side wall under the cutback at span " + format_number(s) +
+                                      " (at least 0.1 mm); must be <= " + format_number(b.hi - b.lo - 0.1) + " mm together here");
       }
     } else {
       info.x_lip = f.te_x;
@@ -319,9 +318,9 @@ TrailingEdgeBuild build_trailing_edge(const blade::BladeModel& model, const Core
       }
       if (!(te.slot_height <= h_max))
         throw PassageInputError(field("slot_height"), name + ": the slot leaves less than 0.1 mm of wall on a side between "
-                                                             "the chamber's end and the TE at span " + fmt(s) +
-                                                             "; must be <= " + fmt(std::max(h_max, 0.0)) +
-                                                             " mm here, got " + fmt(te.slot_height));
+                                                             "the chamber's end and the TE at span " + format_number(s) +
+                                                             "; must be <= " + format_number(std::max(h_max, 0.0)) +
+                                                             " mm here, got " + format_number(te.slot_height));
     }
     const double y0 = info.floor_y, y1 = y0 + te.slot_height, h = te.slot_height;
     // Centreline: each land side turns by land_taper_deg from the crease (x = 0, slot width w) on, so
@@ -329,9 +328,9 @@ TrailingEdgeBuild build_trailing_edge(const blade::BladeModel& model, const Core
     const double slot_taper = cutback ? 0.0 : taper;
     const Inlet in = inlet_station(lines, f, f.crease_x, y0, h, w, slot_taper, cutback);
     if (std::isnan(in.x))
-      throw PassageInputError(field("slot_height"), name + " does not fit into the last chamber at span " + fmt(s) +
-                                                         ": no station where the chamber holds its inlet (" + fmt(h) +
-                                                         " x " + fmt(w) + " mm, 0.05 mm clear)");
+      throw PassageInputError(field("slot_height"), name + " does not fit into the last chamber at span " + format_number(s) +
+                                                         ": no station where the chamber holds its inlet (" + format_number(h) +
+                                                         " x " + format_number(w) + " mm, 0.05 mm clear)");
     info.x_inlet = in.x;
     inlet_x_min = std::min(inlet_x_min, in.x);
     // Channel: from the inlet face in the chamber (centred in it for a cutback) straight to the slot's
@@ -351,7 +350,7 @@ TrailingEdgeBuild build_trailing_edge(const blade::BladeModel& model, const Core
                                              cutback ? Region::Material : Region::Outside,
                                              {kCellsChannel, kCellsChannel, {a_crease}, true});
     if (!vc.ok)
-      throw PassageInputError(field("slot_height"), name + " at span " + fmt(s) + " does not run from the chamber through "
+      throw PassageInputError(field("slot_height"), name + " at span " + format_number(s) + " does not run from the chamber through "
                                                          "the wall as placed (a line of it leaves the blade early)");
     brep::NamedShape tool = ruled_block_solid(channel, name);
     double expected = vc.in_region, tool_volume = vc.volume;
@@ -442,11 +441,11 @@ TrailingEdgeBuild build_trailing_edge(const blade::BladeModel& model, const Core
           if (segment_distance(f.at(x, -20.0, 0.0), f.at(x, 20.0, 0.0), ra, rb) < need)
             throw PassageInputError(field("pin_fins.rows"),
                                     name + " (row " + std::to_string(row + 1) + ") reaches rib " +
-                                        std::to_string(def.ribs.size()) + " and its fillet at span " + fmt(s) +
+                                        std::to_string(def.ribs.size()) + " and its fillet at span " + format_number(s) +
                                         ": fewer rows, a smaller streamwise_pitch or slot_gap");
         }
         const Across c = across(lines, f, x, 0.0, false);
-        if (!c.ok) throw PassageInputError(field("pin_fins.rows"), name + ": no chamber across its axis at span " + fmt(s));
+        if (!c.ok) throw PassageInputError(field("pin_fins.rows"), name + ": no chamber across its axis at span " + format_number(s));
         // Axis: across the chamber, the bisector of the two walls' normals (the walls of the TE chamber
         // converge, so a pin along y would meet the pressure-side wall obliquely).
         const Vec3 mid = f.at(x, 0.5 * (c.lo + c.hi), 0.0);
@@ -455,7 +454,7 @@ TrailingEdgeBuild build_trailing_edge(const blade::BladeModel& model, const Core
         if (n2.dot(f.y) < 0) n2 = -n2;
         const Vec3 axis = (n1 + n2).normalized();
         const std::vector<double> hits = lines.inner_crossings(mid - 8.0 * axis, mid + 8.0 * axis);
-        if (hits.size() != 2) throw PassageInputError(field("pin_fins.rows"), name + ": no chamber across its axis at span " + fmt(s));
+        if (hits.size() != 2) throw PassageInputError(field("pin_fins.rows"), name + ": no chamber across its axis at span " + format_number(s));
         const double lo_a = -8.0 + 16.0 * hits[0], hi_a = -8.0 + 16.0 * hits[1];
         const double t = def.wall_thickness.min_value();
         const Vec3 base = mid + (lo_a - 0.5 * t) * axis;
@@ -467,7 +466,7 @@ TrailingEdgeBuild build_trailing_edge(const blade::BladeModel& model, const Core
           const double frac = total(lines.intervals(base + off, base + off + length * axis, Region::Material,
                                                     Region::Chamber, &end));
           if (end != Region::Material)
-            throw PassageInputError(field("pin_fins.diameter"), name + " at span " + fmt(s) + " does not end inside "
+            throw PassageInputError(field("pin_fins.diameter"), name + " at span " + format_number(s) + " does not end inside "
                                                                        "both walls (diameter too large for the chamber "
                                                                        "there)");
           return frac * length;

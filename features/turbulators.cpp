@@ -5,14 +5,13 @@
 #include <cmath>
 
 #include "features/ruled_block.hpp"
-#include "src/blade/format.hpp"
+#include "src/core/format.hpp"
 #include "src/fit/interpolate.hpp"
 #include "src/fit/skin.hpp"
 
 namespace cg::features {
 namespace {
 
-using blade::detail::fmt;
 using Vec3 = Eigen::Vector3d;
 constexpr double kPi = 3.14159265358979323846;
 
@@ -81,22 +80,22 @@ void check_turbulator_definitions(const CoreDefinition& def) {
     seen[static_cast<std::size_t>(t.chamber)] = true;
     auto positive = [&](double v, const char* name, double hi) {
       if (!(v > 0 && v <= hi))
-        throw PassageInputError(field(i, name), "must be in (0, " + fmt(hi) + "] mm, got " + fmt(v));
+        throw PassageInputError(field(i, name), "must be in (0, " + format_number(hi) + "] mm, got " + format_number(v));
     };
     positive(t.height, "height", 5);
     positive(t.width, "width", 10);
     positive(t.pitch, "pitch", 100);
     if (!(t.angle_deg >= 30 && t.angle_deg <= 90))
-      throw PassageInputError(field(i, "angle_deg"), "must be in [30, 90] deg, got " + fmt(t.angle_deg));
+      throw PassageInputError(field(i, "angle_deg"), "must be in [30, 90] deg, got " + format_number(t.angle_deg));
     if (!(t.end_gap >= 0 && t.end_gap <= 10))
-      throw PassageInputError(field(i, "end_gap"), "must be in [0, 10] mm, got " + fmt(t.end_gap));
+      throw PassageInputError(field(i, "end_gap"), "must be in [0, 10] mm, got " + format_number(t.end_gap));
     if (!(t.span_margin >= 0 && t.span_margin <= 50))
-      throw PassageInputError(field(i, "span_margin"), "must be in [0, 50] mm, got " + fmt(t.span_margin));
+      throw PassageInputError(field(i, "span_margin"), "must be in [0, 50] mm, got " + format_number(t.span_margin));
     // Along the passage axis a turbulator covers width / sin(angle): neighbours must not touch.
     const double along = t.width / std::sin(t.angle_deg * kPi / 180);
     if (!(t.pitch > along))
-      throw PassageInputError(field(i, "pitch"), "must be > width / sin(angle) = " + fmt(along) +
-                                                     " mm (neighbouring turbulators would touch), got " + fmt(t.pitch));
+      throw PassageInputError(field(i, "pitch"), "must be > width / sin(angle) = " + format_number(along) +
+                                                     " mm (neighbouring turbulators would touch), got " + format_number(t.pitch));
   }
 }
 
@@ -159,14 +158,14 @@ TurbulatorBuild build_turbulators(const blade::BladeModel& model, const CoreDefi
     if (!(length_mid > td.width))
       throw PassageInputError(field(i, "end_gap"), "no turbulator fits across chamber " + std::to_string(td.chamber) +
                                                        ": the wall between the rib fillets is " +
-                                                       fmt(wall_width - clear_a - clear_b + 2 * td.end_gap) +
+                                                       format_number(wall_width - clear_a - clear_b + 2 * td.end_gap) +
                                                        " mm wide at mid-span");
     const double half_extent = 0.5 * length_mid * std::abs(cot_a) + 0.5 * td.width / sin_a;
     const double available = len[ns] - 2 * half_extent;
     if (available < 0)
       throw PassageInputError(field(i, "span_margin"),
                               "no turbulator fits in chamber " + std::to_string(td.chamber) + " between the end walls: " +
-                                  fmt(len[ns]) + " mm of straight passage, one turbulator needs " + fmt(2 * half_extent) + " mm");
+                                  format_number(len[ns]) + " mm of straight passage, one turbulator needs " + format_number(2 * half_extent) + " mm");
     const int n = static_cast<int>(std::floor(available / td.pitch + 1e-9)) + 1;
     const double y0 = half_extent + 0.5 * (available - (n - 1) * td.pitch);
     std::vector<double> spans_inline, spans_shifted;
@@ -220,9 +219,9 @@ TurbulatorBuild build_turbulators(const blade::BladeModel& model, const CoreDefi
         };
         const double xa = end_at(ra, ra_pt), xb = end_at(rb, rb_pt);
         if (std::isnan(xa) || std::isnan(xb))
-          throw PassageInputError(field(i, "end_gap"), name + ": no room between the rib fillets at span " + fmt(s));
+          throw PassageInputError(field(i, "end_gap"), name + ": no room between the rib fillets at span " + format_number(s));
         if (!(xb - xa > td.width))
-          throw PassageInputError(field(i, "end_gap"), name + ": no room between the rib fillets at span " + fmt(s));
+          throw PassageInputError(field(i, "end_gap"), name + ": no room between the rib fillets at span " + format_number(s));
         const double xm = 0.5 * (xa + xb);
         // 13 x 3 grid: top at depth t + e, bottom at depth t / 2.
         const int nx = 13, ny = 3;
@@ -256,10 +255,10 @@ TurbulatorBuild build_turbulators(const blade::BladeModel& model, const CoreDefi
           const double clear = hits.empty() ? 0.0 : 50.0 * hits.front();
           if (hits.empty() || clear < other_height + 0.1)
             throw PassageInputError(field(i, "height"),
-                                    name + " is taller than its chamber at span " + fmt(s) + ": " + fmt(clear + td.height) +
+                                    name + " is taller than its chamber at span " + format_number(s) + ": " + format_number(clear + td.height) +
                                         " mm from the wall to the opposite wall, the turbulators need " +
-                                        fmt(td.height + other_height) + " mm and 0.1 mm clear; height must be < " +
-                                        fmt(0.5 * (clear + td.height - 0.1)) + " mm here");
+                                        format_number(td.height + other_height) + " mm and 0.1 mm clear; height must be < " +
+                                        format_number(0.5 * (clear + td.height - 0.1)) + " mm here");
         }
         const BlockIntegral vi = integrate_block(block, lines, Region::Material, Region::Chamber, Region::Chamber);
         if (!vi.ok)

@@ -20,6 +20,7 @@
 #include "features/boolean_run.hpp"
 #include "features/boolean_volume.hpp"
 #include "src/brep/occt_progress.hpp"
+#include "src/core/format.hpp"
 
 namespace cg::features {
 namespace {
@@ -27,12 +28,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-
-std::string fmt(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.9g", v);
-  return b;
-}
 
 int count_solids(const TopoDS_Shape& s) {
   TopTools_IndexedMapOfShape m;
@@ -194,7 +189,7 @@ class Engine {
     const VolumeMeasure vm = measure_tool_volumes(run, part.shape, shapes, op_, opt_.parallel);
     report_.seconds_measure += since(t);
     if (a.failure.empty() && vm.lost_pieces > 0)
-      a.failure = std::to_string(vm.lost_pieces) + " pieces of the part (" + fmt(vm.lost_area) +
+      a.failure = std::to_string(vm.lost_pieces) + " pieces of the part (" + format_number(vm.lost_area) +
                   " mm^2) dropped outside every tool";
     if (a.failure.empty() && vm.ambiguous_pieces > 0)
       a.failure = std::to_string(vm.ambiguous_pieces) + " dropped pieces inside more than one tool";
@@ -238,8 +233,8 @@ class Engine {
     for (int id : a.suspects) {
       const Unit& u = units[static_cast<std::size_t>(id)];
       const auto k = static_cast<std::size_t>(std::find(ids.begin(), ids.end(), id) - ids.begin());
-      what += (what.empty() ? "" : "; ") + u.label + ": measured " + fmt(a.volumes[k].volume) + " mm^3, expected " +
-              fmt(u.expected) + " mm^3 (closure " + fmt(a.volumes[k].closure) + ", B-rep uncertainty " + fmt(a.volumes[k].uncertainty) + ")";
+      what += (what.empty() ? "" : "; ") + u.label + ": measured " + format_number(a.volumes[k].volume) + " mm^3, expected " +
+              format_number(u.expected) + " mm^3 (closure " + format_number(a.volumes[k].closure) + ", B-rep uncertainty " + format_number(a.volumes[k].uncertainty) + ")";
     }
     report_.warnings.push_back("boolean of " + std::to_string(ids.size()) + " tool(s) rejected: " + what);
   }
@@ -287,8 +282,8 @@ class Engine {
     if (!a.warning.empty()) return a.warning;
     if (std::isnan(expected)) expected = u.expected;
     const std::string verb = op_ == BooleanOperation::Cut ? "removed " : "added ";
-    return verb + fmt(a.volumes.empty() ? 0 : a.volumes.front().volume) + " mm^3 instead of " + fmt(expected) +
-           " mm^3 (closure " + fmt(a.volumes.empty() ? 0 : a.volumes.front().closure) + " mm^3)";
+    return verb + format_number(a.volumes.empty() ? 0 : a.volumes.front().volume) + " mm^3 instead of " + format_number(expected) +
+           " mm^3 (closure " + format_number(a.volumes.empty() ? 0 : a.volumes.front().closure) + " mm^3)";
   }
 
   // Units among `ids` whose (slightly enlarged) box contains each shape; empty when some shape is null

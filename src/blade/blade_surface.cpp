@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "src/blade/format.hpp"
+#include "src/core/format.hpp"
 #include "src/blade/section_family.hpp"
 #include "src/blade/surface_iso.hpp"
 #include "src/blade/wall_fit.hpp"
@@ -14,28 +14,27 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-using detail::fmt;
 
 std::string section_name(std::size_t k) { return "section " + std::to_string(k); }
 
 void validate(const BladeDefinition& def) {
   const BladeOptions& opt = def.options;
   require(opt.overbuild > 0 && opt.overbuild <= 0.5, "blade options: overbuild must be in (0, 0.5] of span, got " +
-                                                         fmt(opt.overbuild));
+                                                         format_number(opt.overbuild));
   require(opt.chordwise_samples >= 8 && opt.chordwise_samples <= 2000,
           "blade options: chordwise_samples must be in [8, 2000], got " + std::to_string(opt.chordwise_samples));
   require(opt.surface_tolerance >= 1e-5 && opt.surface_tolerance <= 0.1,
-          "blade options: surface_tolerance must be in [1e-5, 0.1] mm, got " + fmt(opt.surface_tolerance));
+          "blade options: surface_tolerance must be in [1e-5, 0.1] mm, got " + format_number(opt.surface_tolerance));
   require(opt.seam >= -1 && opt.seam <= 1, "blade options: seam must be a chordwise coordinate in [-1, 1], got " +
-                                               fmt(opt.seam));
+                                               format_number(opt.seam));
   require(!def.sections.empty(), "blade: at least one section is needed");
   for (std::size_t k = 0; k < def.sections.size(); ++k) {
     const SectionPlacement& p = def.sections[k].placement;
-    require(p.span >= 0 && p.span <= 1, section_name(k) + ": span must be in [0, 1], got " + fmt(p.span));
+    require(p.span >= 0 && p.span <= 1, section_name(k) + ": span must be in [0, 1], got " + format_number(p.span));
     require(k == 0 || p.span > def.sections[k - 1].placement.span,
-            section_name(k) + ": section spans must increase strictly, got " + fmt(p.span) + " after " +
-                fmt(def.sections[k - 1].placement.span));
-    require(p.scale > 0, section_name(k) + ": scale must be > 0, got " + fmt(p.scale));
+            section_name(k) + ": section spans must increase strictly, got " + format_number(p.span) + " after " +
+                format_number(def.sections[k - 1].placement.span));
+    require(p.scale > 0, section_name(k) + ": scale must be > 0, got " + format_number(p.scale));
   }
 }
 
@@ -65,7 +64,7 @@ BladeModel build_blade(const BladeDefinition& def) {
   double span_mm = 0;
   if (straight) {
     span_mm = std::get<StraightFlowPath>(def.flow_path).span;
-    require(span_mm > 0, "straight vane: span must be > 0 mm, got " + fmt(span_mm));
+    require(span_mm > 0, "straight vane: span must be > 0 mm, got " + format_number(span_mm));
     model.trim.straight = true;
     model.trim.hub_z = 0;
     model.trim.casing_z = span_mm;

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "src/core/error.hpp"
+#include "src/core/format.hpp"
 
 namespace cg::blade {
 
@@ -36,7 +37,7 @@ double ChordwiseMap<Dim, Table>::param_at_length(double s) const {
 template <int Dim, class Table>
 double ChordwiseMap<Dim, Table>::param_at(double c) const {
   if (!(c >= -1 && c <= 1))  // (message built only on failure: hot path)
-    throw InvalidGeometry("chordwise coordinate " + std::to_string(c) + " is outside [-1, 1]");
+    throw InvalidGeometry("chordwise coordinate " + format_number(c) + " is outside [-1, 1]");
   if (c == 0) return le_;
   if (c == 1 || c == -1) return te_;  // exactly the TE, not its arc-length image
   if (c > 0) return param_at_length(at_le_ + c * suction_);

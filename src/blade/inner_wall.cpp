@@ -7,7 +7,7 @@
 #include <memory>
 #include <optional>
 
-#include "src/blade/format.hpp"
+#include "src/core/format.hpp"
 #include "src/core/knots.hpp"
 #include "src/core/parallel.hpp"
 #include "src/fit/approximate.hpp"
@@ -16,7 +16,6 @@
 namespace cg::blade {
 namespace {
 
-using detail::fmt;
 using Vec3 = Eigen::Vector3d;
 constexpr double kPi = 3.14159265358979323846;
 
@@ -60,7 +59,7 @@ double monotone_cubic(const std::vector<double>& x, const std::vector<double>& y
 }
 
 ThicknessField ThicknessField::constant(double thickness) {
-  require(std::isfinite(thickness) && thickness > 0, "wall thickness must be > 0 mm, got " + fmt(thickness));
+  require(std::isfinite(thickness) && thickness > 0, "wall thickness must be > 0 mm, got " + format_number(thickness));
   ThicknessField f;
   f.values_ = {{thickness}};
   f.min_ = f.max_ = thickness;
@@ -83,7 +82,7 @@ ThicknessField ThicknessField::table(std::vector<double> spans, std::vector<doub
     require(values[i].size() == chords.size(), "thickness table: row " + std::to_string(i) + " needs " +
                                                    std::to_string(chords.size()) + " values");
     for (double v : values[i]) {
-      require(std::isfinite(v) && v > 0, "thickness table: values must be > 0 mm, got " + fmt(v));
+      require(std::isfinite(v) && v > 0, "thickness table: values must be > 0 mm, got " + format_number(v));
       f.min_ = std::min(f.min_, v);
       f.max_ = std::max(f.max_, v);
     }
@@ -183,8 +182,8 @@ InnerWallSection inner_wall_crease(const BladeCoordinates& coords, const Thickne
     return out;
   }
   if (hit == 1)
-    throw InnerWallError("inner wall: the wall thickness " + fmt(thickness.at(span, sc[1])) +
-                             " mm leaves no core at span " + fmt(span) + " (the blade is thinner than twice the wall "
+    throw InnerWallError("inner wall: the wall thickness " + format_number(thickness.at(span, sc[1])) +
+                             " mm leaves no core at span " + format_number(span) + " (the blade is thinner than twice the wall "
                              "thickness right behind the leading edge)",
                          span, sc[1]);
   // Newton on F(c_s, c_p, s_p) = I(span, c_s) - I(s_p, c_p) = 0 with central-difference Jacobian.
@@ -219,7 +218,7 @@ InnerWallSection inner_wall_crease(const BladeCoordinates& coords, const Thickne
   }
   if (!converged || cs >= 1.0 || cp <= -1.0 || std::abs(cs - (sc[hit] - 0.5 / n)) > 4.0 / n)
     throw InnerWallError("inner wall: cannot locate where the suction- and pressure-side offsets cross at span " +
-                             fmt(span) + " near chord " + fmt(sc[hit]) + " (residual " + fmt(F.norm()) +
+                             format_number(span) + " near chord " + format_number(sc[hit]) + " (residual " + format_number(F.norm()) +
                              " mm); the wall may be too thick for the trailing-edge region",
                          span, sc[hit]);
   // The pressure side up to the crease must keep its distance from the suction side: otherwise the
@@ -229,9 +228,9 @@ InnerWallSection inner_wall_crease(const BladeCoordinates& coords, const Thickne
     double c_at = 0;
     const double d = polyline_distance(q, suction, sc, c_at);
     if (d < thickness.at(span, pc[k]) * (1 - kCloseMargin))
-      throw InnerWallError("inner wall: the wall thickness exceeds half the blade thickness at span " + fmt(span) +
-                               ", pressure-side chord " + fmt(pc[k]) + " before the trailing-edge crossing at chord " +
-                               fmt(cp) + " (the offsets cross twice)",
+      throw InnerWallError("inner wall: the wall thickness exceeds half the blade thickness at span " + format_number(span) +
+                               ", pressure-side chord " + format_number(pc[k]) + " before the trailing-edge crossing at chord " +
+                               format_number(cp) + " (the offsets cross twice)",
                            span, pc[k]);
   }
   out.trimmed = true;
@@ -288,9 +287,9 @@ class ExactSection {
     for (std::size_t i = 0; i + 1 < samples_.size(); ++i) {
       const Sample &a = samples_[i], &b = samples_[i + 1];
       if ((b.inner - a.inner).dot(b.outer - a.outer) <= 0)
-        throw InnerWallError("inner wall: the wall thickness " + fmt(thickness.at(a.span, a.chord)) +
-                                 " mm exceeds the wall's radius of curvature at span " + fmt(a.span) + ", chord " +
-                                 fmt(a.chord) + " (the offset folds; use a thinner wall there)",
+        throw InnerWallError("inner wall: the wall thickness " + format_number(thickness.at(a.span, a.chord)) +
+                                 " mm exceeds the wall's radius of curvature at span " + format_number(a.span) + ", chord " +
+                                 format_number(a.chord) + " (the offset folds; use a thinner wall there)",
                              a.span, a.chord);
     }
     update();
@@ -344,7 +343,7 @@ class ExactSection {
     params.assign(points.size(), 0.0);
     for (std::size_t i = 1; i < points.size(); ++i) params[i] = params[i - 1] + (points[i] - points[i - 1]).norm();
     const double total = params.back();
-    require(total > 0, "inner wall: degenerate section at span " + fmt(span_));
+    require(total > 0, "inner wall: degenerate section at span " + format_number(span_));
     for (double& p : params) p /= total;
     params.back() = 1.0;
   }
@@ -434,7 +433,7 @@ std::vector<BSplineCurve<3>> fit_sections(const Workers& workers, std::vector<Ex
     knots.insert(knots.end(), insert.begin(), insert.end());
     std::sort(knots.begin(), knots.end());
   }
-  throw AlgorithmFailure("inner wall: the section fit does not reach the tolerance " + fmt(tol) +
+  throw AlgorithmFailure("inner wall: the section fit does not reach the tolerance " + format_number(tol) +
                          " mm after 30 refinements");
 }
 
@@ -482,16 +481,16 @@ BSplineSurface<3> to_periodic_u(const BSplineSurface<3>& S) {
 
 InnerWall build_inner_wall(const BladeModel& model, const ThicknessField& thickness, const InnerWallOptions& options) {
   require(options.tolerance > 0 && std::isfinite(options.tolerance),
-          "inner wall: tolerance must be > 0 mm, got " + fmt(options.tolerance));
+          "inner wall: tolerance must be > 0 mm, got " + format_number(options.tolerance));
   require(thickness.max_value() > 0, "inner wall: the thickness field is empty");
   const Workers workers(model);
   const SpanRange dom = span_domain(model);
   const double ob = std::min(0.0 - dom.lo, dom.hi - 1.0);
   const double lo = std::isnan(options.span_min) ? dom.lo + 0.2 * ob : options.span_min;
   const double hi = std::isnan(options.span_max) ? dom.hi - 0.2 * ob : options.span_max;
-  require(lo >= dom.lo && hi <= dom.hi && hi > lo, "inner wall: span range [" + fmt(lo) + ", " + fmt(hi) +
-                                                       "] must lie inside the blade's [" + fmt(dom.lo) + ", " +
-                                                       fmt(dom.hi) + "]");
+  require(lo >= dom.lo && hi <= dom.hi && hi > lo, "inner wall: span range [" + format_number(lo) + ", " + format_number(hi) +
+                                                       "] must lie inside the blade's [" + format_number(dom.lo) + ", " +
+                                                       format_number(dom.hi) + "]");
   const double tol = options.tolerance;
 
   std::vector<double> spans;
@@ -548,7 +547,7 @@ InnerWall build_inner_wall(const BladeModel& model, const ThicknessField& thickn
       break;
     }
     if (spans.size() + new_spans.size() > 400)
-      throw AlgorithmFailure("inner wall: more than 400 spans needed to reach the tolerance " + fmt(tol) + " mm");
+      throw AlgorithmFailure("inner wall: more than 400 spans needed to reach the tolerance " + format_number(tol) + " mm");
     for (std::size_t k = 0; k < new_spans.size(); ++k) {
       const auto pos = std::upper_bound(spans.begin(), spans.end(), new_spans[k]) - spans.begin();
       spans.insert(spans.begin() + pos, new_spans[k]);

@@ -8,6 +8,7 @@
 #include "src/core/basis.hpp"
 #include "src/core/error.hpp"
 #include "src/core/newton.hpp"
+#include "src/core/format.hpp"
 
 namespace cg::blade {
 
@@ -140,7 +141,7 @@ double IsoArcLength::length_to(double u) const {
   const double a = first(), b = last();
   const double eps = 1e-12 * (b - a);
   if (!(u >= a - eps && u <= b + eps))  // (message built only on failure: hot path)
-    throw InvalidGeometry("parameter " + std::to_string(u) + " outside the curve domain");
+    throw InvalidGeometry("parameter " + format_number(u) + " outside the curve domain");
   u = std::clamp(u, a, b);
   if (u == b) return cumulative_.back();
   const std::size_t c = static_cast<std::size_t>(std::upper_bound(cells_.begin(), cells_.end(), u) - cells_.begin()) - 1;
@@ -151,7 +152,7 @@ double IsoArcLength::length_to(double u) const {
 double IsoArcLength::param_at(double s) const {
   const double L = total();
   if (!(s >= -tol_ && s <= L + tol_))
-    throw InvalidGeometry("arc length " + std::to_string(s) + " outside [0, " + std::to_string(L) + "]");
+    throw InvalidGeometry("arc length " + format_number(s) + " outside [0, " + format_number(L) + "]");
   if (s <= 0) return first();
   if (s >= L) return last();
   std::size_t c =

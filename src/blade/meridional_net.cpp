@@ -9,7 +9,7 @@
 
 #include "src/algo/intersect_curves.hpp"
 #include "src/blade/planar_polyline.hpp"
-#include "src/blade/format.hpp"
+#include "src/core/format.hpp"
 #include "src/core/curve_evaluator.hpp"
 #include "src/core/error.hpp"
 #include "src/fit/interpolate.hpp"
@@ -17,9 +17,8 @@
 namespace cg::blade {
 namespace {
 
-using detail::fmt;
 
-std::string span_name(double span) { return "streamline at span " + fmt(span); }
+std::string span_name(double span) { return "streamline at span " + format_number(span); }
 
 // Smallest radius on the curve, sampled densely per knot span (r is a polynomial of degree p per span;
 // 32 samples per span resolve any dip that matters for the quadrature of dm / r).
@@ -44,7 +43,7 @@ BSplineCurve<2> meridional_curve(const MeridionalPolyline& points, const char* w
 
 Streamline::Streamline(BSplineCurve<2> curve, double span) : curve_(std::move(curve)), span_(span) {
   const double rmin = min_radius(curve_);
-  require(rmin > 0, span_name(span) + ": radius must be > 0 everywhere, minimum is " + fmt(rmin) + " mm");
+  require(rmin > 0, span_name(span) + ": radius must be > 0 everywhere, minimum is " + format_number(rmin) + " mm");
   m_ = detail::CurveIntegral(curve_, curve_.first_param(), curve_.last_param(), detail::Integrand::ArcLength);
   mp_ = detail::CurveIntegral(curve_, curve_.first_param(), curve_.last_param(),
                               detail::Integrand::ArcLengthOverRadius);
@@ -57,16 +56,16 @@ double Streamline::param_at_m_prime(double m_prime) const {
   const double tol = 1e-12 * (1.0 + mp_.total());
   if (!(m_prime >= -tol && m_prime <= mp_.total() + tol))  // (message built only on failure: hot path)
     throw InvalidGeometry(
-          span_name(span_) + ": m' = " + fmt(m_prime) + " is outside the streamline, allowed [0, " +
-              fmt(mp_.total()) + "]");
+          span_name(span_) + ": m' = " + format_number(m_prime) + " is outside the streamline, allowed [0, " +
+              format_number(mp_.total()) + "]");
   return mp_.inverse(curve_, m_prime);
 }
 
 double Streamline::param_at_length(double m) const {
   const double tol = 1e-12 * (1.0 + m_.total());
   if (!(m >= -tol && m <= m_.total() + tol))
-    throw InvalidGeometry(span_name(span_) + ": m = " + fmt(m) +
-                                                  " mm is outside the streamline, allowed [0, " + fmt(m_.total()) + "]");
+    throw InvalidGeometry(span_name(span_) + ": m = " + format_number(m) +
+                                                  " mm is outside the streamline, allowed [0, " + format_number(m_.total()) + "]");
   return m_.inverse(curve_, m);
 }
 
@@ -94,8 +93,8 @@ MeridionalNet::MeridionalNet(const MeridionalNetDefinition& def) : samples_(def.
   double prev = 0;
   for (std::size_t k = 0; k < def.streamlines.size(); ++k) {
     const double s = def.streamline_spans[k];
-    require(s > prev && s < 1, "meridional net: streamline span " + fmt(s) +
-                                   " must lie in (0, 1) and increase strictly (previous " + fmt(prev) + ")");
+    require(s > prev && s < 1, "meridional net: streamline span " + format_number(s) +
+                                   " must lie in (0, 1) and increase strictly (previous " + format_number(prev) + ")");
     const std::string name = span_name(s);
     streamlines_.emplace_back(meridional_curve(def.streamlines[k], name.c_str()), s);
     prev = s;
@@ -136,7 +135,7 @@ MeridionalNet::MeridionalNet(const MeridionalNetDefinition& def) : samples_(def.
   defining_ = detail::SpanSpline(spans);
 
   for (double s : def.interpolated_spans) {
-    require(s > 0 && s < 1, "meridional net: interpolated span " + fmt(s) + " must lie in (0, 1)");
+    require(s > 0 && s < 1, "meridional net: interpolated span " + format_number(s) + " must lie in (0, 1)");
     if (std::any_of(streamlines_.begin(), streamlines_.end(),
                     [&](const Streamline& l) { return std::abs(l.span() - s) <= 1e-12; }))
       continue;

@@ -10,7 +10,7 @@
 #include "src/algo/project_point_curve.hpp"
 #include "src/blade/chordwise.hpp"
 #include "src/blade/edge_arcs.hpp"
-#include "src/blade/format.hpp"
+#include "src/core/format.hpp"
 #include "src/blade/curve_integral.hpp"
 #include "src/blade/leading_edge.hpp"
 #include "src/blade/periodic_seam.hpp"
@@ -74,7 +74,7 @@ SectionProfile with_edge_arcs(SectionProfile s, const std::vector<Eigen::Vector2
         throw InvalidGeometry(what + ": " + E.name + "_radius/" + E.name + "_centre: no " +
                               (E.hint.centre ? "2" : "3") + " consecutive points at the " +
                               (e == 0 ? "leading" : "trailing") + " edge lie on that circle within " +
-                              detail::fmt(detail::kOnCircleTolerance) + " mm");
+                              format_number(detail::kOnCircleTolerance) + " mm");
       continue;
     }
     // The sag due to sparse points alone: the same spline through the run's points moved onto the circle

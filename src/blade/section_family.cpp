@@ -6,7 +6,7 @@
 #include <type_traits>
 
 #include "src/algo/project_point_curve.hpp"
-#include "src/blade/format.hpp"
+#include "src/core/format.hpp"
 #include "src/blade/periodic_seam.hpp"
 #include "src/blade/section_3d.hpp"
 #include "src/core/error.hpp"
@@ -231,10 +231,10 @@ SectionProfile SectionFamily::profile_at(double s) const {
                               blend([&](std::size_t k) { return placements_[k].offset.y(); }));
   SectionProfile raw;
   try {
-    require(pl.scale > 0, "the interpolated scale is " + fmt(pl.scale) + ", must be > 0");
+    require(pl.scale > 0, "the interpolated scale is " + format_number(pl.scale) + ", must be > 0");
     raw = section_from_parameters(d);
   } catch (const InvalidGeometry& e) {
-    throw InvalidGeometry("the section interpolated at span " + fmt(s) + " is invalid (" + e.what() +
+    throw InvalidGeometry("the section interpolated at span " + format_number(s) + " is invalid (" + e.what() +
                           "); make the parameters of neighbouring sections vary more smoothly");
   }
   return place_in_frame(raw, pl, stacking_point(raw, options_.stacking), straight());
@@ -261,7 +261,7 @@ FamilySlice SectionFamily::slice(double s) const {
     // The correction d sin^2(pi t) / sin^2(pi lambda) of blended_point must keep u'(t) increasing.
     const double sl = std::sin(kPi * f.lambda_), d = lambda_le_ - f.lambda_;
     require(f.lambda_ > 0.05 && f.lambda_ < 0.95 && std::abs(d) * kPi < 0.9 * sl * sl,
-            "the sections blended at span " + fmt(s) +
+            "the sections blended at span " + format_number(s) +
                 " differ too much in the length ratio of their pressure and suction sides");
     f.le_ = blended_point(f, u_le_);
     f.te_ = blended_point(f, u_te_);
@@ -299,7 +299,7 @@ Eigen::Vector2d SectionFamily::blended_point(const FamilySlice& f, double u) con
 
 void SectionFamily::place(FamilySlice& f) const {
   const double s = f.span_;
-  const std::string name = "the section at span " + fmt(s);
+  const std::string name = "the section at span " + format_number(s);
   if (!net_) {
     f.z_ = s * span_mm_;
     if (f.curve_) f.exact_3d_ = section_in_plane(*f.curve_, f.z_);
@@ -344,7 +344,7 @@ Eigen::Vector3d FamilySlice::place(const Eigen::Vector2d& q) const {
   try {
     u = line_->param_at_m_prime(mp);
   } catch (const InvalidGeometry& e) {
-    throw InvalidGeometry("the section at span " + detail::fmt(span_) +
+    throw InvalidGeometry("the section at span " + format_number(span_) +
                           " extends beyond its streamline; extend the hub/casing contours upstream or downstream (" +
                           e.what() + ")");
   }

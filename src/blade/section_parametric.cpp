@@ -7,7 +7,7 @@
 #include "src/blade/planar_polyline.hpp"
 #include "src/blade/section.hpp"
 #include "src/core/bezier_curve.hpp"
-#include "src/blade/format.hpp"
+#include "src/core/format.hpp"
 #include "src/core/error.hpp"
 #include "src/fit/interpolate.hpp"
 
@@ -17,7 +17,6 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 double rad(double deg) { return deg * kPi / 180.0; }
 
-using detail::fmt;
 
 // Half-thickness h(t) = L g(t) q(t), g = sqrt(t (1 - t)). q is cubic on each side of the maximum tm:
 // q = q_e + a s + b s^2 + c s^3 with s = t - t_e, t_e = 0 (front) or 1 (rear); q_e fixes the tip radius
@@ -55,24 +54,24 @@ ThicknessPiece thickness_piece(double L, double te, double qe, double tm, double
 
 SectionProfile section_from_parameters(const ParametricSectionDefinition& d) {
   const std::string what = "parametric section";
-  require(d.chord > 0, what + ": chord must be > 0 mm, got " + fmt(d.chord));
+  require(d.chord > 0, what + ": chord must be > 0 mm, got " + format_number(d.chord));
   require(d.max_thickness > 0 && d.max_thickness < d.chord,
-          what + ": max_thickness must be in (0, chord) mm, got " + fmt(d.max_thickness));
+          what + ": max_thickness must be in (0, chord) mm, got " + format_number(d.max_thickness));
   require(d.max_thickness_position >= 0.1 && d.max_thickness_position <= 0.9,
-          what + ": max_thickness_position must be in [0.1, 0.9] of chord, got " + fmt(d.max_thickness_position));
+          what + ": max_thickness_position must be in [0.1, 0.9] of chord, got " + format_number(d.max_thickness_position));
   require(d.le_radius > 0 && d.le_radius <= 0.5 * d.max_thickness,
-          what + ": le_radius must be in (0, max_thickness / 2] mm, got " + fmt(d.le_radius));
+          what + ": le_radius must be in (0, max_thickness / 2] mm, got " + format_number(d.le_radius));
   require(d.te_radius > 0 && d.te_radius <= 0.5 * d.max_thickness,
-          what + ": te_radius must be in (0, max_thickness / 2] mm, got " + fmt(d.te_radius));
+          what + ": te_radius must be in (0, max_thickness / 2] mm, got " + format_number(d.te_radius));
   require(d.points_per_side >= 8 && d.points_per_side <= 2000,
           what + ": points_per_side must be in [8, 2000], got " + std::to_string(d.points_per_side));
   auto angle_ok = [](double a) { return a > -90 && a < 90; };
-  require(angle_ok(d.stagger_deg), what + ": stagger_deg must be in (-90, 90), got " + fmt(d.stagger_deg));
+  require(angle_ok(d.stagger_deg), what + ": stagger_deg must be in (-90, 90), got " + format_number(d.stagger_deg));
   require(angle_ok(d.inlet_angle_deg) && std::abs(d.inlet_angle_deg - d.stagger_deg) < 90,
-          what + ": inlet_angle_deg must be in (-90, 90) and within 90 deg of the stagger, got " + fmt(d.inlet_angle_deg));
+          what + ": inlet_angle_deg must be in (-90, 90) and within 90 deg of the stagger, got " + format_number(d.inlet_angle_deg));
   require(angle_ok(d.outlet_angle_deg) && std::abs(d.outlet_angle_deg - d.stagger_deg) < 90,
           what + ": outlet_angle_deg must be in (-90, 90) and within 90 deg of the stagger, got " +
-              fmt(d.outlet_angle_deg));
+              format_number(d.outlet_angle_deg));
 
   // Camber line.
   const Eigen::Vector2d P0(0, 0), P3 = d.chord * Eigen::Vector2d(std::cos(rad(d.stagger_deg)), std::sin(rad(d.stagger_deg)));
@@ -132,7 +131,7 @@ SectionProfile section_from_parameters(const ParametricSectionDefinition& d) {
     const double h = half_thickness(t);
     // (messages built only on failure: this loop runs for every section of the blade)
     if (!(h > 0))
-      throw InvalidGeometry(what + ": the thickness distribution becomes non-positive at " + fmt(t) +
+      throw InvalidGeometry(what + ": the thickness distribution becomes non-positive at " + format_number(t) +
                             " of the camber line; adjust max_thickness, its position or the LE/TE radii");
     if (!(h <= 0.5 * d.max_thickness * (1 + 1e-6)))
       throw InvalidGeometry(what + ": the thickness exceeds max_thickness away from max_thickness_position (the "
@@ -140,7 +139,7 @@ SectionProfile section_from_parameters(const ParametricSectionDefinition& d) {
     const auto cd = camber.derivatives(t, 2);
     const double kappa = (cd[1].x() * cd[2].y() - cd[1].y() * cd[2].x()) / std::pow(cd[1].norm(), 3);
     if (!(1 - h * std::abs(kappa) > 0))
-      throw InvalidGeometry(what + ": the thickness exceeds the camber line's radius of curvature at " + fmt(t) +
+      throw InvalidGeometry(what + ": the thickness exceeds the camber line's radius of curvature at " + format_number(t) +
                             " of the camber line (the surface would fold)");
   }
 

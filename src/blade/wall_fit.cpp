@@ -8,7 +8,7 @@
 #include <map>
 #include <string>
 
-#include "src/blade/format.hpp"
+#include "src/core/format.hpp"
 #include "src/core/basis.hpp"
 #include "src/core/error.hpp"
 #include "src/fit/skin.hpp"
@@ -165,8 +165,8 @@ WallFit fit_wall(const SectionFamily& family, const WallFitOptions& opt) {
       knots = std::move(refined);
       if (static_cast<int>(knots.size()) > kMaxPoles)
         throw AlgorithmFailure("blade surface: the sections cannot be fitted to surface_tolerance " +
-                               fmt(opt.tolerance) + " mm with " + std::to_string(kMaxPoles) +
-                               " poles chordwise (smallest error reached " + fmt(fit_error) + " mm)");
+                               format_number(opt.tolerance) + " mm with " + std::to_string(kMaxPoles) +
+                               " poles chordwise (smallest error reached " + format_number(fit_error) + " mm)");
     }
 
     // Spanwise: skin and compare with the family inside every interval.
@@ -203,8 +203,8 @@ WallFit fit_wall(const SectionFamily& family, const WallFitOptions& opt) {
     spans.insert(spans.end(), added.begin(), added.end());
     std::sort(spans.begin(), spans.end());
     if (spans.size() > kMaxSections)
-      throw AlgorithmFailure("blade surface: surface_tolerance " + fmt(opt.tolerance) + " mm is not met with " +
-                             std::to_string(kMaxSections) + " sections along the span (error " + fmt(worst) + " mm)");
+      throw AlgorithmFailure("blade surface: surface_tolerance " + format_number(opt.tolerance) + " mm is not met with " +
+                             std::to_string(kMaxSections) + " sections along the span (error " + format_number(worst) + " mm)");
   }
   out.spans = spans;
   return out;

@@ -41,6 +41,7 @@
 #include "src/modify/periodic_conversion.hpp"
 #include "src/modify/reparametrize.hpp"
 #include "src/core/error.hpp"
+#include "src/core/format.hpp"
 
 namespace cg::brep {
 namespace {
@@ -119,7 +120,7 @@ Handle(Geom_SurfaceOfRevolution) revolved_surface(const RevolvedTrim& t, double 
   for (int i = 0; i < c.num_poles(); ++i) {
     const Eigen::Vector2d q = c.pole(i);
     require(q.allFinite() && q.y() > 0.0, std::string(which) + " meridional curve: pole " + std::to_string(i) +
-                                              " has r = " + std::to_string(q.y()) + ", r must be > 0");
+                                              " has r = " + format_number(q.y()) + ", r must be > 0");
     poles.emplace_back(q.x(), q.y() * std::cos(theta0), q.y() * std::sin(theta0));
   }
   const BSplineCurve<3> c3(c.degree(), c.knots(), poles, c.is_rational() ? c.weights() : std::vector<double>{});

@@ -5,7 +5,7 @@
 #include <cstdlib>
 
 #include "src/cli/exit_codes.hpp"
-#include "src/config/number_format.hpp"
+#include "src/core/format.hpp"
 
 namespace cg::cli {
 
@@ -38,7 +38,7 @@ void Watchdog::watch() {
   const std::string where = console_.activity();
   console_.interrupt_line();
   error_exit(kStopped, limit_.stop_reason() + ": stopped in " + (where.empty() ? std::string("the job") : where) +
-                           " (no check point came within " + config::shortest(grace_s_) +
+                           " (no check point came within " + format_number(grace_s_) +
                            " s of the limit); nothing written, " + output_ + " left as it was");
   std::_Exit(kStopped);
 }

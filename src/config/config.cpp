@@ -9,7 +9,7 @@
 #include "src/config/json_document.hpp"
 #include "src/config/json_fields.hpp"
 #include "src/config/point_checks.hpp"
-#include "src/config/number_format.hpp"
+#include "src/core/format.hpp"
 
 namespace cg::config {
 namespace {
@@ -46,8 +46,8 @@ blade::MeridionalNetDefinition meridional_net(const Field& f) {
       if (e.is_number()) {
         const double span = e.number(open(0, 1));
         if (!net.interpolated_spans.empty() && span <= net.interpolated_spans.back())
-          fail(e.path(), "streamline span fractions must be strictly increasing, got " + shortest(span) +
-                             " after " + shortest(net.interpolated_spans.back()));
+          fail(e.path(), "streamline span fractions must be strictly increasing, got " + format_number(span) +
+                             " after " + format_number(net.interpolated_spans.back()));
         net.interpolated_spans.push_back(span);
         continue;
       }
@@ -57,7 +57,7 @@ blade::MeridionalNetDefinition meridional_net(const Field& f) {
       const double span = e.at("span").number(open(0, 1));
       if (!net.streamline_spans.empty() && span <= net.streamline_spans.back())
         fail(e.path() + ".span", "explicit streamlines must be listed with strictly increasing span, got " +
-                                     shortest(span) + " after " + shortest(net.streamline_spans.back()));
+                                     format_number(span) + " after " + format_number(net.streamline_spans.back()));
       net.streamline_spans.push_back(span);
       net.streamlines.push_back(polyline(e.at("points"), 2));
     }
@@ -201,7 +201,7 @@ Config parse_config(const nlohmann::json& document, const std::filesystem::path&
       const double prev = c.blade.sections[i - 1].placement.span, cur = c.blade.sections[i].placement.span;
       if (cur <= prev)
         fail(sections.item(i).path() + ".span", "sections must have strictly increasing span: must be > " +
-                                                  shortest(prev) + ", got " + shortest(cur));
+                                                  format_number(prev) + ", got " + format_number(cur));
     }
   }
   if (root.has("blade")) c.blade.options = blade_options(root.at("blade"));

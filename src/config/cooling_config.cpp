@@ -6,6 +6,7 @@
 #include "src/blade/section.hpp"
 #include "src/config/config_error.hpp"
 #include "src/config/cooling_film_config.hpp"
+#include "src/core/format.hpp"
 
 namespace cg::config {
 namespace {
@@ -70,8 +71,8 @@ features::RibDefinition rib(const Field& f) {
     d.gap = t.at("gap").number(positive(200), "mm");
     d.tip_radius = t.number_or("tip_radius", 0.5 * r.thickness, open(0, 10), "mm");
     if (d.tip_radius > 0.5 * r.thickness)
-      fail(t.path() + ".tip_radius", "must be <= thickness / 2 = " + std::to_string(0.5 * r.thickness) + " mm, got " +
-                                         std::to_string(d.tip_radius));
+      fail(t.path() + ".tip_radius", "must be <= thickness / 2 = " + format_number(0.5 * r.thickness) + " mm, got " +
+                                         format_number(d.tip_radius));
     r.turnaround = d;
   }
   return r;

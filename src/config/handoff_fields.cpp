@@ -1,4 +1,5 @@
 #include "src/config/handoff_fields.hpp"
+#include "src/core/format.hpp"
 
 #include <vector>
 
@@ -35,8 +36,8 @@ void read_handoff_output_fields(const Field& out, OutputOptions& o) {
     for (std::size_t i = 0; i < n; ++i) {
       const double span = s.item(i).number(closed(0, 1));
       if (i > 0 && span <= o.section_spans.back())
-        fail(s.item(i).path(), "section spans must be strictly increasing, got " + std::to_string(span) + " after " +
-                                   std::to_string(o.section_spans.back()));
+        fail(s.item(i).path(), "section spans must be strictly increasing, got " + format_number(span) + " after " +
+                                   format_number(o.section_spans.back()));
       o.section_spans.push_back(span);
     }
   }

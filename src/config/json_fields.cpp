@@ -3,12 +3,10 @@
 #include <cmath>
 #include <sstream>
 
-#include "src/config/number_format.hpp"
+#include "src/core/format.hpp"
 
 namespace cg::config {
 namespace {
-
-std::string num(double x) { return shortest(x); }
 
 std::string shown(const nlohmann::json& j) {
   std::string s = j.dump();
@@ -28,9 +26,9 @@ bool Range::contains(double x) const {
 std::string Range::describe() const {
   const bool lo_inf = std::isinf(lo), hi_inf = std::isinf(hi);
   if (lo_inf && hi_inf) return "finite";
-  if (hi_inf) return std::string(lo_open ? "> " : ">= ") + num(lo);
-  if (lo_inf) return std::string(hi_open ? "< " : "<= ") + num(hi);
-  return std::string(lo_open ? "(" : "[") + num(lo) + ", " + num(hi) + (hi_open ? ")" : "]");
+  if (hi_inf) return std::string(lo_open ? "> " : ">= ") + format_number(lo);
+  if (lo_inf) return std::string(hi_open ? "< " : "<= ") + format_number(hi);
+  return std::string(lo_open ? "(" : "[") + format_number(lo) + ", " + format_number(hi) + (hi_open ? ")" : "]");
 }
 
 Range positive(double hi) { return {0.0, hi, true, false}; }
@@ -80,7 +78,7 @@ double Field::number(const Range& range, const char* unit) const {
   if (!j_->is_number()) fail(path_, "must be a number, got " + json_type_name(*j_) + " " + shown(*j_));
   const double x = j_->get<double>();
   if (!range.contains(x))
-    fail(path_, "must be " + range.describe() + (*unit ? std::string(" ") + unit : "") + ", got " + num(x));
+    fail(path_, "must be " + range.describe() + (*unit ? std::string(" ") + unit : "") + ", got " + format_number(x));
   return x;
 }
 

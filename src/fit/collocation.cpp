@@ -31,7 +31,7 @@ Eigen::MatrixXd solve_collocation(int p, const std::vector<double>& U, bool peri
       t = a + std::fmod(t - a, b - a);
       if (t < a) t += b - a;
     } else {
-      require(t >= a && t <= b, "interpolation parameter " + std::to_string(t) + " outside the knot domain [" +
+      require(t >= a && t <= b, "interpolation parameter " + format_number(t) + " outside the knot domain [" +
                                     format_number(a) + ", " + format_number(b) + "]");
     }
     const int s = find_span(U.data(), num_basis - 1, p, t);

@@ -9,6 +9,7 @@
 #include "src/modify/degree_elevation.hpp"
 #include "src/modify/knot_insertion.hpp"
 #include "src/modify/reparametrize.hpp"
+#include "src/core/format.hpp"
 
 namespace cg {
 
@@ -150,7 +151,7 @@ SkinResult skin(const std::vector<BSplineCurve<3>>& sections, const SkinOptions&
       H.col(i * K + j) = X.block<1, 4>(j, 4 * i).transpose();
       if (!(H(3, i * K + j) > 0))
         throw AlgorithmFailure("skinning rational sections gave the non-positive weight " +
-                               std::to_string(H(3, i * K + j)) + " at pole (" + std::to_string(i) + ", " +
+                               format_number(H(3, i * K + j)) + " at pole (" + std::to_string(i) + ", " +
                                std::to_string(j) + "); use sections with compatible weights");
     }
   // Interpolation is linear in the data, so the wrap pole rows of periodic sections stay copies of

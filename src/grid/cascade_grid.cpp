@@ -5,7 +5,7 @@
 #include <functional>
 
 #include "src/algo/ray_curve.hpp"
-#include "src/blade/format.hpp"
+#include "src/core/format.hpp"
 #include "src/core/error.hpp"
 #include "src/grid/builders.hpp"
 #include "src/grid/distribution.hpp"
@@ -24,7 +24,7 @@ constexpr double kInletGap = 0.3, kInterfaceGapLayers = 2.5, kOutletGap = 0.4;
 // Share of the uniform correspondence mixed into the normal-ray one (see build_cascade_grid).
 constexpr double kUniformShare = 0.1;
 
-std::string mm(double x) { return blade::detail::fmt(x) + " mm"; }
+std::string mm(double x) { return format_number(x) + " mm"; }
 
 // Cubic Hermite curve from R (tangent T0) to O (tangent T1), sampled by arc length: the nodes at the
 // given distances along it (the polyline of 128 samples is inverted linearly).

@@ -3,14 +3,13 @@
 #include <algorithm>
 #include <cmath>
 
-#include "src/blade/format.hpp"
+#include "src/core/format.hpp"
 #include "src/core/error.hpp"
 
 namespace cg::grid {
 
 namespace {
 
-using blade::detail::fmt;
 
 // Root of f on [lo, hi] by bisection (f(lo) and f(hi) of opposite signs): robust and plenty fast here.
 template <class F>
@@ -39,9 +38,9 @@ std::vector<double> geometric_then_uniform(double first, double ratio, int cells
   require(first > 0 && ratio >= 1 && cells >= 1 && length > 0, "geometric_then_uniform: invalid arguments");
   const double lo = first * cells, hi = geometric_length(first, ratio, cells);
   if (length < lo * (1 - 1e-12) || length > hi * (1 + 1e-12))
-    throw InvalidGeometry("the thickness " + fmt(length) + " mm cannot be reached with " + std::to_string(cells) +
-                          " cells from a first cell of " + fmt(first) + " mm growing by at most " + fmt(ratio) +
-                          ": it must lie in [" + fmt(lo) + ", " + fmt(hi) + "] mm");
+    throw InvalidGeometry("the thickness " + format_number(length) + " mm cannot be reached with " + std::to_string(cells) +
+                          " cells from a first cell of " + format_number(first) + " mm growing by at most " + format_number(ratio) +
+                          ": it must lie in [" + format_number(lo) + ", " + format_number(hi) + "] mm");
   // The smallest k (number of geometric cells) whose uniform rest spacing is <= first ratio^k; then it
   // is > first ratio^(k-1) as well (the rest spacing is a weighted mean of the previous ones).
   int k = 0;
@@ -68,7 +67,7 @@ std::vector<double> geometric_fill(double first, int cells, double length, doubl
       while (f(hi) < 0) hi *= 2;  // geometric_length grows without bound in q
     } else {
       lo = 0.0;  // f(0) = first - length < 0 for one cell shorter than the whole
-      require(first < length, "geometric_fill: the first cell " + fmt(first) + " mm is longer than the whole " + fmt(length) + " mm");
+      require(first < length, "geometric_fill: the first cell " + format_number(first) + " mm is longer than the whole " + format_number(length) + " mm");
     }
     r = bisect(f, lo, hi);
   }

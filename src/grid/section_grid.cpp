@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "src/blade/format.hpp"
+#include "src/core/format.hpp"
 #include "src/core/error.hpp"
 #include "src/grid/builders.hpp"
 #include "src/grid/distribution.hpp"
@@ -12,7 +12,6 @@ namespace cg::grid {
 
 namespace {
 
-using blade::detail::fmt;
 
 [[noreturn]] void bad(const std::string& option, const std::string& what) { throw InvalidGeometry(option + ": " + what); }
 
@@ -21,17 +20,17 @@ SectionGridOptions resolve(const blade::SectionProfile& section, SectionGridOpti
   const double chord = section.chord();
   if (o.cells_around < 8 || o.cells_around > 20000) bad("cells_around", "must be in [8, 20000], got " + std::to_string(o.cells_around));
   if (o.cells_normal < 2 || o.cells_normal > 5000) bad("cells_normal", "must be in [2, 5000], got " + std::to_string(o.cells_normal));
-  if (!(o.growth_ratio > 1 && o.growth_ratio <= 2)) bad("growth_ratio", "must be in (1, 2], got " + fmt(o.growth_ratio));
-  if (!(o.wall_clustering >= 0 && o.wall_clustering <= 10)) bad("wall_clustering", "must be in [0, 10], got " + fmt(o.wall_clustering));
+  if (!(o.growth_ratio > 1 && o.growth_ratio <= 2)) bad("growth_ratio", "must be in (1, 2], got " + format_number(o.growth_ratio));
+  if (!(o.wall_clustering >= 0 && o.wall_clustering <= 10)) bad("wall_clustering", "must be in [0, 10], got " + format_number(o.wall_clustering));
   if (o.first_cell_height == 0) o.first_cell_height = 2e-4 * chord;
   if (o.thickness == 0) o.thickness = (o.cascade ? 0.03 : 0.1) * chord;
-  if (!(o.first_cell_height > 0)) bad("first_cell_height", "must be > 0 mm, got " + fmt(o.first_cell_height));
-  if (!(o.thickness > 0)) bad("thickness", "must be > 0 mm, got " + fmt(o.thickness));
+  if (!(o.first_cell_height > 0)) bad("first_cell_height", "must be > 0 mm, got " + format_number(o.first_cell_height));
+  if (!(o.thickness > 0)) bad("thickness", "must be > 0 mm, got " + format_number(o.thickness));
   if (o.first_cell_height >= o.thickness)
-    bad("first_cell_height", "must be below the thickness (" + fmt(o.thickness) + " mm), got " + fmt(o.first_cell_height));
+    bad("first_cell_height", "must be below the thickness (" + format_number(o.thickness) + " mm), got " + format_number(o.first_cell_height));
   if (o.cascade) {
     CascadeOptions& c = *o.cascade;
-    if (!(c.pitch > 0)) bad("cascade.pitch", "must be > 0 mm, got " + fmt(c.pitch));
+    if (!(c.pitch > 0)) bad("cascade.pitch", "must be > 0 mm, got " + format_number(c.pitch));
     const int around = o.cells_around - c.inlet_cells_pitchwise - c.outlet_cells_pitchwise;
     if (c.inlet_cells_pitchwise < 2 || c.outlet_cells_pitchwise < 2 || around < 4 || around % 2 != 0)
       bad("cells_around", "in a cascade, cells_around - inlet pitchwise cells - outlet pitchwise cells must be even and >= 4 "
@@ -43,10 +42,10 @@ SectionGridOptions resolve(const blade::SectionProfile& section, SectionGridOpti
     const double c_ax = a_max - a_min;
     if (c.inlet_distance == 0) c.inlet_distance = 0.6 * c_ax;
     if (c.outlet_distance == 0) c.outlet_distance = 1.2 * c_ax;
-    if (!(c.inlet_distance > 0)) bad("cascade.inlet_distance", "must be > 0 mm, got " + fmt(c.inlet_distance));
-    if (!(c.outlet_distance > 0)) bad("cascade.outlet_distance", "must be > 0 mm, got " + fmt(c.outlet_distance));
+    if (!(c.inlet_distance > 0)) bad("cascade.inlet_distance", "must be > 0 mm, got " + format_number(c.inlet_distance));
+    if (!(c.outlet_distance > 0)) bad("cascade.outlet_distance", "must be > 0 mm, got " + format_number(c.outlet_distance));
     if (!(o.thickness < 0.2 * c.pitch))
-      bad("thickness", "in a cascade the wall layers must stay below 0.2 pitch (" + fmt(0.2 * c.pitch) + " mm), got " + fmt(o.thickness));
+      bad("thickness", "in a cascade the wall layers must stay below 0.2 pitch (" + format_number(0.2 * c.pitch) + " mm), got " + format_number(o.thickness));
   }
   return o;
 }
@@ -74,16 +73,16 @@ SectionGrid build_section_grid(const blade::SectionProfile& section, const Secti
   const WallPatches patches(section.curve, o.thickness);
   const double rmin = min_concave_radius(section, patches);
   if (!(o.thickness < 0.9 * rmin))
-    bad("thickness", fmt(o.thickness) + " mm reaches past the centre of curvature of a concave part of the section "
-        "(radius " + fmt(rmin) + " mm): the normal lines would cross; use less than " + fmt(0.9 * rmin) + " mm");
+    bad("thickness", format_number(o.thickness) + " mm reaches past the centre of curvature of a concave part of the section "
+        "(radius " + format_number(rmin) + " mm): the normal lines would cross; use less than " + format_number(0.9 * rmin) + " mm");
   detail::BuiltGrid built;
   if (o.cascade) {
     double reach = 0;
     int layers = 1;
     while ((reach = geometric_length(o.first_cell_height, o.growth_ratio, layers)) < o.thickness) ++layers;
     if (layers > o.cells_normal - 4)
-      bad("thickness", "the wall layers need " + std::to_string(layers) + " cells (first cell " + fmt(o.first_cell_height) +
-          " mm, growth " + fmt(o.growth_ratio) + ") but cells_normal = " + std::to_string(o.cells_normal) +
+      bad("thickness", "the wall layers need " + std::to_string(layers) + " cells (first cell " + format_number(o.first_cell_height) +
+          " mm, growth " + format_number(o.growth_ratio) + ") but cells_normal = " + std::to_string(o.cells_normal) +
           " leaves fewer than 4 for the passage; raise cells_normal or lower the thickness");
     built = detail::build_cascade_grid(section, patches, o, layers);
   } else {
@@ -111,7 +110,7 @@ SectionGrid build_section_grid(const blade::SectionProfile& section, const Secti
   r.growth_ratio = o.growth_ratio;
   r.thickness = o.thickness;
   if (r.inverted_cells > 0 && !o.cascade)  // every node is on an exact normal line: they cross
-    bad("thickness", fmt(o.thickness) + " mm is too large for this section: its normal lines cross (" +
+    bad("thickness", format_number(o.thickness) + " mm is too large for this section: its normal lines cross (" +
         std::to_string(r.inverted_cells) + " inverted cells), the offset folds across a concave stretch; reduce it");
   if (r.inverted_cells > 0) {
     std::string which;
@@ -120,7 +119,7 @@ SectionGrid build_section_grid(const blade::SectionProfile& section, const Secti
     throw AlgorithmFailure("grid: inverted cells in" + which + "; try a smaller thickness, more cells_around or a larger pitch");
   }
   if (r.max_connection_mismatch > 1e-9 * (1 + section.chord()))
-    throw AlgorithmFailure("grid: block interfaces do not match (" + fmt(r.max_connection_mismatch) + " mm)");
+    throw AlgorithmFailure("grid: block interfaces do not match (" + format_number(r.max_connection_mismatch) + " mm)");
   return out;
 }
 

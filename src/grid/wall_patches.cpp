@@ -10,6 +10,7 @@
 #include "src/core/error.hpp"
 #include "src/modify/bezier_decomposition.hpp"
 #include "src/ortho/edge_angles.hpp"
+#include "src/core/format.hpp"
 
 namespace cg::grid {
 
@@ -94,8 +95,8 @@ WallPatches::WallPatches(const BSplineCurve<2>& curve, double thickness) : curve
     const Eigen::Vector2d ta = a.derivatives(1.0, 1)[1].normalized(), tb = b.derivatives(0.0, 1)[1].normalized();
     if ((ta - tb).norm() > 1e-7)
       throw InvalidGeometry("wall patches: the section curve has a corner at parameter " +
-                            std::to_string(d.breaks[static_cast<std::size_t>(k) + 1]) +
-                            " (tangents differ by " + std::to_string(std::asin(std::min(1.0, (ta - tb).norm() / 2)) * 360 / M_PI) +
+                            format_number(d.breaks[static_cast<std::size_t>(k) + 1]) +
+                            " (tangents differ by " + format_number(std::asin(std::min(1.0, (ta - tb).norm() / 2)) * 360 / M_PI) +
                             " deg); an orthogonal O-grid needs a tangent-continuous section");
   }
   std::vector<ortho::ContinuationFactors> factors;

@@ -7,6 +7,7 @@
 
 #include "src/core/basis.hpp"
 #include "src/core/error.hpp"
+#include "src/core/format.hpp"
 
 namespace cg::ortho {
 
@@ -71,11 +72,11 @@ EdgeAngleSampler<Dim>::EdgeAngleSampler(const BezierCurve<Dim>& curve, const Per
       w_.push_back(0.5 * gw[static_cast<std::size_t>(j)] / panels);
       const double e = eta ? eta(u) : 0.0;
       require(std::isfinite(e) && e > -1.0 && e < 1.0, "performance map eta(u) must lie in (-1, 1), got " +
-                                                           std::to_string(e) + " at u = " + std::to_string(u));
+                                                           format_number(e) + " at u = " + format_number(u));
       eta_.push_back(e);
       Point d[2];
       c.derivatives(u, 1, d);
-      require(d[1].norm() > 0, "edge angle sampler: the curve has a zero tangent at u = " + std::to_string(u));
+      require(d[1].norm() > 0, "edge angle sampler: the curve has a zero tangent at u = " + format_number(u));
       x_.push_back(d[0]);
       t_.push_back(d[1].normalized());
       all_bernstein(m_, u, Bk);

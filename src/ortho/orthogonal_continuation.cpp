@@ -8,6 +8,7 @@
 #include <string>
 
 #include "src/core/error.hpp"
+#include "src/core/format.hpp"
 
 namespace cg::ortho {
 
@@ -169,7 +170,7 @@ OrthogonalContinuation continue_orthogonally(const BezierCurve<2>& curve, const 
   const BernsteinPoly row1 = row0 + z;  // Y(u, 1) = Y(u, 0) + Y_v(u, 0) for a patch linear in v
   for (int i = 0; i <= M; ++i)
     require(row1(2, i) > 0 && std::isfinite(row1(2, i)),
-            "orthogonal continuation: weight " + std::to_string(i) + " of thread 1 is " + std::to_string(row1(2, i)) +
+            "orthogonal continuation: weight " + std::to_string(i) + " of thread 1 is " + format_number(row1(2, i)) +
                 " (must be > 0: keep the Bernstein coefficients of Q below 1)");
   Eigen::Matrix<double, 3, Eigen::Dynamic> h(3, 2 * (M + 1));
   for (int i = 0; i <= M; ++i) {

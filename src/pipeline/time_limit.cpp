@@ -2,7 +2,7 @@
 
 #include <chrono>
 
-#include "src/config/number_format.hpp"
+#include "src/core/format.hpp"
 
 namespace cg::pipeline {
 namespace {
@@ -27,7 +27,7 @@ void TimeLimit::stage_finished(const std::string& stage, double seconds) {
 bool TimeLimit::stop_requested() const { return expired() || (inner_ && inner_->stop_requested()); }
 
 std::string TimeLimit::stop_reason() const {
-  if (expired()) return "time limit of " + config::shortest(seconds_) + " s reached";
+  if (expired()) return "time limit of " + format_number(seconds_) + " s reached";
   return inner_ ? inner_->stop_reason() : ProgressSink::stop_reason();
 }
 

@@ -17,6 +17,10 @@ BOOST_AUTO_TEST_CASE(shortest_text_of_typical_values) {
   BOOST_TEST(format_number(0.1) == "0.1");
   BOOST_TEST(format_number(-2.5) == "-2.5");
   BOOST_TEST(format_number(275.0) == "275");
+  BOOST_TEST(format_number(100000.0) == "100000");  // plain notation in [1e-4, 1e15), not "1e+05"
+  BOOST_TEST(format_number(1e-4) == "0.0001");
+  BOOST_TEST(format_number(1e20) == "1e+20");
+  BOOST_TEST(format_number(0.40325) == "0.40325");  // not "0.403250" (six fixed decimals)
   BOOST_TEST(format_number(1.0 / 3.0) == "0.3333333333333333");
   BOOST_TEST(format_number(std::numeric_limits<double>::infinity()) == "inf");
   BOOST_TEST(format_number(std::nan("")) == "nan");
