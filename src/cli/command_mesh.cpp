@@ -16,11 +16,13 @@ void print_summary(const config::Config& c, const pipeline::MeshOutputs& w) {
   const mesh::MeshResult& m = w.mesh;
   std::printf("%s: %zu nodes, %zu tetrahedra (%zu inverted), %zu boundary triangles, min quality %.3f\n", c.name.c_str(),
               m.nodes, m.tetrahedra, m.inverted, m.triangles, m.min_quality);
+  std::printf("  interfaces: %zu triangles, %zu not shared by both sides; surfaces: %d Frontal-Delaunay, %d Delaunay, %zu re-meshed with MeshAdapt\n",
+              m.interface_triangles, m.nonconformal_triangles, m.surfaces_frontal_delaunay, m.surfaces_delaunay, m.surfaces_remeshed.size());
   for (const mesh::RegionMesh& r : m.regions)
     std::printf("  %-10s %s %zu tetrahedra, volume %.4f mm^3 (B-rep %.4f)\n", r.name.c_str(), r.fluid ? "fluid" : "solid",
                 r.tets.elements, r.tets.volume, r.brep_volume);
-  std::printf("  time: geometry %.2f s, surface %.2f s, volume %.2f s, total %.2f s\n", m.seconds_geometry,
-              m.seconds_surface, m.seconds_volume, m.seconds_total);
+  std::printf("  time: geometry %.2f s, sizes %.2f s, surface %.2f s, volume %.2f s, quality and files %.2f s, total %.2f s\n",
+              m.seconds_geometry, m.seconds_sizes, m.seconds_surface, m.seconds_volume, m.seconds_output, m.seconds_total);
   for (const std::string& n : m.notes) std::printf("  note: %s\n", n.c_str());
   std::printf("  wrote");
   for (std::size_t i = 0; i < w.files.size(); ++i)
@@ -43,6 +45,9 @@ int run_mesh(const JobOptions& o) {
                          (o.output / pipeline::kReportFile).string() + " only (valid: false), no mesh");
     if (w.mesh.inverted > 0)
       throw ChecksFailed(std::to_string(w.mesh.inverted) + " inverted tetrahedra (see " +
+                         (o.output / pipeline::kReportFile).string() + ")");
+    if (w.mesh.nonconformal_triangles > 0)
+      throw ChecksFailed(std::to_string(w.mesh.nonconformal_triangles) + " interface triangles not shared by both regions (see " +
                          (o.output / pipeline::kReportFile).string() + ")");
     if (!o.quiet) print_summary(c, w);
     return kOk;

@@ -37,6 +37,7 @@ struct MeshConfig {
   double min_size = 0.05;               ///< mm
   int curvature_elements = 16;          ///< per 2 pi on every surface
   int feature_curvature_elements = 40;  ///< per 2 pi on the cooling-feature faces
+  double size_growth = 0.3;            ///< size increase per mm away from those faces
   bool metal = true, coolant = true;    ///< "domains"
   bool msh = true, vtu = true, cgns = false;  ///< "formats" (default ["msh", "vtu"])
   bool group_by_face_name = false;      ///< "physical_groups": "face_name" (default "kind")

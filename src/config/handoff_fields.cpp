@@ -45,13 +45,14 @@ void read_handoff_output_fields(const Field& out, OutputOptions& o) {
 
 MeshConfig mesh_config(const Field& f) {
   if (!f.is_object()) fail(f.path(), "must be an object, got " + json_type_name(f.json()));
-  f.expect_object({"max_size", "min_size", "curvature_elements", "feature_curvature_elements", "domains", "formats",
-                   "physical_groups", "threads", "optimize"});
+  f.expect_object({"max_size", "min_size", "curvature_elements", "feature_curvature_elements", "size_growth", "domains",
+                   "formats", "physical_groups", "threads", "optimize"});
   MeshConfig m;
   m.max_size = f.number_or("max_size", m.max_size, closed(0.01, 1000), "mm");
   m.min_size = f.number_or("min_size", m.min_size, closed(0.001, m.max_size), "mm (<= max_size)");
   m.curvature_elements = f.integer_or("curvature_elements", m.curvature_elements, 0, 200);
   m.feature_curvature_elements = f.integer_or("feature_curvature_elements", m.feature_curvature_elements, 0, 200);
+  m.size_growth = f.number_or("size_growth", m.size_growth, positive(2), "mm per mm");
   if (f.has("domains")) read_flags(f.at("domains"), {"metal", "coolant"}, {&m.metal, &m.coolant});
   if (f.has("formats")) read_flags(f.at("formats"), {"msh", "vtu", "cgns"}, {&m.msh, &m.vtu, &m.cgns});
   if (f.has("physical_groups")) m.group_by_face_name = f.at("physical_groups").choice({"kind", "face_name"}) == 1;

@@ -1,19 +1,26 @@
 #include "src/mesh/blade_mesher.hpp"
 
-#include <BRepAdaptor_Surface.hxx>
-#include <BRepGProp.hxx>
-#include <BRepLProp_SLProps.hxx>
-#include <GProp_GProps.hxx>
+#include <BRepBndLib.hxx>
+#include <Bnd_Box.hxx>
+#include <NCollection_DataMap.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_ShapeMapHasher.hxx>
 #include <gmsh.h>
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
 #include <cmath>
 #include <map>
+#include <set>
 #include <unordered_map>
 
+#include "src/brep/solid_integrals.hpp"
+#include "src/mesh/gmsh_session.hpp"
 #include "src/mesh/mesh_cgns.hpp"
 #include "src/mesh/mesh_files.hpp"
+#include "src/mesh/mesh_sizes.hpp"
+#include "src/mesh/surface_mesh.hpp"
 
 namespace cg::mesh {
 namespace {
@@ -21,102 +28,136 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-// gmsh is a process-wide singleton: initialise for one job, finalise on every exit path.
-struct GmshSession {
-  GmshSession() {
-    gmsh::initialize(0, nullptr, /*readConfigFiles=*/false);
-    gmsh::option::setNumber("General.Terminal", 0);
-    gmsh::logger::start();
-  }
-  ~GmshSession() {
-    try {
-      gmsh::logger::stop();
-      gmsh::finalize();
-    } catch (...) {
-    }
-  }
-  GmshSession(const GmshSession&) = delete;
-  GmshSession& operator=(const GmshSession&) = delete;
+// Volume to 1e-7 relative (brep::integrate_solid: our face flux, faces in parallel).
+double accurate_volume(const TopoDS_Shape& s) { return brep::integrate_solid(s, 1e-7, true, brep::Integrals::Volume).volume; }
+
+// gmsh volumes and surfaces of the imported compound, matched to our regions and named faces.
+struct ModelMap {
+  std::vector<std::vector<int>> region_volumes;  ///< per region: gmsh volume tags
+  std::map<int, int> region_of_volume;
+  std::vector<ModelSurface> surfaces;             ///< every gmsh surface with its face and name
+  std::map<std::string, std::vector<int>> groups; ///< surface physical group -> gmsh surface tags
 };
 
-// Last gmsh error (or warnings) for messages.
-std::string gmsh_error() {
-  std::string e;
-  try {
-    gmsh::logger::getLastError(e);
-  } catch (...) {
+using ShapeIndex = NCollection_DataMap<TopoDS_Shape, int, TopTools_ShapeMapHasher>;
+
+// Tags of the shapes of one type in `imported`: gmsh's importShapesNativePointer returns one (dim, tag)
+// per TopExp_Explorer occurrence of a solid, then of a face, ... of the compound (OCC_Internals::
+// _multiBind), so the k-th entry of dimension `dim` is the k-th occurrence. Checked: the same shape
+// always gets the same tag, and gmsh's bounding box of each tag is the one BRepBndLib gives the shape.
+ShapeIndex imported_tags(const TopoDS_Shape& compound, const gmsh::vectorpair& imported, TopAbs_ShapeEnum type, int dim,
+                         double size) {
+  std::vector<int> tags;
+  for (const auto& [d, t] : imported)
+    if (d == dim) tags.push_back(t);
+  ShapeIndex index;
+  std::size_t k = 0;
+  for (TopExp_Explorer e(compound, type); e.More(); e.Next(), ++k) {
+    if (k >= tags.size()) throw MeshError("mesh: gmsh imported fewer entities of dimension " + std::to_string(dim) + " than the compound has");
+    if (const int* t = index.Seek(e.Current())) {
+      if (*t != tags[k]) throw MeshError("mesh: gmsh gave one shape two tags");
+      continue;
+    }
+    Bnd_Box ours;
+    BRepBndLib::Add(e.Current(), ours);
+    double a[6], g[6];
+    ours.Get(a[0], a[1], a[2], a[3], a[4], a[5]);
+    gmsh::model::occ::getBoundingBox(dim, tags[k], g[0], g[1], g[2], g[3], g[4], g[5]);
+    for (int i = 0; i < 6; ++i)
+      if (std::abs(a[i] - g[i]) > 1e-9 * size)
+        throw MeshError("mesh: gmsh entity (" + std::to_string(dim) + ", " + std::to_string(tags[k]) + ") is not the shape imported in its place");
+    index.Bind(e.Current(), tags[k]);
   }
-  return e.empty() ? "no message" : e;
+  if (k != tags.size()) throw MeshError("mesh: gmsh imported more entities of dimension " + std::to_string(dim) + " than the compound has");
+  return index;
 }
 
-struct Props {
-  Eigen::Vector3d centre;
-  double mass = 0;
-};
-Props occt_props(const TopoDS_Shape& s, int dim) {
-  GProp_GProps g;
-  if (dim == 3)
-    BRepGProp::VolumeProperties(s, g, true);
-  else
-    BRepGProp::SurfaceProperties(s, g, true);
-  const gp_Pnt c = g.CentreOfMass();
-  return {{c.X(), c.Y(), c.Z()}, g.Mass()};
-}
-Props gmsh_props(int dim, int tag) {
-  Props p;
-  double x, y, z;
-  gmsh::model::occ::getCenterOfMass(dim, tag, x, y, z);
-  gmsh::model::occ::getMass(dim, tag, p.mass);
-  p.centre = {x, y, z};
-  return p;
+ModelMap match_model(const ConformalDomains& domains, const gmsh::vectorpair& imported, GroupBy group_by) {
+  Bnd_Box box;
+  BRepBndLib::Add(domains.compound, box);
+  const double size = std::sqrt(box.SquareExtent());
+  const ShapeIndex volume_tag = imported_tags(domains.compound, imported, TopAbs_SOLID, 3, size);
+  const ShapeIndex surface_tag = imported_tags(domains.compound, imported, TopAbs_FACE, 2, size);
+  ModelMap m;
+  m.region_volumes.resize(domains.regions.size());
+  for (std::size_t k = 0; k < domains.regions.size(); ++k)
+    for (const TopoDS_Shape& s : domains.regions[k].solids) {
+      const int* tag = volume_tag.Seek(s);
+      if (!tag) throw MeshError("mesh: a solid of region " + domains.regions[k].name + " is not in the gmsh model");
+      m.region_volumes[k].push_back(*tag);
+      m.region_of_volume[*tag] = static_cast<int>(k);
+    }
+  if (static_cast<int>(m.region_of_volume.size()) != volume_tag.Extent())
+    throw MeshError("mesh: a gmsh volume belongs to no region");
+  for (const brep::NamedFace& f : domains.faces) {
+    const int* tag = surface_tag.Seek(f.face);
+    if (!tag) throw MeshError("mesh: face " + f.name + " is not in the gmsh model");
+    m.surfaces.push_back({*tag, f.face, f.name});
+    m.groups[group_by == GroupBy::Kind ? brep::feature_kind(f.name) : f.name].push_back(*tag);
+  }
+  if (static_cast<int>(m.surfaces.size()) != surface_tag.Extent()) throw MeshError("mesh: a gmsh surface has no named face");
+  return m;
 }
 
-// Index of the shape in `ours` that matches gmsh entity (dim, tag): same centre (1e-6 of the part size)
-// and same size (1e-6 relative). -1 when none.
-int match(const std::vector<Props>& ours, const Props& g, double size) {
-  int best = -1;
-  double best_d = HUGE_VAL;
-  for (std::size_t i = 0; i < ours.size(); ++i) {
-    const double d = (ours[i].centre - g.centre).norm();
-    if (d < best_d && std::abs(ours[i].mass - g.mass) <= 1e-6 * std::max(std::abs(g.mass), 1e-12)) {
-      best_d = d;
-      best = static_cast<int>(i);
+// Physical groups (regions, surface groups) and the names of the elementary entities.
+void name_model(const ConformalDomains& domains, const ModelMap& m) {
+  for (std::size_t k = 0; k < domains.regions.size(); ++k) {
+    if (m.region_volumes[k].empty()) throw MeshError("mesh: region " + domains.regions[k].name + " has no gmsh volume");
+    const int g = gmsh::model::addPhysicalGroup(3, m.region_volumes[k]);
+    gmsh::model::setPhysicalName(3, g, domains.regions[k].name);
+    for (int v : m.region_volumes[k]) gmsh::model::setEntityName(3, v, domains.regions[k].name);
+  }
+  for (const auto& [name, tags] : m.groups) {
+    const int g = gmsh::model::addPhysicalGroup(2, tags);
+    gmsh::model::setPhysicalName(2, g, name);
+  }
+  for (const ModelSurface& s : m.surfaces) gmsh::model::setEntityName(2, s.tag, s.name);
+}
+
+// Nodes, tetrahedra per region and boundary triangles per group from gmsh; the interface triangles
+// (surfaces between volumes of two regions) on the side.
+MeshData extract_mesh(const ConformalDomains& domains, const ModelMap& m, std::vector<InterfaceTriangle>& interface) {
+  MeshData data;
+  std::vector<std::size_t> tags;
+  std::vector<double> coord, param;
+  gmsh::model::mesh::getNodes(tags, coord, param, -1, -1, false, false);
+  std::unordered_map<std::size_t, std::size_t> index;
+  index.reserve(tags.size());
+  data.points.resize(tags.size());
+  for (std::size_t i = 0; i < tags.size(); ++i) {
+    index[tags[i]] = i;
+    data.points[i] = {coord[3 * i], coord[3 * i + 1], coord[3 * i + 2]};
+  }
+  for (std::size_t k = 0; k < domains.regions.size(); ++k) {
+    MeshData::Block block{domains.regions[k].name, domains.regions[k].fluid, {}};
+    for (int vtag : m.region_volumes[k]) {
+      std::vector<std::size_t> etags, ntags;
+      gmsh::model::mesh::getElementsByType(4, etags, ntags, vtag);  // 4-node tetrahedra
+      for (std::size_t e = 0; e + 3 < ntags.size(); e += 4)
+        block.tets.push_back({index.at(ntags[e]), index.at(ntags[e + 1]), index.at(ntags[e + 2]), index.at(ntags[e + 3])});
+    }
+    data.blocks.push_back(std::move(block));
+  }
+  std::map<int, int> group_of_surface;
+  for (const auto& [name, stags] : m.groups) {
+    for (int t : stags) group_of_surface[t] = static_cast<int>(data.group_names.size());
+    data.group_names.push_back(name);
+  }
+  for (const ModelSurface& s : m.surfaces) {
+    std::vector<int> up, down;
+    gmsh::model::getAdjacencies(2, s.tag, up, down);
+    std::set<int> sides;
+    for (int v : up) sides.insert(m.region_of_volume.at(v));
+    std::vector<std::size_t> etags, ntags;
+    gmsh::model::mesh::getElementsByType(2, etags, ntags, s.tag);  // 3-node triangles
+    for (std::size_t e = 0; e + 2 < ntags.size(); e += 3) {
+      const std::array<std::size_t, 3> t{index.at(ntags[e]), index.at(ntags[e + 1]), index.at(ntags[e + 2])};
+      data.triangles.push_back({t, group_of_surface.at(s.tag)});
+      if (sides.size() == 2)
+        interface.push_back({t, {static_cast<std::size_t>(*sides.begin()), static_cast<std::size_t>(*sides.rbegin())}});
     }
   }
-  return best_d <= 1e-6 * size ? best : -1;
-}
-
-// Volume to 1e-7 relative (the plain Gauss rule used for matching is off by up to 1e-2 on thin B-spline walls).
-double accurate_volume(const TopoDS_Shape& s) {
-  GProp_GProps g;
-  BRepGProp::VolumeProperties(s, g, 1e-7, true);
-  return g.Mass();
-}
-
-bool is_outer_metal(const std::string& kind) {
-  return kind == "blade_wall" || kind == "hub" || kind == "casing" || kind == "tip_cap" || kind == "hub_floor";
-}
-
-// Smallest radius of curvature of a face: exact for cylinders, cones and spheres (the common tool
-// shapes), else the largest principal curvature sampled on a 9 x 9 grid. Infinity for planes.
-double smallest_curvature_radius(const TopoDS_Face& face) {
-  const BRepAdaptor_Surface s(face);
-  switch (s.GetType()) {
-    case GeomAbs_Plane: return HUGE_VAL;
-    case GeomAbs_Cylinder: return s.Cylinder().Radius();
-    case GeomAbs_Sphere: return s.Sphere().Radius();
-    default: break;
-  }
-  double kmax = 0;
-  BRepLProp_SLProps props(s, 2, 1e-9);
-  for (int i = 0; i <= 8; ++i)
-    for (int j = 0; j <= 8; ++j) {
-      const double u = s.FirstUParameter() + (s.LastUParameter() - s.FirstUParameter()) * (0.02 + 0.96 * i / 8);
-      const double v = s.FirstVParameter() + (s.LastVParameter() - s.FirstVParameter()) * (0.02 + 0.96 * j / 8);
-      props.SetParameters(u, v);
-      if (props.IsCurvatureDefined()) kmax = std::max({kmax, std::abs(props.MaxCurvature()), std::abs(props.MinCurvature())});
-    }
-  return kmax > 0 ? 1 / kmax : HUGE_VAL;
+  return data;
 }
 
 }  // namespace
@@ -143,11 +184,22 @@ nlohmann::ordered_json MeshResult::to_json() const {
          {"inverted", inverted},
          {"min_quality", min_quality},
          {"quality_measure", "radius ratio 3 r_in / R_circ (1 = regular tetrahedron)"},
+         {"interface_triangles", interface_triangles},
+         {"nonconformal_interface_triangles", nonconformal_triangles},
+         {"surface_algorithms",
+          {{"frontal_delaunay", surfaces_frontal_delaunay}, {"delaunay", surfaces_delaunay}, {"remeshed_meshadapt", surfaces_remeshed}}},
+         {"size_field_samples", size_samples},
          {"regions", regions_j},
          {"surface_groups", groups},
          {"files", files_j},
          {"notes", notes},
-         {"timings_s", {{"geometry", seconds_geometry}, {"surface", seconds_surface}, {"volume", seconds_volume}, {"total", seconds_total}}}};
+         {"timings_s",
+          {{"geometry", seconds_geometry},
+           {"sizes", seconds_sizes},
+           {"surface", seconds_surface},
+           {"volume", seconds_volume},
+           {"quality_and_files", seconds_output},
+           {"total", seconds_total}}}};
   if (coolant_brep_volume > 0) {
     // The coolant fills what the features removed except the inserts standing in it.
     const double expected = removed_volume - insert_volume;
@@ -162,15 +214,108 @@ nlohmann::ordered_json MeshResult::to_json() const {
   return j;
 }
 
+namespace {
+
+using Report = std::function<void(const std::string& step, double fraction)>;
+
+// Counts, quality and volumes per region, conformity of the interfaces, triangles per surface group.
+void statistics(const ConformalDomains& domains, const ModelMap& model, const MeshData& data,
+                const std::vector<InterfaceTriangle>& interface, MeshResult& r) {
+  r.nodes = data.points.size();
+  std::vector<const std::vector<std::array<std::size_t, 4>>*> blocks;
+  for (std::size_t k = 0; k < domains.regions.size(); ++k) {
+    const MeshData::Block& block = data.blocks[k];
+    RegionMesh rm{block.name, block.fluid, tet_quality(data.points, block.tets), 0};
+    for (const auto& s : domains.regions[k].solids) rm.brep_volume += accurate_volume(s);
+    if (rm.fluid) r.coolant_mesh_volume += rm.tets.volume;
+    r.tetrahedra += rm.tets.elements;
+    r.inverted += rm.tets.inverted;
+    r.regions.push_back(rm);
+    blocks.push_back(&block.tets);
+  }
+  r.min_quality = 1;
+  for (const auto& rm : r.regions) r.min_quality = std::min(r.min_quality, rm.tets.min_quality);
+  r.interface_triangles = interface.size();
+  r.nonconformal_triangles = nonconformal_triangles(interface, blocks);
+  r.triangles = data.triangles.size();
+  std::vector<std::size_t> per_group(data.group_names.size(), 0);
+  for (const auto& t : data.triangles) ++per_group[static_cast<std::size_t>(t.group)];
+  for (std::size_t g = 0; g < data.group_names.size(); ++g)
+    r.surfaces.push_back({data.group_names[g], per_group[g], static_cast<int>(model.groups.at(data.group_names[g]).size())});
+}
+
+// Everything done in gmsh: import, names, sizes, surface and volume mesh, statistics, files.
+void mesh_domains(const ConformalDomains& domains, const FileWriter& files, const MeshOptions& o, const Report& report,
+                  Clock::time_point t_start, MeshResult& r) {
+  GmshSession session;
+  gmsh::model::add("coolinggen");
+  gmsh::vectorpair imported;
+  gmsh::model::occ::importShapesNativePointer(&domains.compound, imported, /*highestDimOnly=*/false);
+  gmsh::model::occ::synchronize();
+  const ModelMap model = match_model(domains, imported, o.groups);
+  name_model(domains, model);
+  r.seconds_geometry = since(t_start);
+
+  auto t = Clock::now();
+  const std::unique_ptr<GradedSizeField> field = install_sizes(model.surfaces, o);
+  r.size_samples = field->samples();
+  r.seconds_sizes = since(t);
+  gmsh::option::setNumber("Mesh.Algorithm3D", 10);  // HXT: parallel Delaunay
+  gmsh::option::setNumber("Mesh.Optimize", o.optimize ? 1 : 0);
+  gmsh::option::setNumber("General.NumThreads", o.threads);
+  gmsh::option::setNumber("Mesh.MaxNumThreads1D", o.threads);
+  gmsh::option::setNumber("Mesh.MaxNumThreads2D", o.threads);
+  gmsh::option::setNumber("Mesh.MaxNumThreads3D", o.threads);
+
+  report("surface mesh", 0.25);
+  t = Clock::now();
+  const SurfaceMeshStats stats = mesh_surfaces(model.surfaces);
+  r.surfaces_frontal_delaunay = stats.frontal_delaunay;
+  r.surfaces_delaunay = stats.delaunay;
+  r.surfaces_remeshed = stats.remeshed;
+  for (const std::string& f : stats.remeshed)
+    r.notes.push_back("face " + f + ": folded triangles after Delaunay, re-meshed with MeshAdapt");
+  r.seconds_surface = since(t);
+  report("volume mesh", 0.45);
+  t = Clock::now();
+  generate(3, "volume mesh");
+  r.seconds_volume = since(t);
+
+  // gmsh writes mesh.msh; then the mesh comes over and gmsh's copy is freed before the statistics and
+  // the .vtu files (on the built-in example that copy is the larger part of the peak memory).
+  report("quality and files", 0.9);
+  t = Clock::now();
+  if (o.write_msh) {
+    gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
+    gmsh::option::setNumber("Mesh.SaveAll", 0);
+    files("mesh.msh", [&](const std::filesystem::path& target) {
+      write_renamed(target, [&](const std::filesystem::path& tmp) { gmsh::write(tmp.string()); });
+    });
+    r.files.push_back("mesh.msh");
+  }
+  std::vector<InterfaceTriangle> interface;
+  const MeshData data = extract_mesh(domains, model, interface);
+  gmsh::model::mesh::clear();
+  statistics(domains, model, data, interface, r);
+  if (o.write_vtu) {
+    const auto vtu = write_vtu_files(files, data);
+    r.files.insert(r.files.end(), vtu.begin(), vtu.end());
+  }
+  r.seconds_output = since(t);
+}
+
+}  // namespace
+
 MeshResult mesh_blade(const brep::Part& part, const TopoDS_Shape& uncooled, const std::vector<brep::NamedFace>& uncooled_faces,
                       const FileWriter& files, const MeshOptions& o, ProgressSink* progress) {
   if (part.empty()) throw MeshError("mesh: the part has no bodies");
   if (!(o.max_size > 0) || !(o.min_size > 0) || o.min_size > o.max_size)
     throw MeshError("mesh: sizes must satisfy 0 < min_size <= max_size");
+  if (!(o.size_growth > 0) || o.size_growth > 2) throw MeshError("mesh: size_growth must be in (0, 2]");
   if (!o.metal && !o.coolant) throw MeshError("mesh: neither metal nor coolant selected");
   const auto t_start = Clock::now();
   // Steps with their share of a typical run (for the progress bar); a stop is honoured between them.
-  auto report = [&](const std::string& step, double fraction) {
+  const Report report = [&](const std::string& step, double fraction) {
     check_cancel(progress, "meshing, before " + step);
     report_progress(progress, fraction, step);
   };
@@ -190,166 +335,10 @@ MeshResult mesh_blade(const brep::Part& part, const TopoDS_Shape& uncooled, cons
   if (metal.empty() && coolant.solids == 0) throw MeshError("mesh: nothing to mesh (metal off and no coolant domain)");
   // Without metal, the coolant alone still needs its faces named: fuse it with nothing.
   const ConformalDomains domains = conformal_domains(metal, coolant);
-
-  GmshSession session;
-  gmsh::model::add("coolinggen");
-  gmsh::vectorpair imported;
-  gmsh::model::occ::importShapesNativePointer(&domains.compound, imported, /*highestDimOnly=*/false);
-  gmsh::model::occ::synchronize();
-  r.seconds_geometry = since(t_start);
-
-  double size = 0;
-  {
-    std::vector<double> xyz(6);
-    gmsh::model::getBoundingBox(-1, -1, xyz[0], xyz[1], xyz[2], xyz[3], xyz[4], xyz[5]);
-    size = std::hypot(xyz[3] - xyz[0], xyz[4] - xyz[1], xyz[5] - xyz[2]);
-  }
-
-  // Volumes -> regions.
-  std::vector<Props> solid_props;
-  std::vector<int> solid_region;
-  for (std::size_t k = 0; k < domains.regions.size(); ++k)
-    for (const auto& s : domains.regions[k].solids) {
-      solid_props.push_back(occt_props(s, 3));
-      solid_region.push_back(static_cast<int>(k));
-    }
-  gmsh::vectorpair volumes, surfaces;
-  gmsh::model::getEntities(volumes, 3);
-  gmsh::model::getEntities(surfaces, 2);
-  std::vector<std::vector<int>> region_tags(domains.regions.size());
-  for (const auto& [dim, tag] : volumes) {
-    const int i = match(solid_props, gmsh_props(3, tag), size);
-    if (i < 0) throw MeshError("mesh: gmsh volume " + std::to_string(tag) + " matches no solid of the part");
-    region_tags[static_cast<std::size_t>(solid_region[static_cast<std::size_t>(i)])].push_back(tag);
-  }
-  for (std::size_t k = 0; k < domains.regions.size(); ++k) {
-    if (region_tags[k].empty()) throw MeshError("mesh: region " + domains.regions[k].name + " has no gmsh volume");
-    const int g = gmsh::model::addPhysicalGroup(3, region_tags[k]);
-    gmsh::model::setPhysicalName(3, g, domains.regions[k].name);
-  }
-  // Surfaces -> feature groups.
-  std::vector<Props> face_props;
-  for (const auto& f : domains.faces) face_props.push_back(occt_props(f.face, 2));
-  std::map<std::string, std::vector<int>> group_tags;
-  std::map<int, int> face_of_surface;
-  for (const auto& [dim, tag] : surfaces) {
-    const int i = match(face_props, gmsh_props(2, tag), size);
-    if (i < 0) throw MeshError("mesh: gmsh surface " + std::to_string(tag) + " matches no named face");
-    const std::string& name = domains.faces[static_cast<std::size_t>(i)].name;
-    face_of_surface[tag] = i;
-    group_tags[o.groups == GroupBy::Kind ? brep::feature_kind(name) : name].push_back(tag);
-  }
-  std::map<int, std::string> group_of_surface;
-  for (const auto& [name, tags] : group_tags) {
-    const int g = gmsh::model::addPhysicalGroup(2, tags);
-    gmsh::model::setPhysicalName(2, g, name);
-    for (int t : tags) group_of_surface[t] = name;
-  }
-
-  // Sizes and algorithms.
-  gmsh::option::setNumber("Mesh.MeshSizeMax", o.max_size);
-  gmsh::option::setNumber("Mesh.MeshSizeMin", o.min_size);
-  gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", o.curvature_elements);
-  gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 1);
-  if (o.feature_curvature_elements > 0) {
-    // Small features: point sizes from each cooling face's curvature (see MeshOptions). A vertex shared
-    // by several faces (a hole's exit circle on the wall and on the opening) keeps the smallest size.
-    std::map<int, double> point_size;
-    for (const auto& [dim, tag] : surfaces) {
-      const auto& f = domains.faces[static_cast<std::size_t>(face_of_surface.at(tag))];
-      if (is_outer_metal(brep::feature_kind(f.name))) continue;
-      const double rho = smallest_curvature_radius(f.face);
-      if (!std::isfinite(rho)) continue;  // planar
-      const double h = std::clamp(2 * M_PI * rho / o.feature_curvature_elements, o.min_size, o.max_size);
-      gmsh::vectorpair pts;
-      gmsh::model::getBoundary({{2, tag}}, pts, false, false, true);
-      for (const auto& [pd, pt] : pts) {
-        auto [it, added] = point_size.emplace(pt, h);
-        if (!added) it->second = std::min(it->second, h);
-      }
-    }
-    for (const auto& [pt, h] : point_size) gmsh::model::mesh::setSize({{0, pt}}, h);
-  }
-  gmsh::option::setNumber("Mesh.Algorithm", 6);     // Frontal-Delaunay surfaces
-  gmsh::option::setNumber("Mesh.Algorithm3D", 10);  // HXT: parallel Delaunay
-  gmsh::option::setNumber("Mesh.Optimize", o.optimize ? 1 : 0);
-  gmsh::option::setNumber("General.NumThreads", o.threads);
-  gmsh::option::setNumber("Mesh.MaxNumThreads2D", o.threads);
-  gmsh::option::setNumber("Mesh.MaxNumThreads3D", o.threads);
-
   try {
-    report("surface mesh", 0.25);
-    auto t = Clock::now();
-    gmsh::model::mesh::generate(2);
-    r.seconds_surface = since(t);
-    report("volume mesh", 0.45);
-    t = Clock::now();
-    gmsh::model::mesh::generate(3);
-    r.seconds_volume = since(t);
-  } catch (const std::exception& e) {
-    throw MeshError(std::string("mesh: gmsh failed: ") + e.what() + " (" + gmsh_error() + ")");
-  }
-
-  // Nodes and elements back, quality per region.
-  report("quality and files", 0.9);
-  MeshData data;
-  {
-    std::vector<std::size_t> tags;
-    std::vector<double> coord, param;
-    gmsh::model::mesh::getNodes(tags, coord, param, -1, -1, false, false);
-    std::unordered_map<std::size_t, std::size_t> index;
-    index.reserve(tags.size());
-    data.points.resize(tags.size());
-    for (std::size_t i = 0; i < tags.size(); ++i) {
-      index[tags[i]] = i;
-      data.points[i] = {coord[3 * i], coord[3 * i + 1], coord[3 * i + 2]};
-    }
-    r.nodes = tags.size();
-    for (std::size_t k = 0; k < domains.regions.size(); ++k) {
-      MeshData::Block block{domains.regions[k].name, domains.regions[k].fluid, {}};
-      for (int vtag : region_tags[k]) {
-        std::vector<std::size_t> etags, ntags;
-        gmsh::model::mesh::getElementsByType(4, etags, ntags, vtag);  // 4-node tetrahedra
-        for (std::size_t e = 0; e + 3 < ntags.size(); e += 4)
-          block.tets.push_back({index.at(ntags[e]), index.at(ntags[e + 1]), index.at(ntags[e + 2]), index.at(ntags[e + 3])});
-      }
-      RegionMesh rm{domains.regions[k].name, domains.regions[k].fluid, tet_quality(data.points, block.tets), 0};
-      for (const auto& s : domains.regions[k].solids) rm.brep_volume += accurate_volume(s);
-      if (rm.fluid) r.coolant_mesh_volume += rm.tets.volume;
-      r.tetrahedra += rm.tets.elements;
-      r.inverted += rm.tets.inverted;
-      r.regions.push_back(rm);
-      data.blocks.push_back(std::move(block));
-    }
-    r.min_quality = 1;
-    for (const auto& rm : r.regions) r.min_quality = std::min(r.min_quality, rm.tets.min_quality);
-    std::map<std::string, SurfaceGroup> groups;
-    for (const auto& [name, tags2] : group_tags) groups[name] = {name, 0, static_cast<int>(tags2.size())};
-    for (const auto& [dim, stag] : surfaces) {
-      std::vector<std::size_t> etags, ntags;
-      gmsh::model::mesh::getElementsByType(2, etags, ntags, stag);  // 3-node triangles
-      const std::string& g = group_of_surface.at(stag);
-      const int gid = static_cast<int>(std::distance(group_tags.begin(), group_tags.find(g)));
-      for (std::size_t e = 0; e + 2 < ntags.size(); e += 3)
-        data.triangles.push_back({{index.at(ntags[e]), index.at(ntags[e + 1]), index.at(ntags[e + 2])}, gid});
-      groups[g].triangles += etags.size();
-      r.triangles += etags.size();
-    }
-    for (const auto& [name, tags2] : group_tags) data.group_names.push_back(name);
-    for (auto& [name, g] : groups) r.surfaces.push_back(g);
-  }
-
-  if (o.write_msh) {
-    gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
-    gmsh::option::setNumber("Mesh.SaveAll", 0);
-    files("mesh.msh", [&](const std::filesystem::path& target) {
-      write_renamed(target, [&](const std::filesystem::path& tmp) { gmsh::write(tmp.string()); });
-    });
-    r.files.push_back("mesh.msh");
-  }
-  if (o.write_vtu) {
-    const auto vtu = write_vtu_files(files, data);
-    r.files.insert(r.files.end(), vtu.begin(), vtu.end());
+    mesh_domains(domains, files, o, report, t_start, r);
+  } catch (const std::string& e) {  // gmsh's API throws its error messages as strings
+    throw MeshError("mesh: gmsh: " + e);
   }
   if (o.write_cgns) r.files.push_back(write_cgns_file(files, data));
   r.seconds_total = since(t_start);

@@ -6,9 +6,12 @@
 // OCCT), so gmsh meshes our exact B-rep, not a re-import through a file. gmsh entities are matched to
 // our faces and solids by centre of mass and size (gmsh computes them with the same BRepGProp).
 // Physical groups: one volume group per region ("blade", "insert_1", "coolant") and one surface group
-// per feature kind (or face name): the boundary conditions of a CFD set-up. Sizes: MeshOptions
-// (max/min size, curvature refinement on holes and fillets); 2D Frontal-Delaunay, 3D HXT (parallel
-// Delaunay). Quality and volumes are computed from the final nodes by src/mesh/mesh_quality.hpp.
+// per feature kind (or face name): the boundary conditions of a CFD set-up. Elementary entities are named
+// too (gmsh::model::setEntityName: volumes by region, surfaces by face name), which gmsh's CGNS writer
+// uses for its family names. Sizes: mesh_sizes.hpp (graded from the cooling features); 2D:
+// surface_mesh.hpp (Frontal-Delaunay, Delaunay on periodic faces with many holes, our own fold check);
+// 3D HXT (parallel Delaunay). Quality, volumes and the conformity of the metal/coolant interface are
+// computed from the final nodes by src/mesh/mesh_quality.hpp.
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
@@ -41,13 +44,21 @@ struct MeshResult {
   std::vector<SurfaceGroup> surfaces;
   std::size_t nodes = 0, triangles = 0, tetrahedra = 0, inverted = 0;
   double min_quality = 0;
+  /// Triangles of faces shared by two regions (metal/coolant, insert/coolant) and how many of them are
+  /// not a face of a tetrahedron on both sides (0 = conformal interface).
+  std::size_t interface_triangles = 0, nonconformal_triangles = 0;
+  int surfaces_frontal_delaunay = 0, surfaces_delaunay = 0;  ///< 2D algorithm per gmsh surface
+  std::vector<std::string> surfaces_remeshed;                ///< faces re-meshed with MeshAdapt (fold check)
+  std::size_t size_samples = 0;                              ///< points of the graded size field
   double removed_volume = 0;        ///< mm^3, V(uncooled) - V(blade): what the cooling features removed
   double insert_volume = 0;         ///< mm^3, bodies after the blade (inserts) standing in the cavities
   double coolant_brep_volume = 0;   ///< mm^3
   double coolant_mesh_volume = 0;   ///< mm^3, sum of the coolant tetrahedra
   std::vector<std::string> files;  ///< names written
   std::vector<std::string> notes;
-  double seconds_geometry = 0, seconds_surface = 0, seconds_volume = 0, seconds_total = 0;
+  /// geometry: coolant domain, conformal fuse, import; sizes: the size field; surface: 1D + 2D + fold
+  /// check; volume: 3D + optimisation; output: statistics and files.
+  double seconds_geometry = 0, seconds_sizes = 0, seconds_surface = 0, seconds_volume = 0, seconds_output = 0, seconds_total = 0;
 
   /// For report.json: counts, quality, volumes, groups, timings.
   nlohmann::ordered_json to_json() const;

@@ -2,9 +2,7 @@
 
 #include <BOPAlgo_Builder.hxx>
 #include <BRepAlgoAPI_Cut.hxx>
-#include <BRepGProp.hxx>
 #include <BRep_Builder.hxx>
-#include <GProp_GProps.hxx>
 #include <NCollection_DataMap.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
@@ -12,16 +10,15 @@
 #include <TopoDS.hxx>
 #include <TopExp.hxx>
 
+#include "src/brep/solid_integrals.hpp"
+
 namespace cg::mesh {
 namespace {
 
 using NameMap = NCollection_DataMap<TopoDS_Shape, std::string, TopTools_ShapeMapHasher>;
 
-double volume_of(const TopoDS_Shape& s) {
-  GProp_GProps g;
-  BRepGProp::VolumeProperties(s, g, 1e-7, /*OnlyClosed=*/true);
-  return g.Mass();
-}
+// Volume of the closed shells to 1e-7 relative (our face flux, faces in parallel).
+double volume_of(const TopoDS_Shape& s) { return brep::integrate_solid(s, 1e-7, true, brep::Integrals::Volume).volume; }
 
 // Binds the names of `faces` to what they became in an operation with history (`modified`,
 // `deleted`): a kept face keeps its name, each split piece gets it. First binding wins, so bind the

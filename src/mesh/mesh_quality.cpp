@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <unordered_map>
 
 namespace cg::mesh {
 
@@ -46,6 +47,55 @@ TetQuality tet_quality(const std::vector<Eigen::Vector3d>& points, const std::ve
   }
   q.mean_quality = sum / static_cast<double>(tets.size());
   return q;
+}
+
+namespace {
+
+// A triangle as its sorted node triple.
+struct TriKey {
+  std::size_t a, b, c;
+  bool operator==(const TriKey& o) const { return a == o.a && b == o.b && c == o.c; }
+};
+struct TriHash {
+  std::size_t operator()(const TriKey& k) const {
+    std::size_t h = k.a * 0x9E3779B97F4A7C15ull;
+    h ^= k.b + 0x9E3779B97F4A7C15ull + (h << 6) + (h >> 2);
+    h ^= k.c + 0x9E3779B97F4A7C15ull + (h << 6) + (h >> 2);
+    return h;
+  }
+};
+TriKey key(std::size_t a, std::size_t b, std::size_t c) {
+  if (a > b) std::swap(a, b);
+  if (b > c) std::swap(b, c);
+  if (a > b) std::swap(a, b);
+  return {a, b, c};
+}
+
+}  // namespace
+
+std::size_t nonconformal_triangles(const std::vector<InterfaceTriangle>& interface,
+                                   const std::vector<const std::vector<std::array<std::size_t, 4>>*>& blocks) {
+  // For each interface triangle: which of its two blocks have a tetrahedron with it as a face (bit 0, 1).
+  std::unordered_map<TriKey, std::pair<std::size_t, unsigned>, TriHash> seen;
+  seen.reserve(2 * interface.size());
+  for (std::size_t i = 0; i < interface.size(); ++i) seen[key(interface[i].nodes[0], interface[i].nodes[1], interface[i].nodes[2])] = {i, 0u};
+  for (std::size_t b = 0; b < blocks.size(); ++b)
+    for (const auto& t : *blocks[b])
+      for (int skip = 0; skip < 4; ++skip) {
+        std::size_t n[3], k = 0;
+        for (int j = 0; j < 4; ++j)
+          if (j != skip) n[k++] = t[static_cast<std::size_t>(j)];
+        const auto it = seen.find(key(n[0], n[1], n[2]));
+        if (it == seen.end()) continue;
+        const InterfaceTriangle& f = interface[it->second.first];
+        if (f.blocks[0] == b) it->second.second |= 1u;
+        if (f.blocks[1] == b) it->second.second |= 2u;
+      }
+  std::size_t bad = 0;
+  for (const auto& [k, v] : seen) bad += v.second != 3u;
+  // A triangle listed twice (the same node triple on two interface faces) counts once in `seen`: count
+  // the duplicates as non-conformal too, since two faces cannot share a triangle.
+  return bad + (interface.size() - seen.size());
 }
 
 }  // namespace cg::mesh

@@ -29,4 +29,16 @@ double tet_radius_ratio(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1, co
 /// Quality of the tetrahedra `tets` (node indices into `points`).
 TetQuality tet_quality(const std::vector<Eigen::Vector3d>& points, const std::vector<std::array<std::size_t, 4>>& tets);
 
+/// A boundary triangle on a face shared by two regions (indices of `blocks`).
+struct InterfaceTriangle {
+  std::array<std::size_t, 3> nodes;
+  std::array<std::size_t, 2> blocks;
+};
+
+/// Interface triangles that are not a face of some tetrahedron of each of their two blocks: 0 when
+/// the mesh is conformal across every interface (the regions share the interface's nodes and
+/// triangles). `blocks[b]`: the tetrahedra of block b.
+std::size_t nonconformal_triangles(const std::vector<InterfaceTriangle>& interface,
+                                   const std::vector<const std::vector<std::array<std::size_t, 4>>*>& blocks);
+
 }  // namespace cg::mesh

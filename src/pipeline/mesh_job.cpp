@@ -18,6 +18,7 @@ mesh::MeshOptions mesh_options(const config::MeshConfig& c) {
   m.min_size = c.min_size;
   m.curvature_elements = c.curvature_elements;
   m.feature_curvature_elements = c.feature_curvature_elements;
+  m.size_growth = c.size_growth;
   m.metal = c.metal;
   m.coolant = c.coolant;
   m.write_msh = c.msh;
