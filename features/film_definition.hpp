@@ -4,7 +4,6 @@
 // parameters described in the README, "Cooling features: film holes and inserts").
 // Lengths mm, angles degrees. Chordwise positions are blade-relative (src/blade/blade_coordinates.hpp):
 // 0 at the LE, (0, 1] on the suction side, [-1, 0) on the pressure side; span fractions 0 hub, 1 casing.
-#include <cstdio>
 #include <limits>
 #include <optional>
 #include <string>
@@ -83,13 +82,6 @@ struct FilmCoolingDefinition {
   bool has_holes() const { return !rows.empty() || showerhead.has_value(); }
   bool empty() const { return !has_holes() && inserts.empty(); }
 };
-
-/// A length (or angle) in film and insert messages: fixed `digits` decimals ("0.150").
-inline std::string film_mm(double x, int digits = 3) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%.*f", digits, x);
-  return b;
-}
 
 /// Film or insert input that cannot be built on this blade. `field` is the JSON path below "cooling"
 /// of the value to change (e.g. "film_rows[1].pitch_d"); the message names the hole and the limit.

@@ -12,6 +12,7 @@
 #include "features/drill_holes.hpp"
 #include "features/hole_tool.hpp"
 #include "src/algo/segment_distance.hpp"
+#include "src/core/format.hpp"
 
 namespace cg::features {
 namespace {
@@ -80,9 +81,9 @@ FilmHoleTools make_film_hole_tools(const HoleTarget& target, const std::vector<H
     const HoleSpec& a = holes[i];
     const HoleSpec& b = *other;
     const HoleSpec& later = static_cast<std::size_t>(other - holes.begin()) > i ? b : a;
-    const std::string what = "ligament between " + a.name + " and " + b.name + " is " + film_mm(out.ligament[i]) +
+    const std::string what = "ligament between " + a.name + " and " + b.name + " is " + format_number(out.ligament[i]) +
                              " mm (least metal between the holes, a lower bound), below film_limits.min_ligament = " +
-                             film_mm(limits.min_ligament) + " mm";
+                             format_number(limits.min_ligament) + " mm";
     if (a.row == b.row) throw FilmInputError(later.field + later.spacing_field, "pitch too small: " + what);
     throw FilmInputError(later.field + later.position_field, "overlapping rows " + a.row + " and " + b.row + ": " + what);
   }

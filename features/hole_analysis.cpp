@@ -9,6 +9,7 @@
 #include "src/algo/ray_surface.hpp"
 #include "src/analyze/gauss_legendre.hpp"
 #include "src/blade/blade_coordinates.hpp"
+#include "src/core/format.hpp"
 
 namespace cg::features {
 namespace {
@@ -70,7 +71,7 @@ struct HoleAnalyser::Impl {
   }
 
   [[noreturn]] static void fail(const HoleSpec& h, const std::string& sub, const std::string& what) {
-    throw FilmInputError(h.field + sub, h.name + " (span " + film_mm(h.span) + ", chord " + film_mm(h.chord) + "): " + what);
+    throw FilmInputError(h.field + sub, h.name + " (span " + format_number(h.span) + ", chord " + format_number(h.chord) + "): " + what);
   }
 
   // Chordwise coordinate of the foot of p on the outer wall (Newton from the exit's parameters, else the
@@ -121,7 +122,7 @@ HoleGeometry HoleAnalyser::Impl::analyse(const HoleSpec& h) {
   const Eigen::Vector3d base = E - s_out * d;
   const RaySurfaceHit ao = outer.first(base, d, search);
   if (!ao.found || std::abs(ao.ray_param - s_out) > 1e-6 * (1 + s_out))
-    fail(h, h.position_field, "the hole axis meets the outer wall " + film_mm(s_out - ao.ray_param) + " mm before its exit point "
+    fail(h, h.position_field, "the hole axis meets the outer wall " + format_number(s_out - ao.ray_param) + " mm before its exit point "
                          "(the hole would cut the blade elsewhere first)");
   Eigen::Vector3d n_exit = target.model->surface.normal(ao.u, ao.v);
   if (n_exit.dot(d) > 0) n_exit = -n_exit;
@@ -129,10 +130,10 @@ HoleGeometry HoleAnalyser::Impl::analyse(const HoleSpec& h) {
   const RaySurfaceHit ai = inner.first(base, d, search);
   const RaySurfaceHit ao2 = outer.first(ao.point + 1e-6 * d, d, search);
   if (ao2.found && (!ai.found || ao.ray_param + 1e-6 + ao2.ray_param < ai.ray_param))
-    fail(h, h.position_field, "reaches no chamber: its axis leaves the blade again " + film_mm(ao2.ray_param) +
+    fail(h, h.position_field, "reaches no chamber: its axis leaves the blade again " + format_number(ao2.ray_param) +
                              " mm past its exit point, before it enters the cavity");
   if (!ai.found || ai.ray_param <= s_out)
-    fail(h, h.position_field, "reaches no chamber: its axis does not enter the cavity within " + film_mm(search - s_out, 1) + " mm");
+    fail(h, h.position_field, "reaches no chamber: its axis does not enter the cavity within " + format_number(search - s_out) + " mm");
   const double sense_o = outer.sense(d, ao), sense_i = inner.sense(d, ai);
   const RaySurfaceHit af = inner.first(ai.point + 1e-6 * d, d, search);
   const double sense_f = af.found ? inner.sense(d, af) : 0;
@@ -142,7 +143,7 @@ HoleGeometry HoleAnalyser::Impl::analyse(const HoleSpec& h) {
   g.inlet_chord = chord_of(ai.point, ao, std::nan(""), &inlet_span);
   g.chamber = std::isnan(g.inlet_chord) ? -1 : target.chamber_at(g.inlet_chord);
   if (g.chamber < 0)
-    fail(h, h.position_field, "reaches no chamber: its axis enters the cavity at chord " + film_mm(g.inlet_chord) +
+    fail(h, h.position_field, "reaches no chamber: its axis enters the cavity at chord " + format_number(g.inlet_chord) +
                              ", which belongs to no chamber (a rib or beyond the core)");
   const TargetChamber& chamber = target.chambers[g.chamber];
   if (h.required_chamber > 0 && chamber.number != h.required_chamber)
@@ -157,14 +158,14 @@ HoleGeometry HoleAnalyser::Impl::analyse(const HoleSpec& h) {
     const FanDiffuser& fd = h.shape.fan;
     const double ld = fd.diffuser_length_d > 0 ? fd.diffuser_length_d * D : g.length - fd.metering_length_d * D;
     if (ld <= 0)
-      fail(h, ".fan.metering_length_d", "the metering length " + film_mm(fd.metering_length_d * D) + " mm leaves no diffuser: the "
-                                    "hole is only " + film_mm(g.length) + " mm long through the wall");
+      fail(h, ".fan.metering_length_d", "the metering length " + format_number(fd.metering_length_d * D) + " mm leaves no diffuser: the "
+                                    "hole is only " + format_number(g.length) + " mm long through the wall");
     if (ld >= g.length)
-      fail(h, dsub, "larger than the wall allows: its diffuser (" + film_mm(ld) + " mm along the axis) is longer than the "
-                    "hole through the wall (" + film_mm(g.length) + " mm at inclination " + film_mm(g.inclination_deg, 1) + " deg)");
+      fail(h, dsub, "larger than the wall allows: its diffuser (" + format_number(ld) + " mm along the axis) is longer than the "
+                    "hole through the wall (" + format_number(g.length) + " mm at inclination " + format_number(g.inclination_deg) + " deg)");
     if (h.shape.fan.edge_radius_d * D > max_edge_radius(h.shape, ld))
-      fail(h, ".fan.edge_radius_d", "edge radius " + film_mm(h.shape.fan.edge_radius_d * D) + " mm exceeds the largest the "
-                                "diffuser allows, " + film_mm(max_edge_radius(h.shape, ld)) + " mm");
+      fail(h, ".fan.edge_radius_d", "edge radius " + format_number(h.shape.fan.edge_radius_d * D) + " mm exceeds the largest the "
+                                "diffuser allows, " + format_number(max_edge_radius(h.shape, ld)) + " mm");
     prof = std::make_unique<FanProfile>(h.shape, ld);
     sd = ld;
     g.diffuser_length = ld;
@@ -192,11 +193,11 @@ HoleGeometry HoleAnalyser::Impl::analyse(const HoleSpec& h) {
       const RaySurfaceHit ho = outer.near(o, d, ao, sense_o, 0, search, search);
       const RaySurfaceHit hi = inner.near(o, d, ai, sense_i, 0, search, search);
       if (!ho.found || !hi.found || hi.ray_param <= ho.ray_param)
-        fail(h, h.position_field, "does not cross the wall cleanly into the cavity (a line of the hole at " + film_mm(rho) +
+        fail(h, h.position_field, "does not cross the wall cleanly into the cavity (a line of the hole at " + format_number(rho) +
                                  " mm from the axis misses the outer or the cavity wall)");
       const double so = ho.ray_param - s_out, si = hi.ray_param - s_out;
       if (fan && so >= sd)
-        fail(h, ".fan.diffuser_length_d", "the metering part breaks out of the outer wall: the diffuser (" + film_mm(sd) +
+        fail(h, ".fan.diffuser_length_d", "the metering part breaks out of the outer wall: the diffuser (" + format_number(sd) +
                                           " mm) is too short for the inclination and the wall curvature");
       if (fan && si <= sd)
         fail(h, dsub, "larger than the wall allows: the diffuser reaches the cavity");
@@ -241,7 +242,7 @@ HoleGeometry HoleAnalyser::Impl::analyse(const HoleSpec& h) {
       if (!hit.found) fail(h, h.position_field, "a diffuser line misses the outer wall");
       t_c = t_far - hit.ray_param / vn;
       if (t_c <= 0)
-        fail(h, ".fan.diffuser_length_d", "the metering part breaks out of the outer wall: the diffuser (" + film_mm(sd) +
+        fail(h, ".fan.diffuser_length_d", "the metering part breaks out of the outer wall: the diffuser (" + format_number(sd) +
                                           " mm) is too short for the inclination and the wall curvature");
       const RaySurfaceHit hi = inner.near(origin, v / vn, ai, sense_i, 0, search * vn, search * vn);
       if (hi.found && t_far - hi.ray_param / vn >= 0) fail(h, dsub, "larger than the wall allows: the diffuser reaches the cavity");
@@ -303,7 +304,7 @@ HoleGeometry HoleAnalyser::Impl::analyse(const HoleSpec& h) {
   if (!clear) {
     const double cos_t = n_inlet.dot(d);
     if (cos_t < 0.2)
-      fail(h, h.position_field, "enters the cavity at a grazing angle (" + film_mm(std::acos(cos_t) * 180 / kPi, 1) +
+      fail(h, h.position_field, "enters the cavity at a grazing angle (" + format_number(std::acos(cos_t) * 180 / kPi) +
                                " deg from the wall's normal)");
     const double delta = depth_n + c * cos_t;
     auto plane_s = [&](const Eigen::Vector3d& o) { return (delta - (o - ai.point).dot(n_inlet)) / cos_t - s_out; };
@@ -315,8 +316,8 @@ HoleGeometry HoleAnalyser::Impl::analyse(const HoleSpec& h) {
       worst = std::min(worst, rim_sf[q] - s_end_rim[q]);
     }
     if (worst < c)
-      fail(h, h.position_field, "the cavity behind the hole is too narrow: its tool must cross the cavity wall by " + film_mm(c) +
-                               " mm and stay " + film_mm(c) + " mm from the far wall (" + film_mm(worst) + " mm left)");
+      fail(h, h.position_field, "the cavity behind the hole is too narrow: its tool must cross the cavity wall by " + format_number(c) +
+                               " mm and stay " + format_number(c) + " mm from the far wall (" + format_number(worst) + " mm left)");
     if (fan && g.extent.s_end - r * std::sqrt(1 - cos_t * cos_t) / cos_t <= sd)
       fail(h, dsub, "larger than the wall allows: the diffuser reaches the cavity");
   }
@@ -326,8 +327,8 @@ HoleGeometry HoleAnalyser::Impl::analyse(const HoleSpec& h) {
     end_rim[q] += (s_out + s_end_rim[q]) * d;
   }
   if (reach > chamber.reach)
-    fail(h, h.position_field, "its tool would reach " + film_mm(reach) + " mm into " + chamber.name + ", which allows " +
-                             film_mm(chamber.reach) + " mm (an insert lies behind the gap)");
+    fail(h, h.position_field, "its tool would reach " + format_number(reach) + " mm into " + chamber.name + ", which allows " +
+                             format_number(chamber.reach) + " mm (an insert lies behind the gap)");
 
   // Chamber of the whole inlet, obstacles.
   for (const Eigen::Vector3d& p : inlet_rim) {
@@ -344,8 +345,8 @@ HoleGeometry HoleAnalyser::Impl::analyse(const HoleSpec& h) {
     for (const Eigen::Vector3d& p : end_rim) touch = std::min(touch, ob.distance(p));
     if (ob.needs_ligament) {
       if (lig < limits.min_ligament)
-        fail(h, ob.field.empty() ? h.position_field : ob.field, "comes " + film_mm(lig) + " mm close to " + ob.name + " where it enters the cavity; the ligament "
-                             "must be at least film_limits.min_ligament = " + film_mm(limits.min_ligament) + " mm");
+        fail(h, ob.field.empty() ? h.position_field : ob.field, "comes " + format_number(lig) + " mm close to " + ob.name + " where it enters the cavity; the ligament "
+                             "must be at least film_limits.min_ligament = " + format_number(limits.min_ligament) + " mm");
       if (lig < g.obstacle_ligament) g.obstacle_ligament = lig, g.nearest_obstacle = ob.name;
     }
     if (touch <= 0) fail(h, ob.field.empty() ? h.position_field : ob.field, "its tool would cut " + ob.name);

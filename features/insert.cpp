@@ -22,6 +22,7 @@
 #include "features/hole_tool.hpp"
 #include "src/blade/blade_coordinates.hpp"
 #include "src/brep/occt_progress.hpp"
+#include "src/core/format.hpp"
 
 namespace cg::features {
 namespace {
@@ -101,8 +102,8 @@ void check_insert_input(const InsertChamber& chamber, const InsertDefinition& de
   if (!chamber.refusal.empty()) throw FilmInputError(field + ".chamber", name + ": " + chamber.refusal);
   if (!(Z > 0)) throw FilmInputError(field + ".gap", name + ": the gap must be > 0");
   if (Z < chamber.min_gap)
-    throw FilmInputError(field + ".gap", name + ": the gap " + film_mm(Z) + " mm is below " + chamber.min_gap_reason + " (" +
-                                             film_mm(chamber.min_gap) + " mm): the gap in the corners would fall below Z");
+    throw FilmInputError(field + ".gap", name + ": the gap " + format_number(Z) + " mm is below " + chamber.min_gap_reason + " (" +
+                                             format_number(chamber.min_gap) + " mm): the gap in the corners would fall below Z");
   if (!(def.sheet_thickness > 0)) throw FilmInputError(field + ".sheet_thickness", name + ": the sheet thickness must be > 0");
   if (def.jet_spacing_x_d < 2) throw FilmInputError(field + ".jets.spacing_x_d", name + ": x/D must be >= 2");
   if (def.jet_spacing_y_d < 2) throw FilmInputError(field + ".jets.spacing_y_d", name + ": y/D must be >= 2");
@@ -126,8 +127,8 @@ InsertBuild build_insert(const blade::BladeModel& model, const InsertChamber& ch
     out.outer_surface = blade::build_inner_wall(model, blade::ThicknessField::constant(tw + Z));
     out.inner_surface = blade::build_inner_wall(model, blade::ThicknessField::constant(tw + Z + ts));
   } catch (const blade::InnerWallError& e) {
-    throw FilmInputError(field + ".gap", name + " does not fit in " + chamber.name + ": its sheet lies " + film_mm(tw + Z) +
-                                             " to " + film_mm(tw + Z + ts) + " mm inside the outer wall (" + e.what() + ")");
+    throw FilmInputError(field + ".gap", name + " does not fit in " + chamber.name + ": its sheet lies " + format_number(tw + Z) +
+                                             " to " + format_number(tw + Z + ts) + " mm inside the outer wall (" + e.what() + ")");
   }
   // Ends: the end walls moved into the chamber by the gap (outer); closed ends keep a cap of the sheet
   // thickness, open ends let the inner solid run out through the outer one's end.
@@ -231,7 +232,7 @@ InsertBuild build_insert(const blade::BladeModel& model, const InsertChamber& ch
       throw FilmInputError(field + ".jets.diameter", std::string(jn) + ": does not cross the insert's sheet");
     const RaySurfaceHit far = exit.first(ai.point + 1e-6 * d, d, 4 * (back + ts) + 1);
     if (far.found && far.ray_param < 2 * clear)
-      throw FilmInputError(field + ".jets.margin", std::string(jn) + ": the insert is only " + film_mm(far.ray_param) +
+      throw FilmInputError(field + ".jets.margin", std::string(jn) + ": the insert is only " + format_number(far.ray_param) +
                                                      " mm wide behind the jet; keep the jets further from its narrow end");
     const double so = entry.sense(d, ao), si = exit.sense(d, ai);
     double volume = 0, s_max = 0, s_min = HUGE_VAL;
