@@ -301,6 +301,7 @@ void mesh_domains(const ConformalDomains& domains, const FileWriter& files, cons
     const auto vtu = write_vtu_files(files, data);
     r.files.insert(r.files.end(), vtu.begin(), vtu.end());
   }
+  if (o.write_cgns) r.files.push_back(write_cgns_file(files, data));
   r.seconds_output = since(t);
 }
 
@@ -340,7 +341,6 @@ MeshResult mesh_blade(const brep::Part& part, const TopoDS_Shape& uncooled, cons
   } catch (const std::string& e) {  // gmsh's API throws its error messages as strings
     throw MeshError("mesh: gmsh: " + e);
   }
-  if (o.write_cgns) r.files.push_back(write_cgns_file(files, data));
   r.seconds_total = since(t_start);
   return r;
 }
