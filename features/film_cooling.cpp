@@ -58,7 +58,7 @@ FilmCoolingResult build_film_cooling(const blade::BladeModel& model, const brep:
   for (std::size_t i = 0; i < def.inserts.size(); ++i) {
     poll("insert_" + std::to_string(i + 1));
     inserts.push_back(build_insert(model, *insert_chambers[i], def.inserts[i], static_cast<int>(i) + 1,
-                                   "inserts[" + std::to_string(i) + "]", progress));
+                                   "inserts[" + std::to_string(i) + "]", progress, def.retries));
     lap("insert_" + std::to_string(i + 1));
   }
 
@@ -67,6 +67,7 @@ FilmCoolingResult build_film_cooling(const blade::BladeModel& model, const brep:
     poll("the film hole cut");
     BooleanOptions options = film_boolean_options(progress);
     options.verify_result = verify_solid_after_steps;
+    options.perturbed_retries = def.retries;
     FilmCutResult cut = cut_film_holes(blade, cavity.target, tools, options);
     out.blade = std::move(cut.blade);
     out.check = cut.check;
@@ -92,6 +93,7 @@ FilmCoolingResult build_film_cooling(const blade::BladeModel& model, const brep:
                            format_number(m.measured_sheet_max) + " mm on the built solid, configured " +
                            format_number(m.sheet_thickness) + " mm");
     rep.inserts.push_back(inserts[i].measure);
+    rep.perturbed.insert(rep.perturbed.end(), inserts[i].perturbed.begin(), inserts[i].perturbed.end());
     for (const auto& [stage, s] : inserts[i].seconds) rep.seconds.emplace_back(inserts[i].body.name + "_" + stage, s);
     out.inserts.push_back(inserts[i].body);
     out.insert_checks.push_back(inserts[i].check);

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "features/boolean_retries.hpp"
 #include "features/hole_shape.hpp"
 #include "src/core/error.hpp"
 
@@ -79,6 +80,7 @@ struct FilmCoolingDefinition {
   std::optional<ShowerheadDefinition> showerhead;   ///< "showerhead", rows named showerhead_<k>
   std::vector<InsertDefinition> inserts;            ///< "inserts", named insert_<k>
   FilmLimits limits;                                ///< "film_limits"
+  PerturbedRetries retries = PerturbedRetries::Any; ///< "booleans.allow_perturbation" (boolean_retries.hpp)
   bool has_holes() const { return !rows.empty() || showerhead.has_value(); }
   bool empty() const { return !has_holes() && inserts.empty(); }
 };

@@ -148,6 +148,7 @@ FilmCutResult cut_film_holes(const brep::NamedShape& blade, const HoleTarget& ta
     rep.boolean_runs += br.boolean_runs;
     for (const ToolReport& t : br.tools) measured[t.feature] = {t.cluster < 0 ? t.measured_volume : 0.0, t.passed};
     rep.seconds.emplace_back("boolean", br.seconds);
+    append_perturbed_tools(br, rep.perturbed);
   }
   if (!cylinders.empty()) {
     DrillOptions d;
@@ -161,6 +162,7 @@ FilmCutResult cut_film_holes(const brep::NamedShape& blade, const HoleTarget& ta
     for (const ToolReport& t : dr.fallback.tools)
       if (t.cluster < 0) measured[t.feature] = {t.measured_volume, t.passed};
     rep.boolean_runs += dr.fallback.boolean_runs;
+    append_perturbed_tools(dr.fallback, rep.perturbed);
   }
   std::vector<std::pair<std::string, double>> row_pitch;
   for (std::size_t i = 0; i < tools.holes.size(); ++i) {

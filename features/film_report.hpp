@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "features/boolean_retries.hpp"
+
 namespace cg::features {
 
 struct HoleMeasure {
@@ -65,6 +67,7 @@ struct FilmReport {
   double min_ligament = std::numeric_limits<double>::infinity();  ///< between holes, mm
   double configured_min_ligament = 0;
   int tool_clusters = 0, boolean_runs = 0;  ///< of the verified boolean step(s)
+  std::vector<PerturbedTool> perturbed;  ///< tools (holes, insert shells) that went in after a perturbed retry
   int drilled_holes = 0;  ///< holes cut by direct drilling (drill_holes.hpp); the rest went through booleans
   std::vector<std::pair<std::string, double>> seconds;  ///< stage times
   nlohmann::json to_json() const;

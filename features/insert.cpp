@@ -111,7 +111,7 @@ void check_insert_input(const InsertChamber& chamber, const InsertDefinition& de
 }
 
 InsertBuild build_insert(const blade::BladeModel& model, const InsertChamber& chamber, const InsertDefinition& def,
-                         int index, const std::string& field, ProgressSink* progress) {
+                         int index, const std::string& field, ProgressSink* progress, PerturbedRetries retries) {
   check_insert_input(chamber, def, index, field);
   const std::string name = "insert_" + std::to_string(index);
   const double tw = chamber.wall_thickness, Z = def.gap, ts = def.sheet_thickness, D = def.jet_diameter;
@@ -147,6 +147,7 @@ InsertBuild build_insert(const blade::BladeModel& model, const InsertChamber& ch
   lap("offsets");
   BooleanOptions bo;
   bo.progress = progress;
+  bo.perturbed_retries = retries;
   BooleanStep shell(BooleanOperation::Cut, bo);
   FeatureTool core;
   core.feature = name;
@@ -271,6 +272,8 @@ InsertBuild build_insert(const blade::BladeModel& model, const InsertChamber& ch
 
   out.body = {name, body};
   out.check = holes.report().check;
+  append_perturbed_tools(shell.report(), out.perturbed);
+  append_perturbed_tools(holes.report(), out.perturbed);
   InsertMeasure& m = out.measure;
   m.name = name;
   m.chamber = chamber.name;

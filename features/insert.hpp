@@ -65,6 +65,7 @@ struct InsertBuild {
   blade::InnerWall outer_surface, inner_surface;  ///< the offsets by t_w + Z and t_w + Z + t_s
   std::vector<std::pair<std::string, double>> seconds;  ///< stage times
   brep::SolidCheck check;  ///< verify_solid of the insert body (run by its last boolean step)
+  std::vector<PerturbedTool> perturbed;  ///< tools of its boolean steps that needed a perturbed retry
 };
 
 /// The checks of build_insert that need no geometry (wall, chamber refusal, gap against the fillets,
@@ -73,9 +74,10 @@ void check_insert_input(const InsertChamber& chamber, const InsertDefinition& de
 
 /// Builds insert `index` (1-based) into `chamber`. `field` is its config path below "cooling" for
 /// errors ("inserts[0]"). Throws FilmInputError when it does not fit (offset folds in the chamber, ends
-/// cross, no room for a jet line), FeatureFailure when a boolean fails.
+/// cross, no room for a jet line), FeatureFailure when a boolean fails. `retries`: boolean_retries.hpp.
 InsertBuild build_insert(const blade::BladeModel& model, const InsertChamber& chamber, const InsertDefinition& def,
-                         int index, const std::string& field, ProgressSink* progress = nullptr);
+                         int index, const std::string& field, ProgressSink* progress = nullptr,
+                         PerturbedRetries retries = PerturbedRetries::Any);
 
 /// Measures the insert against the blade on the built solids: the least distance between the bodies
 /// (BRepExtrema) and, at sample points of the insert's outer sheet, the gap along the wall normal to the

@@ -30,7 +30,7 @@ brep::NamedShape cut_passage_tools(const brep::NamedShape& part, const std::vect
 
 brep::NamedShape apply_passage_tools(const brep::NamedShape& part, const std::vector<FeatureTool>& interior,
                                      const std::vector<FeatureTool>& cuts, PassageBooleanReport& report,
-                                     bool verify_result) {
+                                     bool verify_result, PerturbedRetries retries) {
   const auto t0 = std::chrono::steady_clock::now();
   report = PassageBooleanReport{};
   brep::NamedShape current = part;
@@ -140,6 +140,7 @@ brep::NamedShape apply_passage_tools(const brep::NamedShape& part, const std::ve
   }
   BooleanOptions options;
   options.verify_result = verify_result;
+  options.perturbed_retries = retries;
   return cut_passage_tools(current, cuts, report.cut, options);
 }
 

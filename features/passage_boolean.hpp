@@ -30,7 +30,7 @@ struct PassageBooleanReport {
 /// `verify_result`: false leaves verify_solid of the result to the caller (every other check still runs).
 brep::NamedShape apply_passage_tools(const brep::NamedShape& part, const std::vector<FeatureTool>& interior,
                                      const std::vector<FeatureTool>& cuts, PassageBooleanReport& report,
-                                     bool verify_result = true);
+                                     bool verify_result = true, PerturbedRetries retries = PerturbedRetries::Any);
 
 /// Cuts `tools` from `part` through one verified BooleanStep; returns the named result and fills
 /// `report`. Throws FeatureFailure naming the feature(s) when a check fails.

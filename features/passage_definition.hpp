@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "features/boolean_retries.hpp"
 #include "src/blade/inner_wall.hpp"
 
 namespace cg::features {
@@ -131,6 +132,7 @@ class PassageInputError : public InvalidGeometry {
 struct PassagesDefinition {
   std::optional<CoreDefinition> core;
   std::vector<RadialPassageDefinition> radial_passages;
+  PerturbedRetries retries = PerturbedRetries::Any;  ///< "booleans.allow_perturbation" (boolean_retries.hpp)
   bool empty() const { return !core && radial_passages.empty(); }
 };
 

@@ -9,6 +9,8 @@
 #include <utility>
 #include <vector>
 
+#include "features/boolean_retries.hpp"
+
 namespace cg::features {
 
 /// A thickness measured on the built solid against its configured value.
@@ -55,6 +57,7 @@ struct PassageReport {
   std::vector<PassageMeasure> passages;
   std::vector<FeatureVolume> volumes;
   std::vector<ToolVolumeCheck> tools;
+  std::vector<PerturbedTool> perturbed;  ///< tools that went in after a perturbed retry
   int closed_cavities = 0;       ///< cavities without any opening (must be 0: every chamber is fed)
   bool all_chambers_fed = true;
   // Inner wall surface.

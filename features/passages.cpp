@@ -76,7 +76,7 @@ PassagesResult build_passages(const blade::BladeModel& model, const brep::NamedS
   if (core) rims = start_in_background([&core] { check_inlet_rims(*core); });
   PassageBooleanReport br;
   try {
-    out.blade = apply_passage_tools(blade, interior, cuts, br, verify_solid_after_steps);
+    out.blade = apply_passage_tools(blade, interior, cuts, br, verify_solid_after_steps, def.retries);
   } catch (...) {
     if (rims.valid()) rims.get();
     throw;
@@ -89,6 +89,7 @@ PassagesResult build_passages(const blade::BladeModel& model, const brep::NamedS
   out.report.wall_clearance = br.wall_clearance;
   for (const auto& v : br.voids) out.report.tools.push_back({v.feature, v.expected_volume, v.measured_volume, v.passed, "void"});
   for (const auto& t : br.cut.tools) out.report.tools.push_back({t.feature, t.expected_volume, t.measured_volume, t.passed, "cut"});
+  append_perturbed_tools(br.cut, out.report.perturbed);
   // The design checks measure the smooth chambers in the background while the turbulators, pins and
   // slots are booleaned in (both only read this solid: booleans here are non-destructive). The checks
   // still decide first: when one fails, that is the error, whatever the wall features did.
@@ -101,7 +102,7 @@ PassagesResult build_passages(const blade::BladeModel& model, const brep::NamedS
   std::exception_ptr wall_error;
   if (core) {
     try {
-      cooled = apply_wall_feature_tools(out.blade, out.wall_features, wall_report, verify_solid_after_steps);
+      cooled = apply_wall_feature_tools(out.blade, out.wall_features, wall_report, verify_solid_after_steps, def.retries);
       // The last step verified the final solid.
       if (!out.wall_features.steps.empty()) out.check = out.wall_features.steps.back().check;
     } catch (...) {
@@ -121,6 +122,7 @@ PassagesResult build_passages(const blade::BladeModel& model, const brep::NamedS
   out.blade = cooled;
   out.report.seconds.insert(out.report.seconds.end(), wall_report.seconds.begin(), wall_report.seconds.end());
   out.report.tools.insert(out.report.tools.end(), wall_report.tools.begin(), wall_report.tools.end());
+  for (const BooleanStepReport& step : out.wall_features.steps) append_perturbed_tools(step, out.report.perturbed);
   out.report.volumes.insert(out.report.volumes.end(), wall_report.volumes.begin(), wall_report.volumes.end());
   if (core) out.core = std::make_shared<const CoreBuild>(std::move(*core));
   return out;

@@ -48,6 +48,7 @@ struct Unit {
   double measured = 0, closure = 0, uncertainty = 0;
   int retries = 0;
   std::string perturbation;
+  bool perturbation_changed_geometry = false;
   bool passed = false;
 };
 
@@ -103,6 +104,7 @@ class Engine {
     for (Unit& u : units) {
       u.passed = false, u.measured = 0, u.closure = 0, u.uncertainty = 0, u.retries = 0;
       u.perturbation.clear();
+      u.perturbation_changed_geometry = false;
       u.expected = u.expected_before_retries;
     }
   }
@@ -244,8 +246,14 @@ class Engine {
   brep::NamedShape retry(const brep::NamedShape& part, int id, const Attempt& first, bool verify) {
     Unit& u = units[static_cast<std::size_t>(id)];
     std::string last = describe(first, u);
+    bool shift_refused = false;
     for (int k = 1; k <= opt_.max_retries; ++k) {
       const Perturbed p = perturb_tool(u.shape, u.axis, k, opt_.perturbation);
+      if (!p.same_geometry && opt_.perturbed_retries == PerturbedRetries::SameGeometry) {
+        shift_refused = true;  // a shift would move the geometry the user asked for
+        report_.warnings.push_back(u.label + ": retry " + std::to_string(k) + " (" + p.what + ") not tried: booleans.allow_perturbation is false");
+        continue;
+      }
       // A shift changes the volume a little: the independent expectation moves by the change OCCT
       // measures (Common before and after the shift), so a wrong expectation stays wrong.
       double expected = u.expected;
@@ -265,6 +273,7 @@ class Engine {
       ++u.retries;
       if (a.ok()) {
         u.perturbation = p.what;
+        u.perturbation_changed_geometry = !p.same_geometry;
         u.expected = expected;
         report_.warnings.push_back(u.label + ": accepted after retry " + std::to_string(k) + " (" + p.what + ")");
         return accept(a, {id});
@@ -273,7 +282,10 @@ class Engine {
       report_.warnings.push_back(u.label + ": retry " + std::to_string(k) + " (" + p.what + ") rejected: " + last);
     }
     failures.push_back("feature " + u.label + " could not be applied correctly (" + last + ", " +
-                       std::to_string(opt_.max_retries) + " perturbed retries failed)");
+                       (shift_refused ? std::string("no shifted retry: booleans.allow_perturbation is false; set it true to let it be moved by ") +
+                                            format_number(opt_.perturbation) + " mm"
+                                      : std::to_string(opt_.max_retries) + " perturbed retries failed") +
+                       ")");
     return part;
   }
 
@@ -488,6 +500,7 @@ brep::NamedShape BooleanStep::apply(const brep::NamedShape& part) {
       tr.cluster = cluster_of[static_cast<std::size_t>(m)];
       tr.retries = u.retries;
       tr.perturbation = u.perturbation;
+      tr.perturbation_changed_geometry = u.perturbation_changed_geometry;
       tr.passed = u.passed;
       report_.tools[static_cast<std::size_t>(m)] = tr;
     }
@@ -496,6 +509,11 @@ brep::NamedShape BooleanStep::apply(const brep::NamedShape& part) {
   report_progress(progress, 1.0, "done");
   done_ = true;
   return result;
+}
+
+void append_perturbed_tools(const BooleanStepReport& report, std::vector<PerturbedTool>& out) {
+  for (const ToolReport& t : report.tools)
+    if (!t.perturbation.empty()) out.push_back({t.feature, t.perturbation, t.perturbation_changed_geometry});
 }
 
 }  // namespace cg::features

@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "features/boolean_retries.hpp"
 #include "src/brep/named_shape.hpp"
 #include "src/brep/verify.hpp"
 #include "src/core/error.hpp"
@@ -60,6 +61,7 @@ struct BooleanOptions {
   int expected_solids = 1;             ///< solids the result must have
   int max_retries = 2;                 ///< perturbed retries of a guilty tool
   double perturbation = 0.01;          ///< mm, shift applied on a retry (rotations: 0.37 rad, 1.2 rad)
+  PerturbedRetries perturbed_retries = PerturbedRetries::Any;  ///< features/boolean_retries.hpp
   bool parallel = true;
   /// Intersect only the face pairs that can meet (features/boolean_pair_pruning.hpp). A boolean that
   /// fails any check is repeated with every pair before a tool is blamed, and the step then stays
@@ -90,6 +92,7 @@ struct ToolReport {
   int cluster = -1;            ///< index of the fused cluster of overlapping tools, -1: none
   int retries = 0;
   std::string perturbation;    ///< what the accepted retry changed, e.g. "rotated 21.2 deg about its axis"
+  bool perturbation_changed_geometry = false;  ///< the accepted retry shifted the tool
   bool passed = false;
 };
 
@@ -111,6 +114,9 @@ struct BooleanStepReport {
   int candidate_face_pairs = 0, intersected_face_pairs = 0;
   int unpruned_repeats = 0;  ///< pruned booleans that failed a check and were repeated with every pair
 };
+
+/// The tools of `report` that went in after a perturbed retry, appended to `out`.
+void append_perturbed_tools(const BooleanStepReport& report, std::vector<PerturbedTool>& out);
 
 /// Algorithm object: collect tools, apply them to a part once, read the report.
 class BooleanStep {

@@ -42,7 +42,7 @@ WallFeatureBuild build_wall_feature_tools(const blade::BladeModel& model, const 
 }
 
 brep::NamedShape apply_wall_feature_tools(const brep::NamedShape& blade, WallFeatureBuild& b, PassageReport& report,
-                                          bool verify_result) {
+                                          bool verify_result, PerturbedRetries retries) {
   const struct Group {
     const char* name;
     BooleanOperation op;
@@ -73,6 +73,7 @@ brep::NamedShape apply_wall_feature_tools(const brep::NamedShape& blade, WallFea
       BooleanOptions options;
       options.verify_result = verify_each;
       options.prune_face_pairs = !verify_each;  // the redo that locates a defect takes no shortcut
+      options.perturbed_retries = retries;
       BooleanStep step(g.op, options);
       for (const FeatureTool& t : *g.tools) step.add(t);
       current = step.apply(current);

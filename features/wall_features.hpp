@@ -39,7 +39,8 @@ WallFeatureBuild build_wall_feature_tools(const blade::BladeModel& model, const 
 /// 69 s against 28 s for the three steps' intersections on the example.) Appends stage times and
 /// per-tool volume checks to `report`, the step reports to `build`. Throws FeatureFailure when a step fails.
 /// `verify_result` false: no verify_solid at all (the caller verifies the final solid).
+/// `retries`: what a step may change to get a tool through (boolean_retries.hpp).
 brep::NamedShape apply_wall_feature_tools(const brep::NamedShape& blade, WallFeatureBuild& build, PassageReport& report,
-                                          bool verify_result = true);
+                                          bool verify_result = true, PerturbedRetries retries = PerturbedRetries::Any);
 
 }  // namespace cg::features

@@ -185,7 +185,7 @@ blade::BladeOptions blade_options(const Field& f) {
 Config parse_config(const nlohmann::json& document, const std::filesystem::path& base_dir, const std::string& default_name) {
   const Field root(document, "");
   root.expect_object({"$schema", "name", "description", "units", "flow_path", "sections", "blade", "output", "mesh",
-                      "grid", "cooling"});
+                      "grid", "cooling", "booleans"});
   Config c;
   c.source = document;
   c.name = root.has("name") ? root.at("name").string() : default_name;
@@ -206,6 +206,12 @@ Config parse_config(const nlohmann::json& document, const std::filesystem::path&
   }
   if (root.has("blade")) c.blade.options = blade_options(root.at("blade"));
   if (root.has("cooling")) c.cooling = parse_cooling(root.at("cooling"), base_dir);
+  if (root.has("booleans")) {
+    const Field b = root.at("booleans");
+    b.expect_object({"allow_perturbation"});
+    if (!b.boolean_or("allow_perturbation", true))
+      c.cooling.passages.retries = c.cooling.film.retries = features::PerturbedRetries::SameGeometry;
+  }
   c.output.product_name = c.name;
   if (root.has("output")) {
     const Field out = root.at("output");

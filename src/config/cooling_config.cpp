@@ -41,11 +41,7 @@ blade::ThicknessField wall_thickness(const Field& f) {
 features::EndWallDefinition end_wall(const Field& f) {
   f.expect_object({"thickness", "open"});
   features::EndWallDefinition e;
-  if (f.has("open")) {
-    const Field o = f.at("open");
-    if (!o.json().is_boolean()) fail(o.path(), "must be true or false");
-    e.open = o.json().get<bool>();
-  }
+  e.open = f.boolean_or("open", e.open);
   if (e.open) {
     if (f.has("thickness")) fail(f.path() + ".thickness", "an open end has no thickness");
   } else {

@@ -6,13 +6,6 @@
 namespace cg::config {
 namespace {
 
-bool boolean_or(const Field& f, const char* key, bool fallback) {
-  if (!f.has(key)) return fallback;
-  const Field b = f.at(key);
-  if (!b.json().is_boolean()) fail(b.path(), "must be true or false, got " + json_type_name(b.json()));
-  return b.json().get<bool>();
-}
-
 // An array of distinct entries of `names`: sets the flag of each entry listed, clears the others.
 void read_flags(const Field& d, std::initializer_list<const char*> names, const std::vector<bool*>& flags) {
   const std::size_t n = d.expect_array(1, names.size());
@@ -57,7 +50,7 @@ MeshConfig mesh_config(const Field& f) {
   if (f.has("formats")) read_flags(f.at("formats"), {"msh", "vtu", "cgns"}, {&m.msh, &m.vtu, &m.cgns});
   if (f.has("physical_groups")) m.group_by_face_name = f.at("physical_groups").choice({"kind", "face_name"}) == 1;
   m.threads = f.integer_or("threads", m.threads, 1, 256);
-  m.optimize = boolean_or(f, "optimize", m.optimize);
+  m.optimize = f.boolean_or("optimize", m.optimize);
   return m;
 }
 

@@ -119,6 +119,13 @@ int Field::integer_or(const char* key, int fallback, int lo, int hi) const {
   return has(key) ? at(key).integer(lo, hi) : fallback;
 }
 
+bool Field::boolean() const {
+  if (!j_->is_boolean()) fail(path_, "must be true or false, got " + json_type_name(*j_));
+  return j_->get<bool>();
+}
+
+bool Field::boolean_or(const char* key, bool fallback) const { return has(key) ? at(key).boolean() : fallback; }
+
 Eigen::Vector2d Field::pair() const {
   expect_array(2, 2);
   return {item(0).number(Range{-HUGE_VAL, HUGE_VAL}), item(1).number(Range{-HUGE_VAL, HUGE_VAL})};

@@ -48,12 +48,14 @@ class Field {
   double number(const Range& range, const char* unit = "") const;
   int integer(int lo, int hi) const;
   std::string string() const;  ///< non-empty string
+  bool boolean() const;        ///< true or false (not 0/1, not "true")
   /// String that must be one of `choices` (exact match); returns its index.
   int choice(std::initializer_list<const char*> choices) const;
 
   /// Optional members with defaults.
   double number_or(const char* key, double fallback, const Range& range, const char* unit = "") const;
   int integer_or(const char* key, int fallback, int lo, int hi) const;
+  bool boolean_or(const char* key, bool fallback) const;
 
   /// [x, y] pair of finite numbers.
   Eigen::Vector2d pair() const;

@@ -136,6 +136,14 @@ io::ReportContent report_content(const config::Config& c, const BuildResult& r, 
                       {"faces", brep::count_face_names(r.part[i].geometry)}});
   }
   rc.extra["bodies"] = bodies;
+  // Tools a boolean step let in only after a perturbed retry (features/boolean_retries.hpp).
+  nlohmann::ordered_json perturbed = nlohmann::ordered_json::array();
+  for (const auto* list : {r.cooling ? &r.cooling->perturbed : nullptr, r.film ? &r.film->perturbed : nullptr})
+    for (std::size_t i = 0; list && i < list->size(); ++i)
+      perturbed.push_back({{"feature", (*list)[i].feature}, {"change", (*list)[i].change},
+                           {"geometry_changed", (*list)[i].geometry_changed}});
+  rc.extra["booleans"] = {{"allow_perturbation", c.cooling.passages.retries == features::PerturbedRetries::Any},
+                          {"perturbed_tools", perturbed}};
   return rc;
 }
 

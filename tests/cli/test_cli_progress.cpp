@@ -170,8 +170,10 @@ BOOST_AUTO_TEST_CASE(report_says_what_was_built_from_what) {
   std::ofstream(dir.path / "a.json") << cfg.dump(2);
   std::ofstream(dir.path / "b.json") << cfg.dump();  // same content, other formatting
   cfg["blade"]["overbuild"] = 0.06;
+  cfg["booleans"] = {{"allow_perturbation", false}};
   std::ofstream(dir.path / "d.json") << cfg.dump();
   cfg["blade"]["overbuild"] = 0.05;
+  cfg.erase("booleans");
   std::string hash[3];
   int i = 0;
   for (const char* name : {"a", "b", "d"}) {
@@ -198,6 +200,17 @@ BOOST_AUTO_TEST_CASE(report_says_what_was_built_from_what) {
     BOOST_TEST(s.at("poles_3d").get<int>() > 0);
   }
   BOOST_TEST(report.at("model").at("blade_surface").at("poles_u").get<int>() > 0);
+
+  // Perturbed retries are listed (none may move the geometry when allow_perturbation is false).
+  const json d = json::parse(read_text(dir.path / "d" / "report.json"));
+  BOOST_TEST(report.at("booleans").at("allow_perturbation").get<bool>());
+  BOOST_TEST(!d.at("booleans").at("allow_perturbation").get<bool>());
+  for (const json* r : {&report, &d})
+    for (const json& t : r->at("booleans").at("perturbed_tools")) {
+      BOOST_TEST(!t.at("feature").get<std::string>().empty());
+      BOOST_TEST(!t.at("change").get<std::string>().empty());
+      if (r == &d) BOOST_TEST(!t.at("geometry_changed").get<bool>(), t.dump());
+    }
 }
 
 BOOST_AUTO_TEST_CASE(suggestions) {

@@ -68,6 +68,17 @@ BOOST_AUTO_TEST_CASE(builtin_example_parses_into_structs) {
 }
 
 // The embedded example is data/examples/hpt_rotor.json.
+// "booleans.allow_perturbation": false reaches every boolean step of the passages and the film holes.
+BOOST_AUTO_TEST_CASE(allow_perturbation_reaches_the_feature_definitions) {
+  json doc = example();
+  const config::Config a = config::parse_config(doc, ".", "test");
+  BOOST_TEST((a.cooling.passages.retries == features::PerturbedRetries::Any));
+  doc["booleans"] = {{"allow_perturbation", false}};
+  const config::Config b = config::parse_config(doc, ".", "test");
+  BOOST_TEST((b.cooling.passages.retries == features::PerturbedRetries::SameGeometry));
+  BOOST_TEST((b.cooling.film.retries == features::PerturbedRetries::SameGeometry));
+}
+
 BOOST_AUTO_TEST_CASE(builtin_example_is_the_data_example) {
   BOOST_TEST(example() == json::parse(test::read_text(COOLINGGEN_SOURCE_DIR "/data/examples/hpt_rotor.json")));
 }
@@ -134,6 +145,9 @@ BOOST_AUTO_TEST_CASE(wrong_types) {
   expect_error([](json& d) { d["flow_path"]["type"] = 3; }, "flow_path.type", "\"meridional\"");
   expect_error([](json& d) { d["flow_path"]["hub"][0] = {1, 2, 3}; }, "flow_path.hub[0]", "exactly 2");
   expect_error([](json& d) { d["sections"][0]["offset"] = {1, true}; }, "sections[0].offset[1]", "must be a number");
+  expect_error([](json& d) { d["booleans"] = {{"allow_perturbation", 0}}; }, "booleans.allow_perturbation",
+               "must be true or false, got number");
+  expect_error([](json& d) { d["booleans"] = {{"allow_perturbations", false}}; }, "booleans.allow_perturbations", "unknown");
   BOOST_CHECK_THROW(config::parse_config(json::array(), ".", "x"), config::ConfigError);
   try {
     config::parse_config_text("{\"units\": \"mm\",\n \"flow_path\": }", ".", "x");

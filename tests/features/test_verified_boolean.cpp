@@ -205,7 +205,14 @@ BOOST_AUTO_TEST_CASE(perturbed_retry_cures_a_tangent_tool) {
   const BooleanStepReport& rep = step.report();
   BOOST_TEST(rep.check.all_passed(), rep.check.failed_names());
   BOOST_TEST(rep.tools[0].retries == 2);
-  BOOST_TEST(rep.tools[0].perturbation == "shifted 0.010 mm");
+  BOOST_TEST(rep.tools[0].perturbation == "shifted 0.01 mm");
+  BOOST_TEST(rep.tools[0].perturbation_changed_geometry);
+  std::vector<PerturbedTool> perturbed;
+  append_perturbed_tools(rep, perturbed);
+  BOOST_TEST_REQUIRE(perturbed.size() == 1u);  // hole_2 went in at the first attempt
+  BOOST_TEST(perturbed[0].feature == "hole_tangent");
+  BOOST_TEST(perturbed[0].change == "shifted 0.01 mm");
+  BOOST_TEST(perturbed[0].geometry_changed);
   BOOST_TEST(rep.tools[1].retries == 0);
   // The shift (0.01 mm along (-1, 1, 0) / sqrt 2) moved the cylinder 0.01 / sqrt 2 mm out through the
   // side x = 0: the circular segment of that height is no longer removed.
@@ -215,6 +222,26 @@ BOOST_AUTO_TEST_CASE(perturbed_retry_cures_a_tangent_tool) {
   BOOST_TEST(rel(rep.tools[0].expected_volume, (kPi * r * r - segment) * 10) < 1e-6);
   BOOST_TEST(rep.boolean_runs >= 4);  // all, the tangent one alone, two retries (+ the other alone)
   BOOST_TEST(brep::count_face_names(result).at("hole_tangent") >= 1);
+}
+
+// The same tool with booleans.allow_perturbation false: the rotation is tried (same geometry) and fails,
+// the shift is not tried, and the step fails naming the feature and the option.
+BOOST_AUTO_TEST_CASE(no_shifted_retry_when_perturbation_is_not_allowed) {
+  const brep::NamedShape block = test::named_block(20, 20, 10);
+  BooleanOptions o;
+  o.perturbed_retries = PerturbedRetries::SameGeometry;
+  BooleanStep step(BooleanOperation::Cut, o);
+  step.add(cylinder_tool("hole_tangent", gp_Pnt(2, 10, -1), gp::DZ(), 2, 12, kPi * 4 * 10));
+  try {
+    step.apply(block);
+    BOOST_FAIL("the tangent tool went in without a shift");
+  } catch (const FeatureFailure& e) {
+    const std::string m = e.what();
+    BOOST_TEST(m.find("hole_tangent") != std::string::npos, m);
+    BOOST_TEST(m.find("booleans.allow_perturbation is false") != std::string::npos, m);
+  }
+  BOOST_TEST(step.report().tools[0].retries == 1);  // the rotation only
+  BOOST_TEST(step.report().tools[0].perturbation.empty());
 }
 
 // A cylinder whose seam lies exactly in a face of the part (the block's side contains the axis) is
