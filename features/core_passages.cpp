@@ -14,6 +14,7 @@
 #include <TopoDS.hxx>
 #include <gp_Ax2.hxx>
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 #include <chrono>
 #include <cmath>
@@ -187,6 +188,17 @@ void check_rib_placement(const blade::BladeCoordinates& coords, const CoreDefini
     const double ls = side_length(coords, s, true), lp = side_length(coords, s, false);
     for (std::size_t i = 0; i < def.ribs.size(); ++i) {
       const RibDefinition& r = def.ribs[i];
+      // A fillet runs along the rib's side faces from the suction to the pressure wall and meets the
+      // fillet of the other end there: each takes about its radius of the rib's length (r cot(theta / 2)
+      // at a rib-to-wall angle theta; at least r / 2 for theta up to 127 deg), so a rib shorter than its
+      // fillet radius cannot take the fillets.
+      const double length = (blade::inner_wall_point(coords, def.wall_thickness, s, r.suction_chord) -
+                             blade::inner_wall_point(coords, def.wall_thickness, s, r.pressure_chord)).norm();
+      if (r.fillet_radius > 0 && length < r.fillet_radius)
+        throw PassageInputError(rib_field(i, "fillet_radius"),
+                                "rib " + std::to_string(i + 1) + " is " + format_number(length) + " mm long between the walls at span " +
+                                    format_number(s) + ", too short for fillets of radius " + format_number(r.fillet_radius) +
+                                    " mm at both of its ends: must be < " + format_number(length) + " mm");
       const double reach = 0.5 * r.thickness + r.fillet_radius + 0.1;  // mm the rib needs beyond its chord
       if (r.suction_chord + reach / ls >= cr.suction_chord)
         throw PassageInputError(rib_field(i, "suction_chord"),
@@ -218,6 +230,15 @@ void check_rib_placement(const blade::BladeCoordinates& coords, const CoreDefini
                                 "than their thickness on the " + (ss ? "suction" : "pressure") + " side at span " +
                                     format_number(s) + ": clear width " + format_number(ss ? clear_s : clear_p) + " mm, at least " + format_number(need) +
                                     " mm needed");
+      // The fillets of both ribs on one wall take about their radii of the clear width (at least half).
+      const double fillets = 0.5 * (r.fillet_radius + q.fillet_radius), clear = std::min(clear_s, clear_p);
+      if (fillets > 0 && clear < fillets) {
+        const std::size_t k = r.fillet_radius >= q.fillet_radius ? i : i - 1;
+        throw PassageInputError(rib_field(k, "fillet_radius"),
+                                "the fillets of ribs " + std::to_string(i) + " and " + std::to_string(i + 1) + " (radii " +
+                                    format_number(q.fillet_radius) + " and " + format_number(r.fillet_radius) + " mm) do not fit in the " +
+                                    format_number(clear) + " mm of wall between them at span " + format_number(s));
+      }
     }
   }
 }
@@ -256,11 +277,62 @@ int rib_of(const std::string& name, const std::vector<RibTube>& ribs) {
 
 }  // namespace
 
+namespace {
+
+// The least width of a chamber's cross-section at `span` (its inner-wall points between the centre lines
+// of its ribs, in their best-fit plane) over 180 directions: sampled directions overestimate the least
+// width, and a circle inside the chamber is no wider than that, so an inlet wider than this cannot fit.
+double chamber_width(const blade::BladeCoordinates& coords, const CoreDefinition& def, const ChamberInfo& c, double span) {
+  std::vector<Vec3> pts;
+  constexpr int kSamples = 16;
+  for (int k = 0; k <= kSamples; ++k) {
+    const double t = static_cast<double>(k) / kSamples;
+    pts.push_back(blade::inner_wall_point(coords, def.wall_thickness, span, c.suction_from + t * (c.suction_to - c.suction_from)));
+    pts.push_back(blade::inner_wall_point(coords, def.wall_thickness, span, c.pressure_from + t * (c.pressure_to - c.pressure_from)));
+  }
+  Vec3 mean = Vec3::Zero();
+  for (const Vec3& p : pts) mean += p / static_cast<double>(pts.size());
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  for (const Vec3& p : pts) cov += (p - mean) * (p - mean).transpose();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);  // ascending: column 0 is the normal
+  const Vec3 e1 = eig.eigenvectors().col(2), e2 = eig.eigenvectors().col(1);
+  double least = HUGE_VAL;
+  for (int a = 0; a < 180; ++a) {
+    const double phi = a * kPi / 180;
+    const Vec3 dir = std::cos(phi) * e1 + std::sin(phi) * e2;
+    double lo = HUGE_VAL, hi = -HUGE_VAL;
+    for (const Vec3& p : pts) lo = std::min(lo, dir.dot(p - mean)), hi = std::max(hi, dir.dot(p - mean));
+    least = std::min(least, hi - lo);
+  }
+  return least;
+}
+
+// An inlet wider than its chamber at its end wall (the exact rim test, check_inlet_rims, needs the
+// built core: this refuses the gross cases before it).
+void check_inlet_sizes(const blade::BladeCoordinates& coords, const CoreDefinition& def) {
+  const std::vector<ChamberInfo> chambers = chambers_of(coords, def);
+  for (std::size_t m = 0; m < def.inlets.size(); ++m) {
+    const InletDefinition& in = def.inlets[m];
+    const ChamberInfo& c = chambers[static_cast<std::size_t>(in.chamber - 1)];
+    const double span = in.end == SpanEnd::Hub ? 0.0 : 1.0;
+    const double width = std::max(chamber_width(coords, def, c, span), chamber_width(coords, def, c, in.end == SpanEnd::Hub ? 0.1 : 0.9));
+    if (in.diameter > width)
+      throw PassageInputError("core.inlets[" + std::to_string(m) + "].diameter",
+                              "inlet_" + std::to_string(m + 1) + " of " + format_number(in.diameter) + " mm is wider than chamber_" +
+                                  std::to_string(in.chamber) + " at its " + (in.end == SpanEnd::Hub ? "hub" : "tip") +
+                                  " end (at most " + format_number(width) + " mm across between its ribs' centre lines): must be < " +
+                                  format_number(width) + " mm");
+  }
+}
+
+}  // namespace
+
 void check_core_definition(const blade::BladeModel& model, const CoreDefinition& def) {
   check_definition(def);
   const blade::BladeCoordinates coords(model);
   try {
     check_rib_placement(coords, def);  // computes the crossing on five spans
+    check_inlet_sizes(coords, def);
   } catch (const blade::InnerWallError& e) {
     throw PassageInputError("core.wall_thickness", e.what());
   }
@@ -437,8 +509,10 @@ void build_core_cells(const blade::BladeModel& model, const CoreDefinition& def,
         for (const auto& [e, r] : filleted) ribs.insert(r + 1);
         std::string list;
         for (int r : ribs) list += (list.empty() ? "" : ", ") + std::to_string(r);
-        throw FeatureFailure("fillets of rib(s) " + list + " failed (BRepFilletAPI_MakeFillet, " +
-                             std::to_string(fillet.NbFaultyContours()) + " faulty contours); try another fillet radius");
+        // OCCT cannot make these fillets: the user's remedy is the radius (a refusal naming it).
+        throw PassageInputError(rib_field(static_cast<std::size_t>(*ribs.begin() - 1), "fillet_radius"),
+                                "fillets of rib(s) " + list + " failed (BRepFilletAPI_MakeFillet, " +
+                                    std::to_string(fillet.NbFaultyContours()) + " faulty contours); try another fillet radius");
       }
       const TopoDS_Shape result = fillet.Shape();
       FaceNames next = names.carried(fillet, result);

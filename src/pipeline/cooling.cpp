@@ -1,6 +1,7 @@
 #include "src/pipeline/cooling.hpp"
 
 #include "features/film_cavity.hpp"
+#include "features/film_prechecks.hpp"
 #include "features/film_rows.hpp"
 #include "src/config/cooling_film_config.hpp"
 
@@ -13,7 +14,11 @@ void validate_cooling(const config::CoolingConfig& cooling, const blade::BladeMo
     throw config::cooling_error(e);
   }
   try {
-    if (cooling.film.has_holes()) features::place_film_holes(model, cooling.film);  // ms: rows on the outer wall
+    if (cooling.film.empty()) return;
+    std::vector<features::HoleSpec> holes;
+    if (cooling.film.has_holes()) holes = features::place_film_holes(model, cooling.film);  // ms: rows on the outer wall
+    const auto& core = cooling.passages.core;
+    features::check_film_definition(model, core ? &*core : nullptr, cooling.film, holes);
   } catch (const features::FilmInputError& e) {
     throw config::film_error(e);
   }
