@@ -9,6 +9,7 @@
 #include "src/config/config_error.hpp"
 #include "src/config/json_document.hpp"
 #include "src/core/format.hpp"
+#include "src/study/text_file.hpp"
 
 namespace cg::study {
 namespace {
@@ -19,25 +20,10 @@ using nlohmann::json;
 constexpr const char* kStatusFile = "status.json";
 constexpr const char* kListingFile = "study_variants.json";
 
-std::string read_text(const fs::path& f) {
-  std::ifstream in(f, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return in ? s.str() : std::string();
-}
-
 json read_json(const fs::path& f) {
   const std::string text = read_text(f);
   if (text.empty()) return nullptr;
   return json::parse(text, nullptr, /*allow_exceptions=*/false);  // discarded (an unfinished write) -> null
-}
-
-void write_text(const fs::path& target, const std::string& text) {
-  io::write_atomically(target, [&](const fs::path& tmp) {
-    std::ofstream out(tmp, std::ios::binary);
-    out << text;
-    if (!out) throw io::ExportError("cannot write " + target.string());
-  });
 }
 
 std::optional<double> number_at(const json& j, const json::json_pointer& p) {

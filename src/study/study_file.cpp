@@ -2,12 +2,12 @@
 
 #include <cmath>
 #include <fstream>
-#include <sstream>
 
 #include "src/config/config.hpp"
 #include "src/config/json_document.hpp"
 #include "src/config/json_fields.hpp"
 #include "src/core/format.hpp"
+#include "src/study/text_file.hpp"
 
 namespace cg::study {
 namespace {
@@ -20,11 +20,9 @@ std::string read_file(const fs::path& file, const std::string& field) {
   std::error_code ec;
   if (!fs::exists(file, ec)) config::fail(field, file.string() + " does not exist");
   if (fs::is_directory(file, ec)) config::fail(field, file.string() + " is a directory, not a file");
-  std::ifstream in(file, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  if (!in) config::fail(field, "cannot read " + file.string());
-  return s.str();
+  std::ifstream probe(file);
+  if (!probe) config::fail(field, "cannot read " + file.string());
+  return read_text(file);
 }
 
 Parameter parameter(const Field& f) {

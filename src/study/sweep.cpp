@@ -12,6 +12,7 @@
 #include "src/study/design.hpp"
 #include "src/study/process_pool.hpp"
 #include "src/study/study_file.hpp"
+#include "src/study/text_file.hpp"
 #include "src/study/variant_config.hpp"
 
 namespace cg::study {
@@ -136,7 +137,7 @@ SweepOutcome run_sweep(const SweepOptions& o) {
     fs::create_directories(o.output / "slurm", ec);
     out.sbatch = o.output / "study.sbatch";
     const std::string text = slurm_script(o, study.name, all.size());
-    io::write_atomically(out.sbatch, [&](const fs::path& tmp) { std::ofstream(tmp) << text; });
+    write_text(out.sbatch, text);
     fs::permissions(out.sbatch, fs::perms::owner_exec | fs::perms::group_exec, fs::perm_options::add, ec);
     return out;
   }
@@ -203,6 +204,7 @@ SweepOutcome run_sweep(const SweepOptions& o) {
     if (tabulate) write_results_csv(o.output, l);
     progress();
   };
+  progress();
   const std::vector<ProcessResult> results = run_processes(specs, pool);
   for (const ProcessResult& r : results) out.ran += r.started;
   out.interrupted = o.stop_requested && o.stop_requested();
@@ -210,6 +212,7 @@ SweepOutcome run_sweep(const SweepOptions& o) {
     write_results_csv(o.output, l);
     write_study_report(o.output, l);
   }
+  progress();
   out.wall_s = std::chrono::duration<double>(Clock::now() - t0).count();
   return out;
 }

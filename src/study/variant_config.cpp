@@ -1,12 +1,10 @@
 #include "src/study/variant_config.hpp"
 
-#include <fstream>
-#include <sstream>
-
 #include "export/atomic_file.hpp"
 #include "src/config/config.hpp"
 #include "src/pipeline/build.hpp"
 #include "src/pipeline/report.hpp"
+#include "src/study/text_file.hpp"
 
 namespace cg::study {
 namespace {
@@ -25,13 +23,6 @@ void absolute_files(json& node, const fs::path& base_dir) {
     else
       absolute_files(*it, base_dir);
   }
-}
-
-std::string read_text(const fs::path& f) {
-  std::ifstream in(f, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return in ? s.str() : std::string();
 }
 
 }  // namespace
@@ -59,7 +50,7 @@ PreparedVariant prepare_variant(const Study& s, const Variant& v, const fs::path
   try {
     const std::string text = variant_document(s, v).dump(2) + "\n";
     if (read_text(p.config_file) != text)  // an unchanged variant keeps its file (and its time stamp)
-      io::write_atomically(p.config_file, [&](const fs::path& tmp) { std::ofstream(tmp, std::ios::binary) << text; });
+      write_text(p.config_file, text);
     const config::Config c = config::load_config_file(p.config_file);
     pipeline::validate(c);
     p.input_hash = pipeline::input_hash(c);

@@ -246,12 +246,14 @@ BOOST_AUTO_TEST_CASE(sweep_builds_resumes_and_collects) {
   BOOST_TEST(contains(report_md, "| built | 2 |"), report_md);
   BOOST_TEST(contains(report_md, "| `cooling.core.wall_thickness` | 1 | 002 |"), report_md);
 
-  // Resume: nothing rebuilt.
+  // Resume: nothing rebuilt (on a terminal, with its progress line).
   const auto t0 = mtime(out / "variants/000/report.json"), t1 = mtime(out / "variants/001/report.json");
   const std::string csv = read_text(out / "results.csv");
-  const test::Run again = test::run_cli("sweep " + q(study) + " -o " + q(out) + " --jobs 2", dir.path);
+  const test::Run again = test::run_cli("sweep " + q(study) + " -o " + q(out) + " --jobs 2", dir.path, /*terminal=*/true);
   BOOST_TEST(again.exit_code == 0, again.err);
   BOOST_TEST(contains(again.out, "0 run now, 2 up to date"), again.out);
+  BOOST_TEST(contains(again.out, "\rsweep: 3/3 done (2 built, 0 failed, 1 refused), 0 remaining"), again.out);
+  BOOST_TEST(!contains(first.out, "\r"), first.out);  // not a terminal: no progress line
   BOOST_TEST(mtime(out / "variants/000/report.json") == t0);
   BOOST_TEST(read_text(out / "results.csv") == csv);
 
