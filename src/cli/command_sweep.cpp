@@ -4,6 +4,8 @@
 // this binary into DIR/variants/<id>/, DIR/results.csv and DIR/study_report.md. Exit 0 when every
 // variant has a status (built, refused, failed or timeout: see results.csv), 2 for an invalid study,
 // 6 when stopped by Ctrl-C (finished variants kept; a rerun continues).
+#include <atomic>
+#include <csignal>
 #include <cstdio>
 #include <map>
 
@@ -17,6 +19,19 @@
 
 namespace cg::cli {
 namespace {
+
+// SIGTERM (e.g. Slurm's scancel, a shutdown) stops the study as Ctrl-C does: the variants' builds are
+// asked to stop and finished ones stay.
+std::atomic<bool> g_terminated{false};
+extern "C" void on_sigterm(int) { g_terminated = true; }
+
+void install_terminate_handler() {
+  struct sigaction sa {};
+  sa.sa_handler = on_sigterm;
+  sigemptyset(&sa.sa_mask);
+  sa.sa_flags = SA_RESETHAND;
+  sigaction(SIGTERM, &sa, nullptr);
+}
 
 struct SweepArguments {
   std::string study, output, only, emit, collect;
@@ -52,7 +67,8 @@ int run_sweep_command(const SweepArguments& a) {
   o.only = a.only;
   o.emit = a.emit == "slurm" ? study::Emit::kSlurm : study::Emit::kNone;
   ConsoleProgress interrupt(false);  // reads the Ctrl-C flag (install_interrupt_handler in main)
-  o.stop_requested = [&interrupt] { return interrupt.stop_requested(); };
+  install_terminate_handler();
+  o.stop_requested = [&interrupt] { return interrupt.stop_requested() || g_terminated; };
   const bool terminal = !a.quiet && ConsoleProgress::stdout_is_terminal();
   std::size_t width = 0;
   if (terminal)
@@ -70,7 +86,7 @@ int run_sweep_command(const SweepArguments& a) {
     return kOk;
   }
   if (r.interrupted)
-    throw Stopped("interrupted (Ctrl-C): " + counts_text(r.listing) + "; finished variants kept in " + a.output +
+    throw Stopped(std::string(g_terminated ? "terminated (SIGTERM)" : "interrupted (Ctrl-C)") + ": " + counts_text(r.listing) + "; finished variants kept in " + a.output +
                   "/variants, results.csv lists the rest as pending; rerun the same command to continue");
   if (!a.quiet)
     std::printf("%s: %zu variants (%s); %d run now, %d up to date; %.1f s; wrote %s/results.csv\n", r.listing.name.c_str(),

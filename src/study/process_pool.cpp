@@ -79,7 +79,14 @@ std::vector<ProcessResult> run_processes(const std::vector<ProcessSpec>& specs, 
       }
     }
     while (!stopping && next < specs.size() && static_cast<int>(running.size()) < std::max(1, o.jobs)) {
-      running.push_back({next, start(specs[next]), Clock::now(), false, false, Clock::now()});
+      pid_t pid = -1;
+      try {
+        pid = start(specs[next]);
+      } catch (const Error&) {  // no process left behind
+        for (const Running& r : running) kill(-r.pid, SIGKILL), waitpid(r.pid, nullptr, 0);
+        throw;
+      }
+      running.push_back({next, pid, Clock::now(), false, false, Clock::now()});
       results[next].started = true;
       ++next;
     }

@@ -207,7 +207,9 @@ SweepOutcome run_sweep(const SweepOptions& o) {
   progress();
   const std::vector<ProcessResult> results = run_processes(specs, pool);
   for (const ProcessResult& r : results) out.ran += r.started;
-  out.interrupted = o.stop_requested && o.stop_requested();
+  bool unfinished = false;
+  for (const ResultRow& row : l.rows) unfinished = unfinished || row.status == Status::kPending;
+  out.interrupted = unfinished && o.stop_requested && o.stop_requested();
   if (tabulate) {
     write_results_csv(o.output, l);
     write_study_report(o.output, l);
