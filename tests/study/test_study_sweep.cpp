@@ -21,6 +21,7 @@
 #include "src/config/config_error.hpp"
 #include "src/study/design.hpp"
 #include "src/study/field_path.hpp"
+#include "src/study/process_pool.hpp"
 
 namespace fs = std::filesystem;
 using namespace cg;
@@ -301,4 +302,44 @@ BOOST_AUTO_TEST_CASE(timeout_is_a_row) {
   BOOST_TEST(rows[0].at("exit_code") == "6");
   BOOST_TEST(rows[0].at("error").rfind("time limit of 0.2 s reached: stopped", 0) == 0u, rows[0].at("error"));
   BOOST_TEST(rows[1].at("status") == "refused");
+}
+
+// The process pool on stand-in programs whose behaviour is certain: a hang is killed at its limit, a
+// crash is reported with its signal, an exit code passes through, at most `jobs` run at once, and a
+// stop request interrupts the running ones and starts no more.
+BOOST_AUTO_TEST_CASE(process_pool_outcomes) {
+  TempDir dir("study_pool");
+  const auto spec = [&](const std::string& script, double kill_after = 0) {
+    study::ProcessSpec s;
+    s.argv = {"/bin/sh", "-c", script};
+    s.stdout_file = dir.path / "out.txt";
+    s.stderr_file = dir.path / "err.txt";
+    s.kill_after_s = kill_after;
+    return s;
+  };
+  study::PoolOptions o;
+  o.jobs = 2;
+  int finished = 0;
+  o.on_finished = [&](std::size_t, const study::ProcessResult&) { ++finished; };
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto r = study::run_processes({spec("exec sleep 30", 0.3), spec("kill -SEGV $$"), spec("exit 3")}, o);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  BOOST_TEST(finished == 3);
+  BOOST_TEST(r[0].killed_for_time);
+  BOOST_TEST(r[0].signal == SIGKILL);
+  BOOST_TEST(r[1].signal == SIGSEGV);
+  BOOST_TEST(r[1].exit_code == -1);
+  BOOST_TEST(!r[1].killed_for_time);
+  BOOST_TEST(r[2].exit_code == 3);
+  BOOST_TEST(seconds < 10, seconds);  // the 30 s hang did not hold the pool (limit 0.3 s, polling 20 ms)
+
+  // Stop after 0.3 s: the two running sleeps get SIGINT, the third never starts.
+  o.stop_requested = [t0 = std::chrono::steady_clock::now()] {
+    return std::chrono::steady_clock::now() - t0 > std::chrono::milliseconds(300);
+  };
+  const auto s = study::run_processes({spec("exec sleep 30"), spec("exec sleep 30"), spec("exec sleep 30")}, o);
+  BOOST_TEST(s[0].interrupted);
+  BOOST_TEST(s[0].signal == SIGINT);
+  BOOST_TEST(s[1].signal == SIGINT);
+  BOOST_TEST(!s[2].started);
 }
