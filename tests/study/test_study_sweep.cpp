@@ -343,3 +343,40 @@ BOOST_AUTO_TEST_CASE(process_pool_outcomes) {
   BOOST_TEST(s[1].signal == SIGINT);
   BOOST_TEST(!s[2].started);
 }
+
+// The base inline or by a path relative to the study file, a grid's order (the last parameter fastest)
+// and "outputs" mapped onto the variant's output formats; --emit slurm checks and writes the variants
+// without building any.
+BOOST_AUTO_TEST_CASE(bases_grid_and_outputs) {
+  TempDir dir("study_bases");
+  fs::create_directories(dir.path / "configs");
+  json base = json::parse(read_text(kBase));
+  base["output"]["step_schema"] = "AP214";
+  write(dir.path / "configs/base.json", base.dump());
+  json s{{"base", "configs/base.json"},
+         {"parameters",
+          {{{"path", "cooling.core.ribs[0].suction_chord"}, {"values", {0.44, 0.48}}},
+           {{"path", "cooling.core.wall_thickness"}, {"range", {0.9, 1.1}}, {"levels", 3}}}},
+         {"design", {{"type", "grid"}}},
+         {"outputs", {"step", "stl"}}};
+  write(dir.path / "by_path.json", s.dump());
+  s["base"] = base;
+  write(dir.path / "inline.json", s.dump());
+  for (const char* name : {"by_path", "inline"}) {
+    const fs::path out = dir.path / (std::string(name) + "_out");
+    const test::Run r = test::run_cli("sweep " + q(dir.path / (std::string(name) + ".json")) + " -o " + q(out) + " --emit slurm", dir.path);
+    BOOST_TEST_REQUIRE(r.exit_code == 0, r.err);
+    BOOST_TEST(contains(r.out, "(6 array tasks, 6 pending)"), r.out);
+    BOOST_TEST(contains(read_text(out / "study.sbatch"), "#SBATCH --array=0-5%"));
+    const double expect[6][2] = {{0.44, 0.9}, {0.44, 1.0}, {0.44, 1.1}, {0.48, 0.9}, {0.48, 1.0}, {0.48, 1.1}};
+    for (int i = 0; i < 6; ++i) {
+      const fs::path vdir = out / "variants" / ("00" + std::to_string(i));
+      const json c = json::parse(read_text(vdir / "config.json"));
+      BOOST_TEST(c["cooling"]["core"]["ribs"][0]["suction_chord"].get<double>() == expect[i][0]);
+      BOOST_TEST(std::abs(c["cooling"]["core"]["wall_thickness"].get<double>() - expect[i][1]) < 1e-15);  // 0.9 + 0.2 * i / 2
+      BOOST_TEST(c["output"]["formats"] == json({"step", "stl"}));
+      BOOST_TEST(c["output"]["step_schema"] == "AP214");  // the base's other output options stay
+      BOOST_TEST(!fs::exists(vdir / "report.json"));
+    }
+  }
+}
