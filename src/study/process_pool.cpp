@@ -102,7 +102,6 @@ std::vector<ProcessResult> run_processes(const std::vector<ProcessSpec>& specs, 
         res.signal = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
         res.killed_for_time = r.killed && !r.interrupted;
         res.interrupted = r.interrupted;
-        kill(-r.pid, SIGKILL);  // anything the child left in its group
         if (o.on_finished) o.on_finished(r.index, res);
         running.erase(running.begin() + static_cast<long>(k));
         continue;
