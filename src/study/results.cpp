@@ -109,7 +109,7 @@ Metrics report_metrics(const json& r) {
 
 void write_status(const fs::path& dir, const ResultRow& row) {
   json j{{"id", row.id}, {"status", status_name(row.status)}, {"exit_code", row.exit_code ? json(*row.exit_code) : json()},
-         {"error", row.error}, {"input_hash", row.input_hash}};
+         {"error", row.error}, {"input_hash", row.input_hash}, {"process_s", row.process_s ? json(*row.process_s) : json()}};
   write_text(dir / kStatusFile, j.dump(2) + "\n");
 }
 
@@ -120,6 +120,7 @@ bool read_status(const fs::path& dir, ResultRow& row) {
   row.exit_code = j.contains("exit_code") && j["exit_code"].is_number_integer() ? std::optional<int>(j["exit_code"].get<int>()) : std::nullopt;
   row.error = j.value("error", "");
   row.input_hash = j.value("input_hash", "");
+  row.process_s = j.contains("process_s") && j["process_s"].is_number() ? std::optional<double>(j["process_s"].get<double>()) : std::nullopt;
   return true;
 }
 
@@ -182,7 +183,7 @@ void write_results_csv(const fs::path& study_dir, const StudyListing& l) {
   std::ostringstream o;
   o << "id";
   for (const std::string& p : l.parameters) o << "," << csv_cell(p);
-  o << ",status,exit_code,error,solid_volume_mm3,coolant_volume_mm3,min_wall_mm,min_rib_mm,hole_count,build_s";
+  o << ",status,exit_code,error,solid_volume_mm3,coolant_volume_mm3,min_wall_mm,min_rib_mm,hole_count,build_s,process_s";
   for (const std::string& p : passages) o << "," << csv_cell(p + "_dh_mean_mm") << "," << csv_cell(p + "_dh_min_mm");
   o << "\n";
   for (const ResultRow& r : l.rows) {
@@ -191,7 +192,7 @@ void write_results_csv(const fs::path& study_dir, const StudyListing& l) {
     for (const json& v : r.values) o << "," << csv_cell(value_text(v));
     o << "," << status_name(r.status) << "," << (r.exit_code ? std::to_string(*r.exit_code) : "") << "," << csv_cell(r.error)
       << "," << opt(m.solid_volume_mm3) << "," << opt(m.coolant_volume_mm3) << "," << opt(m.min_wall_mm) << "," << opt(m.min_rib_mm)
-      << "," << (m.hole_count ? std::to_string(*m.hole_count) : "") << "," << opt(m.build_s);
+      << "," << (m.hole_count ? std::to_string(*m.hole_count) : "") << "," << opt(m.build_s) << "," << opt(r.process_s);
     for (const std::string& name : passages) {
       const auto it = std::find_if(m.passages.begin(), m.passages.end(), [&](const Metrics::Passage& p) { return p.name == name; });
       o << "," << (it == m.passages.end() ? "" : format_number(it->dh_mean_mm)) << "," << (it == m.passages.end() ? "" : format_number(it->dh_min_mm));

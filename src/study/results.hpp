@@ -43,6 +43,7 @@ struct ResultRow {
   std::optional<int> exit_code;
   std::string error;
   std::string input_hash;
+  std::optional<double> process_s;  ///< wall time of the variant's process (none: no process ran)
   Metrics metrics;
 };
 

@@ -51,6 +51,7 @@ void record(ResultRow& row, const ProcessResult& r, const PreparedVariant& p, co
   row.exit_code = r.exit_code >= 0 ? std::optional<int>(r.exit_code) : std::nullopt;
   row.error = error_line(p.dir / "build.err");
   row.input_hash = p.input_hash;
+  row.process_s = r.seconds;
   const nlohmann::json report = read_report(p.dir);
   const bool report_matches = report.is_object() && report.value("input_hash", "") == p.input_hash;
   if (r.killed_for_time) {
@@ -66,6 +67,32 @@ void record(ResultRow& row, const ProcessResult& r, const PreparedVariant& p, co
     row.status = r.exit_code == 2 ? Status::kRefused : r.exit_code == 6 ? Status::kTimeout : Status::kFailed;
   }
   row.metrics = report_matches ? report_metrics(report) : Metrics{};
+}
+
+// An earlier run's outcome that a rerun would repeat: a report.json with the variant's input hash
+// (built, or failed checks), or a status.json with it saying refused by the build (exit 2: a config
+// error only the build finds) or failed with exit 3 (the model or solid cannot be made). Timeouts,
+// crashes and output errors are run again.
+bool up_to_date(const PreparedVariant& p, ResultRow& row) {
+  ResultRow saved = row;
+  const bool has_status = read_status(p.dir, saved) && saved.input_hash == p.input_hash;
+  if (!has_status) saved = row;
+  const nlohmann::json report = read_report(p.dir);
+  if (report.is_object() && report.value("input_hash", "") == p.input_hash) {
+    if (!has_status) {  // built before status.json was written (killed right after)
+      const bool valid = report.value("valid", false);
+      saved.status = valid ? Status::kBuilt : Status::kFailed;
+      saved.exit_code = valid ? 0 : 3;
+      saved.input_hash = p.input_hash;
+    }
+    saved.metrics = report_metrics(report);
+    row = saved;
+    return true;
+  }
+  const bool repeats = has_status && saved.exit_code && ((saved.status == Status::kRefused && *saved.exit_code == 2) ||
+                                                          (saved.status == Status::kFailed && *saved.exit_code == 3));
+  if (repeats) row = saved;
+  return repeats;
 }
 
 std::string eta_text(double s) {
@@ -142,22 +169,14 @@ SweepOutcome run_sweep(const SweepOptions& o) {
     return out;
   }
 
-  // Resume: a report.json with the variant's input hash is a finished build.
+  // Resume: what an earlier run of the same config found is kept.
   std::vector<ProcessSpec> specs;
   std::vector<std::size_t> spec_of;  // specs[k] -> prepared index
   for (std::size_t i = 0; i < prepared.size(); ++i) {
     const PreparedVariant& p = prepared[i];
     if (p.refused()) continue;
     ResultRow& row = l.rows[row_of[i]];
-    const nlohmann::json report = read_report(p.dir);
-    if (report.is_object() && report.value("input_hash", "") == p.input_hash) {
-      ResultRow saved = row;
-      if (!read_status(p.dir, saved) || saved.input_hash != p.input_hash) {
-        saved.status = report.value("valid", false) ? Status::kBuilt : Status::kFailed;
-        saved.exit_code = report.value("valid", false) ? 0 : 3;
-      }
-      saved.metrics = report_metrics(report);
-      row = saved;
+    if (up_to_date(p, row)) {
       ++out.skipped;
       continue;
     }

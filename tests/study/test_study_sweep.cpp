@@ -302,6 +302,21 @@ BOOST_AUTO_TEST_CASE(timeout_is_a_row) {
   BOOST_TEST(rows[0].at("exit_code") == "6");
   BOOST_TEST(rows[0].at("error").rfind("time limit of 0.2 s reached: stopped", 0) == 0u, rows[0].at("error"));
   BOOST_TEST(rows[1].at("status") == "refused");
+  BOOST_TEST(std::stod(rows[0].at("process_s")) > 0.2);
+  BOOST_TEST(rows[1].at("process_s").empty());  // refused before any process
+
+  // A timeout is run again; a refusal by the build (exit 2, recorded with the same input hash) is not.
+  const std::string rerun = "sweep " + q(dir.path / "study.json") + " -o " + q(dir.path / "out") + " --timeout 0.2";
+  const test::Run again = test::run_cli(rerun, dir.path);
+  BOOST_TEST(contains(again.out, "1 run now, 0 up to date"), again.out);
+  const fs::path status = dir.path / "out/variants/000/status.json";
+  json st = json::parse(read_text(status));
+  BOOST_TEST(st["status"] == "timeout");
+  st["status"] = "refused", st["exit_code"] = 2, st["error"] = "cooling.core: refused by the build";
+  write(status, st.dump());
+  const test::Run kept = test::run_cli(rerun, dir.path);
+  BOOST_TEST(contains(kept.out, "0 run now, 1 up to date"), kept.out);
+  BOOST_TEST(read_results(dir.path / "out/results.csv")[0].at("error") == "cooling.core: refused by the build");
 }
 
 // The process pool on stand-in programs whose behaviour is certain: a hang is killed at its limit, a
