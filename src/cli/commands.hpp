@@ -24,6 +24,7 @@ Command add_validate_command(CLI::App& app);
 Command add_example_command(CLI::App& app);
 Command add_mesh_command(CLI::App& app);
 Command add_grid_command(CLI::App& app);
+Command add_sweep_command(CLI::App& app);
 
 /// Options shared by the commands that run a job: CONFIG, -o DIR, -q, --timeout.
 struct JobOptions {

@@ -5,6 +5,7 @@
 //   coolinggen validate CONFIG                             parse and check the config, write nothing
 //   coolinggen example                                     print the built-in example config
 //   coolinggen grid [CONFIG] -o DIR [-q] [--timeout S]     structured grids around the sections (grid_job.hpp)
+//   coolinggen sweep STUDY -o DIR [--jobs N] [--timeout S]  a design study (src/study/sweep.hpp)
 // Exit codes (exit_codes.hpp): 0 success, 1 command line, 2 invalid config, 3 model/solid failure or a
 // failed check, 4 output error, 5 unexpected error, 6 stopped (--timeout, Ctrl-C). Errors are one line
 // on stderr.
@@ -57,7 +58,8 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("coolinggen ") + io::tool_version());
   app.require_subcommand(1);
   const std::vector<Command> commands{add_build_command(app), add_mesh_command(app), add_validate_command(app),
-                                      add_example_command(app), add_grid_command(app)};
+                                      add_example_command(app), add_grid_command(app),
+                                      add_sweep_command(app)};
 
   if (const std::string unknown = unknown_command(argc, argv, commands); !unknown.empty())
     return error_exit(kUsage, unknown);

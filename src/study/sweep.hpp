@@ -1,0 +1,47 @@
+#pragma once
+// The job of `coolinggen sweep` as a library call: load the study, expand its design, write and check
+// every variant's config (refused ones never get a process), skip the variants whose report.json
+// already carries their config's input_hash (resume), run the others as `coolinggen build` processes
+// (process_pool.hpp) and keep results.csv, status.json and study_report.md up to date (results.hpp).
+// Or, with Emit::kSlurm, write DIR/study.sbatch (a job array of `sweep --only`) instead of running.
+#include <filesystem>
+#include <functional>
+#include <string>
+
+#include "src/study/results.hpp"
+
+namespace cg::study {
+
+enum class Emit { kNone, kSlurm };
+
+struct SweepOptions {
+  std::filesystem::path study_file, output;
+  std::filesystem::path executable;  ///< the coolinggen binary the variants run (current_executable())
+  int jobs = 1;                      ///< processes at a time; with kSlurm the array's %K
+  double timeout_s = 0;              ///< --timeout of each variant's build (0: none)
+  double kill_after_s = 0;           ///< a variant's process is killed after this (0: never)
+  std::string only;                  ///< one variant: its index or id (Slurm array task); empty: all
+  Emit emit = Emit::kNone;
+  std::function<bool()> stop_requested;                 ///< Ctrl-C
+  std::function<void(const std::string&)> progress;     ///< a progress line, after each change and each second
+};
+
+struct SweepOutcome {
+  StudyListing listing;
+  int skipped = 0;           ///< up to date from an earlier run
+  int ran = 0;               ///< processes started
+  bool interrupted = false;  ///< stopped by stop_requested; unfinished variants stay pending
+  double wall_s = 0;
+  std::filesystem::path sbatch;  ///< Emit::kSlurm: the script written
+};
+
+/// Throws config::ConfigError for an invalid study (exit 2), io::ExportError when DIR cannot be written.
+SweepOutcome run_sweep(const SweepOptions& options);
+
+/// `sweep --collect DIR`: results.csv and study_report.md from the variants' status.json and report.json.
+StudyListing collect_study(const std::filesystem::path& study_dir);
+
+/// The text of study.sbatch: a job array over `variants` tasks, at most `max_parallel` at a time.
+std::string slurm_script(const SweepOptions& options, const std::string& study_name, std::size_t variants);
+
+}  // namespace cg::study
