@@ -71,6 +71,22 @@ struct Writer {
     for (const P& x : p)
       for (int d = 0; d < x.size(); ++d) out.push_back(x[d]);
   }
+  /// CurveProjector on each point of `flat` (Dim values each): all parameters, all feet, all distances.
+  template <int Dim>
+  void projections(const BSplineCurve<Dim>& c, const std::vector<double>& flat) {
+    CurveProjector<Dim> proj(c);
+    std::vector<double> pu, pd;
+    std::vector<Eigen::Matrix<double, Dim, 1>> pf;
+    for (std::size_t i = 0; i < flat.size(); i += Dim) {
+      const CurveProjection<Dim> q = proj.project(Eigen::Map<const Eigen::Matrix<double, Dim, 1>>(flat.data() + i));
+      pu.push_back(q.param);
+      pf.push_back(q.point);
+      pd.push_back(q.distance);
+    }
+    out.insert(out.end(), pu.begin(), pu.end());
+    points(pf);
+    out.insert(out.end(), pd.begin(), pd.end());
+  }
 };
 
 // Input: curve3, u, points3 (for the 3D curve); curve2 a, curve2 b, points2; surface, us, vs, points3s.
@@ -94,36 +110,14 @@ int values(const char* input, const char* output) {
     for (double x : u) w.points(c3.derivatives(x, 4));
   }
   {  // 4. c3.project(points3): u, foot, distance
-    CurveProjector<3> proj(c3);
-    std::vector<double> pu, pd;
-    std::vector<Eigen::Vector3d> pf;
-    for (std::size_t i = 0; i < p3.size(); i += 3) {
-      const CurveProjection<3> q = proj.project(Eigen::Vector3d(p3[i], p3[i + 1], p3[i + 2]));
-      pu.push_back(q.param);
-      pf.push_back(q.point);
-      pd.push_back(q.distance);
-    }
-    w.out.insert(w.out.end(), pu.begin(), pu.end());
-    w.points(pf);
-    w.out.insert(w.out.end(), pd.begin(), pd.end());
+    w.projections(c3, p3);
   }
   {  // 5. a.evaluate(u scaled into a's domain by the caller: the same u); 6. a.project(points2)
     CurveEvaluator<2> ev(a);
     std::vector<Eigen::Vector2d> P(n);
     ev.points(u.data(), n, P.data());
     w.points(P);
-    CurveProjector<2> proj(a);
-    std::vector<double> pu, pd;
-    std::vector<Eigen::Vector2d> pf;
-    for (std::size_t i = 0; i < p2.size(); i += 2) {
-      const CurveProjection<2> q = proj.project(Eigen::Vector2d(p2[i], p2[i + 1]));
-      pu.push_back(q.param);
-      pf.push_back(q.point);
-      pd.push_back(q.distance);
-    }
-    w.out.insert(w.out.end(), pu.begin(), pu.end());
-    w.points(pf);
-    w.out.insert(w.out.end(), pd.begin(), pd.end());
+    w.projections(a, p2);
   }
   {  // 7. a.intersect(b): count, then s, t, x, y, tangent per point; overlap count, s0 s1 t0 t1 each
     const CurveCurveIntersections x = intersect_curves(a, b);

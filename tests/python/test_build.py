@@ -17,15 +17,9 @@ import numpy as np
 
 import coolinggen
 from light_configs import light_blade, two_chamber_blade
+from checks import check, finish
 
 CLI = sys.argv[1]
-failures = []
-
-
-def check(condition, what):
-    if not condition:
-        failures.append(what)
-        print("FAILED:", what)
 
 
 def cli(*args, cwd=None):
@@ -344,7 +338,4 @@ for test in [test_example_and_version, test_hostile_configs, test_messages_equal
     t0 = time.time()
     test()
     print(f"{test.__name__}: {time.time() - t0:.2f} s")
-if failures:
-    print(f"{len(failures)} FAILURES")
-    sys.exit(1)
-print("all passed")
+finish()

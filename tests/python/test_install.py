@@ -8,15 +8,9 @@ import re
 import subprocess
 import sys
 import tempfile
+from checks import check, finish
 
 cmake, build_dir, readme = sys.argv[1:4]
-failures = []
-
-
-def check(condition, what):
-    if not condition:
-        failures.append(what)
-        print("FAILED:", what)
 
 
 with open(readme) as f:
@@ -48,7 +42,4 @@ with tempfile.TemporaryDirectory() as prefix:
         # Moving the 1 mm rib by 10 % of the chord changes the metal volume, by far less than 1 %.
         check(volumes[0] != volumes[1] and abs(volumes[0] - volumes[1]) < 0.01 * volumes[0], f"volumes {volumes}")
         check(all(float(r[3]) > 0 for r in rows), "clearances")
-if failures:
-    print(f"{len(failures)} FAILURES")
-    sys.exit(1)
-print("all passed")
+finish()

@@ -14,15 +14,9 @@ import numpy as np
 
 import coolinggen
 from kernel_data import bench_curve, geometry, write_time_input, write_values_input
+from checks import check, finish
 
 REFERENCE = sys.argv[1]
-failures = []
-
-
-def check(condition, what):
-    if not condition:
-        failures.append(what)
-        print("FAILED:", what)
 
 
 def bits_equal(a, b):
@@ -166,7 +160,4 @@ if __name__ == "__main__":
         t0 = time.time()
         test()
         print(f"{test.__name__}: {time.time() - t0:.2f} s")
-    if failures:
-        print(f"{len(failures)} FAILURES")
-        sys.exit(1)
-    print("all passed")
+    finish()
