@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <mutex>
 #include <sstream>
 
 #include "export/version.hpp"
@@ -74,9 +75,15 @@ double timeout_seconds(const py::handle& timeout) {
 // "<reason>: stopped in <where><after>" (the CLI's message), the library's model errors FeatureFailure.
 void run_job(PythonProgress& progress, double timeout_s, const std::string& after,
              const std::function<void(ProgressSink*)>& job) {
+  // One job at a time per process: the library makes no promise for concurrent builds in one process
+  // (parallel builds: coolinggen.study, one process each). Taken on the worker thread, without the GIL.
+  static std::mutex one_job;
   pipeline::TimeLimit limit(&progress, timeout_s);
   try {
-    run_released(progress, [&] { job(&limit); });
+    run_released(progress, [&] {
+      std::lock_guard<std::mutex> lock(one_job);
+      job(&limit);
+    });
   } catch (const Cancelled& e) {
     throw CancelledError(limit.stop_reason() + ": " + e.what() + after);  // what(): "stopped ..."
   } catch (const config::ConfigError&) {

@@ -302,6 +302,19 @@ def test_progress_gil_and_cancel():
     t.join()
     check(during > 10000, f"the Python thread counted {during} during the build")
     print(f"Python thread iterations during a build: {during}")
+    # Builds from two Python threads at once (they run one after the other inside): both valid.
+    results = [None, None]
+
+    def build_into(k):
+        results[k] = coolinggen.build(light_blade(f"thread{k}", 10.0 + k), outputs="none")
+
+    threads = [threading.Thread(target=build_into, args=(k,)) for k in range(2)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    check(all(r is not None and r.valid for r in results), f"threaded builds {results}")
+    check(results[0].report["solid"]["volume_mm3"] < results[1].report["solid"]["volume_mm3"], "10 mm < 11 mm span")
     # A callback that raises stops the build with its exception.
     try:
         coolinggen.build(light_blade(), progress=lambda *a: 1 / 0)
