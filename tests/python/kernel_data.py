@@ -65,3 +65,22 @@ def bench_curve(seed=5, n=10000):
 def write_time_input(c, u, path):
     with open(path, "w") as f:
         f.write(_curve(c) + _list(u))
+
+
+def bench_surface(seed=7, n=10000):
+    """A bicubic polynomial surface of 30 x 30 poles (bench/bench_evaluation.cpp's case) and n (u, v)
+    pairs of a 100 x 100 grid, u outer (a tessellation's order)."""
+    rng = np.random.default_rng(seed)
+    grid = np.stack(np.meshgrid(np.linspace(0, 100, 30), np.linspace(0, 100, 30), indexing="ij"), axis=2)
+    s = dict(degree_u=3, degree_v=3, knots_u=clamped_knots(3, 30, rng), knots_v=clamped_knots(3, 30, rng),
+             poles=np.concatenate([grid, rng.uniform(-10, 10, (30, 30, 1))], axis=2), weights=None)
+    side = int(round(np.sqrt(n)))
+    u, v = np.meshgrid(np.linspace(0, 1, side), np.linspace(0, 1, side), indexing="ij")
+    return s, u.ravel(), v.ravel()
+
+
+def write_surface_time_input(s, u, v, path):
+    with open(path, "w") as f:
+        f.write(f"{s['degree_u']} {s['degree_v']}\n" + _list(s["knots_u"]) + _list(s["knots_v"]))
+        f.write(f"{s['poles'].shape[0]} {s['poles'].shape[1]}\n" + _list(s["poles"]) + _list([]))
+        f.write(_list(u) + _list(v))

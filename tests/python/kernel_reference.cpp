@@ -6,6 +6,7 @@
 //                                          doubles to OUTPUT in the order of main's comments
 //   kernel_reference time INPUT REPS       best-of-REPS time of CurveEvaluator<3>::points over INPUT's
 //                                          parameters (one batch per call), printed as "ns_per_point X"
+//   kernel_reference time_surface INPUT REPS   the same for SurfaceEvaluator<3>::points
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -158,6 +159,21 @@ int values(const char* input, const char* output) {
   return std::fclose(f) == 0 ? 0 : 1;
 }
 
+// Prints the best-of-`reps` wall time of eval(P) per point of P ("ns_per_point X") and a checksum.
+template <class Eval>
+int print_best_time(int reps, std::vector<Eigen::Vector3d>& P, Eval eval) {
+  double best = 1e300, sum = 0;
+  for (int k = 0; k < reps; ++k) {
+    const auto t0 = std::chrono::steady_clock::now();
+    eval(P.data());
+    const auto t1 = std::chrono::steady_clock::now();
+    sum += P[P.size() / 2].sum();
+    best = std::min(best, std::chrono::duration<double, std::nano>(t1 - t0).count());
+  }
+  std::printf("ns_per_point %.6g\nchecksum %.17g\n", best / static_cast<double>(P.size()), sum);
+  return 0;
+}
+
 // Input: curve3, u. The loop the Python evaluate() wraps: one batch of all parameters per call into a
 // preallocated buffer.
 int time_points(const char* input, int reps) {
@@ -166,16 +182,20 @@ int time_points(const char* input, int reps) {
   const std::vector<double> u = r.list();
   CurveEvaluator<3> ev(c3);
   std::vector<Eigen::Vector3d> P(u.size());
-  double best = 1e300, sum = 0;
-  for (int k = 0; k < reps; ++k) {
-    const auto t0 = std::chrono::steady_clock::now();
-    ev.points(u.data(), u.size(), P.data());
-    const auto t1 = std::chrono::steady_clock::now();
-    sum += P[u.size() / 2].sum();
-    best = std::min(best, std::chrono::duration<double, std::nano>(t1 - t0).count());
-  }
-  std::printf("ns_per_point %.6g\nchecksum %.17g\n", best / static_cast<double>(u.size()), sum);
-  return 0;
+  return print_best_time(reps, P, [&](Eigen::Vector3d* out) { ev.points(u.data(), u.size(), out); });
+}
+
+// Input: surface, us, vs. The loop the Python evaluate(u, v) wraps: SurfaceEvaluator::points over the
+// (u, v) pairs (interleaved once, outside the timing) into a preallocated buffer.
+int time_surface_points(const char* input, int reps) {
+  Reader r{std::ifstream(input)};
+  const BSplineSurface<3> s = r.surface();
+  const std::vector<double> us = r.list(), vs = r.list();
+  std::vector<double> uv;
+  for (std::size_t i = 0; i < us.size(); ++i) uv.insert(uv.end(), {us[i], vs[i]});
+  SurfaceEvaluator<3> ev(s);
+  std::vector<Eigen::Vector3d> P(us.size());
+  return print_best_time(reps, P, [&](Eigen::Vector3d* out) { ev.points(uv.data(), us.size(), out); });
 }
 
 }  // namespace
@@ -185,7 +205,8 @@ int main(int argc, char** argv) {
     const std::string mode = argc > 1 ? argv[1] : "";
     if (mode == "values" && argc == 4) return values(argv[2], argv[3]);
     if (mode == "time" && argc == 4) return time_points(argv[2], std::stoi(argv[3]));
-    std::fprintf(stderr, "usage: kernel_reference values INPUT OUTPUT | time INPUT REPS\n");
+    if (mode == "time_surface" && argc == 4) return time_surface_points(argv[2], std::stoi(argv[3]));
+    std::fprintf(stderr, "usage: kernel_reference values INPUT OUTPUT | time INPUT REPS | time_surface INPUT REPS\n");
     return 2;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "kernel_reference: %s\n", e.what());

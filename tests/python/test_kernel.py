@@ -13,7 +13,8 @@ import time
 import numpy as np
 
 import coolinggen
-from kernel_data import bench_curve, geometry, write_time_input, write_values_input
+from kernel_data import (bench_curve, bench_surface, geometry, write_surface_time_input, write_time_input,
+                         write_values_input)
 from checks import check, finish
 
 REFERENCE = sys.argv[1]
@@ -123,36 +124,47 @@ def test_bad_input():
             pass
 
 
-def python_ns_per_point(c, u, reps):
-    c3 = curve(c)
+def best_ns_per_point(call, points, reps):
     best = 1e300
     for _ in range(reps):
         t0 = time.perf_counter()
-        c3.evaluate(u)
+        call()
         best = min(best, time.perf_counter() - t0)
-    return best / len(u) * 1e9
+    return best / points * 1e9
 
 
-def speed_ratio(reps=200, rounds=3):
-    """Best Python ns per point of evaluate() on 10 000 sorted parameters over the C++ loop's, alternating
-    the two `rounds` times (the best of each: the least disturbed by other jobs)."""
+def speed_ratios(reps=200, rounds=3):
+    """Best ns per point of BSplineCurve.evaluate(u) and BSplineSurface.evaluate(u, v) on 10 000 points,
+    Python and the C++ loop, alternating the two `rounds` times (the best of each: the least disturbed by
+    other jobs). Returns {case: (python, cpp)}."""
     c, u = bench_curve()
+    s, su, sv = bench_surface()
+    c3 = curve(c)
+    surf = coolinggen.BSplineSurface(s["degree_u"], s["degree_v"], s["knots_u"], s["knots_v"], s["poles"])
+    out = {}
     with tempfile.TemporaryDirectory() as tmp:
-        path = os.path.join(tmp, "time.txt")
-        write_time_input(c, u, path)
-        py, cpp = 1e300, 1e300
-        for _ in range(rounds):
-            out = subprocess.run([REFERENCE, "time", path, str(reps)], capture_output=True, text=True, check=True).stdout
-            cpp = min(cpp, float(out.split()[1]))
-            py = min(py, python_ns_per_point(c, u, reps))
-    return py, cpp
+        cpath, spath = os.path.join(tmp, "curve.txt"), os.path.join(tmp, "surface.txt")
+        write_time_input(c, u, cpath)
+        write_surface_time_input(s, su, sv, spath)
+        cases = {"curve": ("time", cpath, lambda: c3.evaluate(u), len(u)),
+                 "surface": ("time_surface", spath, lambda: surf.evaluate(su, sv), len(su))}
+        for name, (mode, path, call, n) in cases.items():
+            py, cpp = 1e300, 1e300
+            for _ in range(rounds):
+                text = subprocess.run([REFERENCE, mode, path, str(reps)], capture_output=True, text=True,
+                                      check=True).stdout
+                cpp = min(cpp, float(text.split()[1]))
+                py = min(py, best_ns_per_point(call, n, reps))
+            out[name] = (py, cpp)
+    return out
 
 
 def test_speed():
-    py, cpp = speed_ratio()
-    # Loose bound for a CI machine shared with other jobs; bench/bench_python_kernel.py checks 1.5.
-    check(py / cpp < 3.0, f"Python {py:.2f} ns/point vs C++ {cpp:.2f} ns/point")
-    print(f"evaluate on 10 000 points: Python {py:.2f} ns/point, C++ loop {cpp:.2f} ns/point, ratio {py / cpp:.2f}")
+    for name, (py, cpp) in speed_ratios().items():
+        # Loose bound for a CI machine shared with other jobs; bench/bench_python_kernel.py checks 1.5.
+        check(py / cpp < 3.0, f"{name}: Python {py:.2f} ns/point vs C++ {cpp:.2f} ns/point")
+        print(f"{name} evaluate on 10 000 points: Python {py:.2f} ns/point, C++ loop {cpp:.2f} ns/point, "
+              f"ratio {py / cpp:.2f}")
 
 
 if __name__ == "__main__":
