@@ -124,6 +124,46 @@ def test_bad_input():
             pass
 
 
+def test_random_bad_input():
+    """Random curves and surfaces with hostile knots, poles, weights and degrees: each either constructs
+    and then evaluates (or raises GeometryError for parameters outside its domain), or raises
+    GeometryError / TypeError; nothing ends the interpreter."""
+    rng = np.random.default_rng(4)
+    bad = [np.nan, np.inf, -np.inf, 0.0, -1.0, 1e308, -1e-308]
+    made = refused = 0
+    for _ in range(2000):
+        degree = int(rng.integers(1, 6)) if rng.random() < 0.85 else int(rng.integers(-2, 30))
+        n = max(0, degree + int(rng.integers(-1, 10)))
+        extra = 0 if rng.random() < 0.75 else int(rng.integers(-2, 3))
+        knots = np.sort(rng.uniform(0, 1, max(0, n + degree + 1 + extra)))
+        poles = rng.uniform(-1, 1, (n, int(rng.choice([2, 3]))))
+        weights = rng.uniform(0.1, 2, n) if rng.random() < 0.5 else None
+        for arr in [knots, poles.ravel()] + ([weights] if weights is not None else []):
+            if arr.size and rng.random() < 0.3:
+                arr[rng.integers(arr.size)] = rng.choice(bad)
+        if rng.random() < 0.2 and knots.size > 2:
+            knots = knots[::-1].copy()
+        try:
+            c = coolinggen.BSplineCurve(degree, knots, poles, weights)
+        except (coolinggen.GeometryError, TypeError):
+            refused += 1
+            continue
+        made += 1
+        for u in [rng.uniform(-0.5, 1.5, 20), np.array([np.nan]), np.array([np.inf])]:
+            try:
+                values = c.evaluate(u)
+                check(values.shape == u.shape + (c.dim,), "shape")
+                c.derivatives(u, int(rng.integers(0, 6)))
+            except coolinggen.GeometryError:
+                pass
+        try:
+            c.project(rng.uniform(-2, 2, (3, c.dim)))
+        except coolinggen.GeometryError:
+            pass
+    check(made > 100 and refused > 100, f"{made} made, {refused} refused")
+    print(f"random curve inputs: {made} made, {refused} refused with GeometryError, none crashed")
+
+
 def best_ns_per_point(call, points, reps):
     best = 1e300
     for _ in range(reps):
@@ -168,7 +208,7 @@ def test_speed():
 
 
 if __name__ == "__main__":
-    for test in [test_values_equal_cpp, test_bad_input, test_speed]:
+    for test in [test_values_equal_cpp, test_bad_input, test_random_bad_input, test_speed]:
         t0 = time.time()
         test()
         print(f"{test.__name__}: {time.time() - t0:.2f} s")
