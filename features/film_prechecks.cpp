@@ -5,6 +5,7 @@
 #include <map>
 #include <string>
 
+#include "src/algo/segment_distance.hpp"
 #include "src/blade/blade_coordinates.hpp"
 #include "src/blade/inner_wall.hpp"
 #include "src/core/format.hpp"
@@ -63,14 +64,43 @@ int chamber_over(const blade::BladeCoordinates& coords, const CoreDefinition& co
   return chamber;
 }
 
-void check_feeds(const blade::BladeModel& model, const CoreDefinition& core, const std::vector<HoleSpec>& holes) {
-  const blade::BladeCoordinates coords(model);
+// How far along its axis hole `h` stays in the wall (to one wall thickness deep along the exit's
+// normal); 0 when the axis grazes the wall (the analysis decides).
+double bore_depth(const blade::BladeCoordinates& coords, const CoreDefinition& core, const HoleSpec& h) {
+  const blade::BladeFrame f = coords.frame(h.span, h.chord);
+  const double sin_incl = -f.normal.dot(h.frame.axis);
+  return sin_incl > 0.05 ? core.wall_thickness.at(h.span, h.chord) / sin_incl : 0.0;
+}
+
+// Holes of different rows: two points on the bores' axes at distance d put the bores' walls d - D
+// apart along the line between them, so the least metal between the holes is at most d - D. The axes
+// are taken from the exit to 0.9 of the bore depth (inside the wall). d - D below min_ligament fails
+// the analysis' check (which bounds the metal from below) too: the later row is named, as there.
+void check_rows_apart(const blade::BladeCoordinates& coords, const CoreDefinition& core, const FilmCoolingDefinition& def,
+                      const std::vector<HoleSpec>& holes) {
+  std::vector<double> depth(holes.size());
+  for (std::size_t i = 0; i < holes.size(); ++i) depth[i] = 0.9 * bore_depth(coords, core, holes[i]);
+  for (std::size_t i = 0; i < holes.size(); ++i)
+    for (std::size_t j = i + 1; j < holes.size(); ++j) {
+      const HoleSpec &a = holes[i], &b = holes[j];
+      if (a.row == b.row || depth[i] <= 0 || depth[j] <= 0) continue;
+      const double D = 0.5 * (a.shape.diameter + b.shape.diameter);
+      if ((a.frame.exit - b.frame.exit).norm() > depth[i] + depth[j] + D + def.limits.min_ligament) continue;
+      const double d = segment_distance(a.frame.exit, a.frame.exit + depth[i] * a.frame.axis, b.frame.exit,
+                                        b.frame.exit + depth[j] * b.frame.axis);
+      if (d - D < def.limits.min_ligament)
+        throw FilmInputError(b.field + b.position_field,
+                             "overlapping rows " + a.row + " and " + b.row + ": " + a.name + " and " + b.name + " leave at most " +
+                                 format_number(d - D) + " mm of metal between them, below film_limits.min_ligament = " +
+                                 format_number(def.limits.min_ligament) + " mm");
+    }
+}
+
+void check_feeds(const blade::BladeCoordinates& coords, const CoreDefinition& core, const std::vector<HoleSpec>& holes) {
   for (const HoleSpec& h : holes) {
     if (h.required_chamber <= 0) continue;
-    const blade::BladeFrame f = coords.frame(h.span, h.chord);
-    const double sin_incl = -f.normal.dot(h.frame.axis);
-    if (!(sin_incl > 0.05)) continue;  // grazing: the analysis decides
-    const double depth = core.wall_thickness.at(h.span, h.chord) / sin_incl;
+    const double depth = bore_depth(coords, core, h);
+    if (depth <= 0) continue;
     const blade::BladeLocateResult at = coords.locate(h.frame.exit + depth * h.frame.axis);
     if (!at.found || at.coordinate.chord * h.chord <= 0) continue;  // through the LE or TE: the analysis decides
     const int j = chamber_over(coords, core, at.coordinate.span, at.coordinate.chord, h.shape.diameter);
@@ -89,7 +119,10 @@ void check_film_definition(const blade::BladeModel& model, const CoreDefinition*
                            const std::vector<HoleSpec>& holes) {
   check_references(core, def);
   check_count_and_ligaments(def, holes);
-  if (core) check_feeds(model, *core, holes);
+  if (!core) return;
+  const blade::BladeCoordinates coords(model);
+  check_feeds(coords, *core, holes);
+  check_rows_apart(coords, *core, def, holes);
 }
 
 }  // namespace cg::features

@@ -9,6 +9,8 @@
 //    minutes to be refused by their ligaments);
 //  - the ligament along a row: neighbours pitch P apart leave at most P - D of metal between their
 //    metering bores (the bores' axes are at most P apart across them), so P - D < min_ligament fails;
+//  - rows apart: two points on different holes' axes inside the wall at distance d leave at most d - D of
+//    metal between the bores (the analysis bounds it from below), so d - D < min_ligament fails;
 //  - the chamber a row feeds from: where each hole's axis has gone one wall thickness deep along the
 //    wall normal (the cavity wall is the outer wall offset by that thickness) it is over chamber j; when
 //    that point is clear of every rib by half its thickness + its fillet + the hole diameter, j is the

@@ -8,6 +8,7 @@
 #include "features/passage_boolean.hpp"
 #include "features/passage_checks.hpp"
 #include "features/radial_passages.hpp"
+#include "features/trailing_edge.hpp"
 #include "features/wall_features.hpp"
 #include "src/core/background.hpp"
 #include "src/core/format.hpp"
@@ -21,6 +22,7 @@ void validate_passages(const blade::BladeModel& model, const PassagesDefinition&
   if (def.core) {
     check_core_definition(model, *def.core);
     check_wall_feature_definitions(*def.core);
+    check_trailing_edge_placement(model, *def.core);  // slots between the end walls, the cutback's lip
   }
   if (!def.radial_passages.empty()) build_radial_passages(model, def.radial_passages);  // checks, cheap tools
 }

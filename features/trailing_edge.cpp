@@ -109,10 +109,9 @@ struct SpanLine {
   }
 };
 
-SpanLine crease_line(const blade::BladeModel& model, const blade::BladeCoordinates& coords, const CoreDefinition& def,
-                     const CoreBuild& core, double margin) {
-  const EndWall hub = core.hub_floor ? *core.hub_floor : EndWall(model, SpanEnd::Hub, 0.0);
-  const EndWall tip = core.tip_cap ? *core.tip_cap : EndWall(model, SpanEnd::Tip, 0.0);
+// `hub`, `tip`: the end walls (EndWall(model, end, 0) where an end is open), as the core builds them.
+SpanLine crease_line(const blade::BladeCoordinates& coords, const CoreDefinition& def, const EndWall& hub, const EndWall& tip,
+                     double margin) {
   auto crease = [&](double s) { return blade::inner_wall_crease(coords, def.wall_thickness, s).crease; };
   // Each value costs an exact section of the inner wall (~5 ms): Illinois regula falsi on [0, 1] needs
   // ~8 of them where bisection to the same 6e-8 in span needed 24. Without a sign change the end
@@ -234,6 +233,65 @@ void check_trailing_edge_definition(const CoreDefinition& def) {
   }
 }
 
+namespace {
+
+// The slots' spans along the chamber's TE end (between the end walls, span_margin clear of them), their
+// pitch, and the pitch/count errors. `hub`, `tip`: the core's end walls (null: that end is open).
+struct SlotLayout {
+  SpanLine line;  ///< the chamber's TE end between the end walls
+  std::vector<double> spans;
+  double pitch = 0;
+};
+
+SlotLayout slot_layout(const blade::BladeModel& model, const blade::BladeCoordinates& coords, const CoreDefinition& def,
+                       const EndWall* hub, const EndWall* tip) {
+  const TrailingEdgeDefinition& te = *def.trailing_edge;
+  SlotLayout out;
+  out.line = crease_line(coords, def, hub ? *hub : EndWall(model, SpanEnd::Hub, 0.0),
+                         tip ? *tip : EndWall(model, SpanEnd::Tip, 0.0), te.span_margin);
+  const SpanLine& line = out.line;
+  const double lo = 0.5 * te.slot_width, hi = line.length() - 0.5 * te.slot_width;
+  if (hi < lo)
+    throw PassageInputError(field("span_margin"), "no slot fits between the end walls (" + format_number(line.length()) +
+                                                      " mm along the chamber's TE end)");
+  out.pitch = te.pitch;
+  int count = te.count;
+  if (out.pitch > 0) {
+    count = static_cast<int>(std::floor((hi - lo) / out.pitch + 1e-9)) + 1;
+  } else {
+    out.pitch = count > 1 ? (hi - lo) / (count - 1) : 0.0;
+    if (count > 1 && !(out.pitch > te.slot_width))
+      throw PassageInputError(field("count"), std::to_string(count) + " slots give a pitch of " + format_number(out.pitch) +
+                                                  " mm, not more than slot_width " + format_number(te.slot_width) +
+                                                  " mm: at most " +
+                                                  std::to_string(static_cast<int>(std::floor((hi - lo) / te.slot_width))) +
+                                                  " slots fit");
+  }
+  for (double yc : centred(lo, hi, out.pitch, count)) out.spans.push_back(line.span_at(yc));
+  return out;
+}
+
+// A cutback's lip must lie downstream of the last chamber's end (0.1 mm clear).
+void check_lip(const TrailingEdgeDefinition& te, const TeFrame& f, double s) {
+  if (!(f.te_x - te.cutback_length > f.crease_x + 0.1))
+    throw PassageInputError(field("cutback_length"),
+                            "must be < " + format_number(f.te_x - f.crease_x - 0.1) + " mm at span " + format_number(s) +
+                                " (the lip must lie downstream of the last chamber's end), got " + format_number(te.cutback_length));
+}
+
+}  // namespace
+
+void check_trailing_edge_placement(const blade::BladeModel& model, const CoreDefinition& def) {
+  check_trailing_edge_definition(def);
+  if (!def.trailing_edge) return;
+  const blade::BladeCoordinates coords(model);
+  const std::optional<EndWall> hub = def.hub_floor.open ? std::nullopt : std::optional<EndWall>(EndWall(model, SpanEnd::Hub, def.hub_floor.thickness));
+  const std::optional<EndWall> tip = def.tip_cap.open ? std::nullopt : std::optional<EndWall>(EndWall(model, SpanEnd::Tip, def.tip_cap.thickness));
+  const SlotLayout layout = slot_layout(model, coords, def, hub ? &*hub : nullptr, tip ? &*tip : nullptr);
+  if (def.trailing_edge->type != TrailingEdgeType::PressureSideCutback) return;
+  for (double s : layout.spans) check_lip(*def.trailing_edge, te_frame(coords, def, s), s);
+}
+
 TrailingEdgeBuild build_trailing_edge(const blade::BladeModel& model, const CoreDefinition& def, const CoreBuild& core,
                                       WallLines& lines) {
   check_trailing_edge_definition(def);
@@ -245,32 +303,16 @@ TrailingEdgeBuild build_trailing_edge(const blade::BladeModel& model, const Core
   // the slot step repairs it first.
   out.through_crease = !cutback;
   const blade::BladeCoordinates coords(model);
-  const SpanLine line = crease_line(model, coords, def, core, te.span_margin);
-
-  // Slot positions.
-  const double lo = 0.5 * te.slot_width, hi = line.length() - 0.5 * te.slot_width;
-  if (hi < lo)
-    throw PassageInputError(field("span_margin"), "no slot fits between the end walls (" + format_number(line.length()) +
-                                                      " mm along the chamber's TE end)");
-  double pitch = te.pitch;
-  int count = te.count;
-  if (pitch > 0) {
-    count = static_cast<int>(std::floor((hi - lo) / pitch + 1e-9)) + 1;
-  } else {
-    pitch = count > 1 ? (hi - lo) / (count - 1) : 0.0;
-    if (count > 1 && !(pitch > te.slot_width))
-      throw PassageInputError(field("count"), std::to_string(count) + " slots give a pitch of " + format_number(pitch) +
-                                                  " mm, not more than slot_width " + format_number(te.slot_width) +
-                                                  " mm: at most " +
-                                                  std::to_string(static_cast<int>(std::floor((hi - lo) / te.slot_width))) +
-                                                  " slots fit");
-  }
+  const SlotLayout layout = slot_layout(model, coords, def, core.hub_floor ? &*core.hub_floor : nullptr,
+                                        core.tip_cap ? &*core.tip_cap : nullptr);
+  const double pitch = layout.pitch;
+  const int count = static_cast<int>(layout.spans.size());
+  const SpanLine& line = layout.line;
   const double taper = std::tan(te.land_taper_deg * kPi / 180);
   int slot_number = 0;
   double inlet_x_min = HUGE_VAL;
   std::vector<double> construction_volumes;
-  for (double yc : centred(lo, hi, pitch, count)) {
-    const double s = line.span_at(yc);
+  for (double s : layout.spans) {
     const TeFrame f = te_frame(coords, def, s);
     const std::string name = "te_slot_" + numbered(++slot_number, 2);
     SlotInfo info;
@@ -286,10 +328,7 @@ TrailingEdgeBuild build_trailing_edge(const blade::BladeModel& model, const Core
     const double w = te.slot_width;
     if (cutback) {
       info.x_lip = f.te_x - te.cutback_length;
-      if (!(info.x_lip > f.crease_x + 0.1))
-        throw PassageInputError(field("cutback_length"),
-                                "must be < " + format_number(f.te_x - f.crease_x - 0.1) + " mm at span " + format_number(s) +
-                                    " (the lip must lie downstream of the last chamber's end), got " + format_number(te.cutback_length));
+      check_lip(te, f, s);
       const Across b = across(lines, f, info.x_lip, 0.0, true);
       if (!b.ok) throw FeatureFailure(name + ": cannot find the blade's pressure side at the lip");
       info.floor_y = b.hi - te.lip_thickness - te.slot_height;
