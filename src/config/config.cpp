@@ -1,6 +1,7 @@
 #include "src/config/config.hpp"
 
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include "src/blade/meridional_net.hpp"
@@ -88,6 +89,16 @@ blade::LengthUnit length_unit(const Field& f) {
   return units[f.choice({"mm", "cm", "m", "in"})];
 }
 
+// [x, y] in a section's unit, returned in mm: finite in the unit is not enough (1e308 in overflows).
+Eigen::Vector2d pair_in_mm(const Field& f, double mm_per_unit) {
+  const Eigen::Vector2d p = f.pair();
+  if (!std::isfinite(mm_per_unit * p.x()) || !std::isfinite(mm_per_unit * p.y()))
+    fail(f.path(), "must be at most " + format_number(std::numeric_limits<double>::max() / mm_per_unit) +
+                       " in magnitude in this unit (finite in mm), got [" + format_number(p.x()) + ", " +
+                       format_number(p.y()) + "]");
+  return mm_per_unit * p;
+}
+
 blade::PointSectionDefinition point_section(const Field& f, const std::filesystem::path& base_dir, PointSource& source) {
   source.field = f.path();
   f.expect_object({"file", "values", "unit", "le_index", "te_index", "suction_side", "le_radius", "te_radius",
@@ -110,7 +121,7 @@ blade::PointSectionDefinition point_section(const Field& f, const std::filesyste
     const Field values = f.at("values");
     const std::size_t n = values.expect_array(4);
     const double k = blade::millimetres_per(def.unit);
-    for (std::size_t i = 0; i < n; ++i) def.points.push_back(k * values.item(i).pair());
+    for (std::size_t i = 0; i < n; ++i) def.points.push_back(pair_in_mm(values.item(i), k));
   }
   const int last = static_cast<int>(def.points.size()) - 1;
   def.le_index = f.integer_or("le_index", -1, -1, last);
@@ -124,8 +135,8 @@ blade::PointSectionDefinition point_section(const Field& f, const std::filesyste
   const double k = blade::millimetres_per(def.unit);
   if (f.has("le_radius")) def.le_radius = k * f.at("le_radius").number(positive(1e5));
   if (f.has("te_radius")) def.te_radius = k * f.at("te_radius").number(positive(1e5));
-  if (f.has("le_centre")) def.le_centre = k * f.at("le_centre").pair();
-  if (f.has("te_centre")) def.te_centre = k * f.at("te_centre").pair();
+  if (f.has("le_centre")) def.le_centre = pair_in_mm(f.at("le_centre"), k);
+  if (f.has("te_centre")) def.te_centre = pair_in_mm(f.at("te_centre"), k);
   return def;
 }
 
