@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer harnesses of the input readers (fuzz/) with clang under ASan + UBSan in build-fuzz
-# and runs each for FUZZ_SECONDS (default 60) on its seed corpus: fuzz/seeds/<target>, the examples'
-# configs (data/examples, data/repro) and their point files (data/c3x). Prints the executions per run;
+# and runs each for FUZZ_SECONDS (default 60) on its seed corpus: fuzz/seeds/<target>, the regression
+# inputs (tests/fuzz_regressions/<target>), the examples' configs (data/examples, data/repro) and their
+# point files (data/c3x). Prints the executions per run;
 # fails on any crash, sanitizer report, broken promise, timeout (> 10 s per input) or > 2 GB of memory.
 # The reproducer of a finding is written to build-fuzz/findings/ (replay: build-fuzz/fuzz/<target> FILE).
 set -euo pipefail
@@ -34,6 +35,6 @@ run() {
     status=1
   fi
 }
-run fuzz_config "$out/config.dict" fuzz/seeds/config data/examples data/repro
-run fuzz_point_file fuzz/point_file.dict fuzz/seeds/point_file data/c3x
+run fuzz_config "$out/config.dict" fuzz/seeds/config tests/fuzz_regressions/config data/examples data/repro
+run fuzz_point_file fuzz/point_file.dict fuzz/seeds/point_file tests/fuzz_regressions/point_file data/c3x
 exit $status
