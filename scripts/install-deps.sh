@@ -9,6 +9,7 @@ packages=(
   libtbb-dev libeigen3-dev libboost-test-dev nlohmann-json3-dev libcli11-dev
   libvtk9-dev libgmsh-dev libcgns-dev admesh cgns-convert libssl-dev xvfb xauth
   python3-meshio pybind11-dev python3-dev python3-numpy python3-distributed
+  clang libclang-rt-14-dev
 )
 missing=()
 for p in "${packages[@]}"; do

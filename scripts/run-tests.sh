@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs dependencies, builds everything (Release), runs the whole test suite, a short benchmark smoke
-# run, and the kernel and algorithm tests again under AddressSanitizer + UndefinedBehaviorSanitizer.
+# run, the kernel and algorithm tests again under AddressSanitizer + UndefinedBehaviorSanitizer, and
+# the input readers' libFuzzer harnesses for 60 s each (scripts/run-fuzz.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
@@ -20,3 +21,5 @@ kernel_tests=$(cd build-asan && ctest -N -L 'kernel|algo' | sed -n 's/^ *Test *#
 cmake --build build-asan -j"$jobs" --target $kernel_tests
 (cd build-asan && ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1 \
   ctest --output-on-failure -j"$jobs" -L 'kernel|algo')
+
+scripts/run-fuzz.sh

@@ -147,7 +147,9 @@ std::vector<Eigen::Vector2d> parse_section_points(std::istream& in, LengthUnit u
     for (const auto& fld : r.fields) text += (text.empty() ? "" : ",") + fld;
     require(ok, source_name + " line " + std::to_string(r.line) + ": expected numbers x and y (columns " +
                     std::to_string(xi + 1) + " and " + std::to_string(yi + 1) + "), got '" + text + "'");
-    require(std::isfinite(x) && std::isfinite(y), source_name + " line " + std::to_string(r.line) + ": x and y must be finite");
+    // Finite in the file's unit is not enough: 1e308 in inches overflows to infinity in mm.
+    require(std::isfinite(x * f) && std::isfinite(y * f),
+            source_name + " line " + std::to_string(r.line) + ": x and y must be finite (also in mm), got '" + text + "'");
     pts.emplace_back(x * f, y * f);
     lines.push_back(r.line);
   }

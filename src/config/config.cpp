@@ -1,6 +1,7 @@
 #include "src/config/config.hpp"
 
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include "src/blade/meridional_net.hpp"
@@ -8,7 +9,6 @@
 #include "src/config/handoff_fields.hpp"
 #include "src/config/json_document.hpp"
 #include "src/config/json_fields.hpp"
-#include "src/config/point_checks.hpp"
 #include "src/core/format.hpp"
 
 namespace cg::config {
@@ -89,6 +89,16 @@ blade::LengthUnit length_unit(const Field& f) {
   return units[f.choice({"mm", "cm", "m", "in"})];
 }
 
+// [x, y] in a section's unit, returned in mm: finite in the unit is not enough (1e308 in overflows).
+Eigen::Vector2d pair_in_mm(const Field& f, double mm_per_unit) {
+  const Eigen::Vector2d p = f.pair();
+  if (!std::isfinite(mm_per_unit * p.x()) || !std::isfinite(mm_per_unit * p.y()))
+    fail(f.path(), "must be at most " + format_number(std::numeric_limits<double>::max() / mm_per_unit) +
+                       " in magnitude in this unit (finite in mm), got [" + format_number(p.x()) + ", " +
+                       format_number(p.y()) + "]");
+  return mm_per_unit * p;
+}
+
 blade::PointSectionDefinition point_section(const Field& f, const std::filesystem::path& base_dir, PointSource& source) {
   source.field = f.path();
   f.expect_object({"file", "values", "unit", "le_index", "te_index", "suction_side", "le_radius", "te_radius",
@@ -111,7 +121,7 @@ blade::PointSectionDefinition point_section(const Field& f, const std::filesyste
     const Field values = f.at("values");
     const std::size_t n = values.expect_array(4);
     const double k = blade::millimetres_per(def.unit);
-    for (std::size_t i = 0; i < n; ++i) def.points.push_back(k * values.item(i).pair());
+    for (std::size_t i = 0; i < n; ++i) def.points.push_back(pair_in_mm(values.item(i), k));
   }
   const int last = static_cast<int>(def.points.size()) - 1;
   def.le_index = f.integer_or("le_index", -1, -1, last);
@@ -125,8 +135,8 @@ blade::PointSectionDefinition point_section(const Field& f, const std::filesyste
   const double k = blade::millimetres_per(def.unit);
   if (f.has("le_radius")) def.le_radius = k * f.at("le_radius").number(positive(1e5));
   if (f.has("te_radius")) def.te_radius = k * f.at("te_radius").number(positive(1e5));
-  if (f.has("le_centre")) def.le_centre = k * f.at("le_centre").pair();
-  if (f.has("te_centre")) def.te_centre = k * f.at("te_centre").pair();
+  if (f.has("le_centre")) def.le_centre = pair_in_mm(f.at("le_centre"), k);
+  if (f.has("te_centre")) def.te_centre = pair_in_mm(f.at("te_centre"), k);
   return def;
 }
 
@@ -260,49 +270,6 @@ Config load_config_file(const std::filesystem::path& file) {
                                file.stem().string(), file.string());
   c.source_file = file.string();
   return c;
-}
-
-blade::BladeModel build_model(const Config& config, ProgressSink* progress) {
-  const blade::BladeDefinition& def = config.blade;
-  // Check the parts separately first, so a failure names the part of the config it comes from.
-  if (const auto* m = std::get_if<blade::MeridionalFlowPath>(&def.flow_path)) {
-    try {
-      blade::MeridionalNet net(m->net);
-    } catch (const InvalidGeometry& e) {
-      throw ConfigError(std::string("flow_path: ") + e.what());
-    }
-  }
-  const double steps = static_cast<double>(def.sections.size() + 2);
-  for (std::size_t i = 0; i < def.sections.size(); ++i) {
-    const std::string name = "sections[" + std::to_string(i) + "]";
-    report_progress(progress, static_cast<double>(i + 1) / steps, name);
-    check_cancel(progress, name);
-    const auto& shape = def.sections[i].shape;
-    if (const auto* p = std::get_if<blade::PointSectionDefinition>(&shape)) {
-      const PointSource source = i < config.point_sources.size() ? config.point_sources[i] : PointSource{name + ".points", p->file, {}};
-      check_point_outline(*p, source);
-      try {
-        blade::section_from_points(*p);
-      } catch (const InvalidGeometry& e) {
-        throw ConfigError(source.field + ": " + e.what());
-      } catch (const AlgorithmFailure& e) {  // LE/TE detection
-        throw ConfigError(source.field + ": " + e.what() + "; " + le_te_index_hint(*p, source));
-      }
-      continue;
-    }
-    try {
-      blade::section_from_parameters(std::get<blade::ParametricSectionDefinition>(shape));
-    } catch (const InvalidGeometry& e) {
-      throw ConfigError(name + ".parametric: " + e.what());
-    }
-  }
-  report_progress(progress, (steps - 1) / steps, "blade surface");
-  check_cancel(progress, "blade surface");
-  try {
-    return blade::build_blade(def);
-  } catch (const InvalidGeometry& e) {
-    throw ConfigError(std::string("blade model (flow_path + sections): ") + e.what());
-  }
 }
 
 }  // namespace cg::config

@@ -1,5 +1,6 @@
 #include "src/config/cooling_config.hpp"
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -166,6 +167,17 @@ features::CoreDefinition core(const Field& f) {
   return c;
 }
 
+// A table cell in mm: the whole cell must be a number ("1abc" is not 1) and finite, also once converted.
+bool table_number(const std::string& cell, double mm_per_unit, double& mm) {
+  std::size_t used = 0;
+  try {
+    mm = mm_per_unit * std::stod(cell, &used);
+  } catch (const std::exception&) {  // std::invalid_argument, std::out_of_range (1e999)
+    return false;
+  }
+  return used == cell.size() && std::isfinite(mm);
+}
+
 // A CSV/whitespace table with a header naming the columns x.., y.. and d.. (diameter), e.g. the C3X
 // file "hole,U_cm,V_cm,D_cm,x_cm,y_cm"; lines starting with '#' are comments.
 std::vector<features::RadialPassageDefinition> read_passage_table(const std::string& path, double mm_per_unit,
@@ -201,12 +213,13 @@ std::vector<features::RadialPassageDefinition> read_passage_table(const std::str
     if (static_cast<int>(cells.size()) <= need)
       fail(field, path + " line " + std::to_string(lineno) + ": expected " + std::to_string(need + 1) + " columns");
     features::RadialPassageDefinition p;
-    try {
-      p.position = mm_per_unit * Eigen::Vector2d(std::stod(cells[ix]), std::stod(cells[iy]));
-      p.diameter = mm_per_unit * std::stod(cells[id]);
-    } catch (const std::exception&) {
-      fail(field, path + " line " + std::to_string(lineno) + ": not a number");
-    }
+    double x = 0, y = 0, d = 0;
+    if (!table_number(cells[ix], mm_per_unit, x) || !table_number(cells[iy], mm_per_unit, y) ||
+        !table_number(cells[id], mm_per_unit, d))
+      fail(field, path + " line " + std::to_string(lineno) + ": x, y and d must be finite numbers (also in mm), got '" +
+                      cells[ix] + "', '" + cells[iy] + "', '" + cells[id] + "'");
+    p.position = Eigen::Vector2d(x, y);
+    p.diameter = d;
     if (!(p.diameter > 0)) fail(field, path + " line " + std::to_string(lineno) + ": the diameter must be > 0");
     out.push_back(p);
   }

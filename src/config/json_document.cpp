@@ -41,6 +41,7 @@ std::string plain_message(const std::string& what) {
 // Builds the document like the library's own DOM parser and records the first problem.
 class StrictDocument : public nlohmann::json_sax<json> {
  public:
+  static constexpr std::size_t kMaxDepth = 64;
   json root;
   std::string error;  // empty while fine
 
@@ -80,6 +81,7 @@ class StrictDocument : public nlohmann::json_sax<json> {
   }
 
   bool positioned() const { return positioned_; }
+  bool too_deep() const { return too_deep_; }
   std::size_t position() const { return position_; }
 
  private:
@@ -98,6 +100,11 @@ class StrictDocument : public nlohmann::json_sax<json> {
       else p += "[" + std::to_string(f.node->size() - 1) + "]";  // the element being read is the last
     }
     return p;
+  }
+  // The member of the root being read ("sections"), or "the document" for the root itself.
+  std::string top_level_path() const {
+    if (frames_.size() < 2) return "the document";
+    return frames_[0].node->is_object() ? frames_[0].key : "[" + std::to_string(frames_[0].node->size() - 1) + "]";
   }
   std::string child_path(const std::string& k) const {
     const std::string p = path();
@@ -124,7 +131,15 @@ class StrictDocument : public nlohmann::json_sax<json> {
   }
   // A container stays at a fixed address while it is filled: its parent gets no other child meanwhile
   // (array elements are appended only after the previous one is closed).
+  // Nesting is limited: copying, printing and destroying a document recurse once per level, so a
+  // file of a million '[' would overflow the stack.
   bool open(json&& container) {
+    if (frames_.size() >= kMaxDepth) {
+      too_deep_ = true;
+      error = "objects and arrays nested more than " + std::to_string(kMaxDepth) + " levels deep (in " +
+              top_level_path() + "; the examples nest at most 6 levels)";
+      return false;
+    }
     frames_.push_back({insert(std::move(container)), {}, {}});
     return true;
   }
@@ -136,6 +151,7 @@ class StrictDocument : public nlohmann::json_sax<json> {
   std::vector<Frame> frames_;
   std::size_t position_ = 0;
   bool positioned_ = false;
+  bool too_deep_ = false;
 };
 
 }  // namespace
@@ -147,6 +163,7 @@ json parse_json_document(const std::string& text, const std::string& source_name
   if (doc.error.empty()) doc.error = "invalid JSON";
   if (doc.positioned())
     throw ConfigError(source_name + " " + line_column(text, doc.position()) + ": " + doc.error);
+  if (doc.too_deep()) throw ConfigError(source_name + ": " + doc.error);
   throw ConfigError(doc.error);
 }
 
