@@ -63,14 +63,25 @@ const features::CoreBuild& core_build() {
   return b;
 }
 
+// Where a geometry error is found: by the checks before any solid (pipeline::validate_cooling) or only
+// by the wall features' build on the core.
+enum class RefusedBy { Validate, Build };
+
 void expect_geometry_error(const std::function<void(json&)>& edit, const std::string& path,
-                           const std::vector<std::string>& details) {
+                           const std::vector<std::string>& details, RefusedBy by = RefusedBy::Build) {
   json doc = example();
   edit(doc);
   const config::Config c = config::parse_config(doc, COOLINGGEN_SOURCE_DIR "/data/examples", "t");
   const features::CoreDefinition& def = *c.cooling.passages.core;
   try {
-    pipeline::validate_cooling(c.cooling, model());  // passes: only the blade can tell
+    pipeline::validate_cooling(c.cooling, model());
+    BOOST_TEST((by == RefusedBy::Build), "validate_cooling accepted what it should refuse: " << path);
+  } catch (const config::ConfigError& e) {
+    BOOST_TEST((by == RefusedBy::Validate), "refused before the build, expected only by it: " << e.what());
+    check_message(e.what(), path, details);
+    return;
+  }
+  try {
     features::WallLines lines(model().surface, core_build().inner_wall.surface);
     features::build_turbulators(model(), def, core_build(), lines);
     features::build_trailing_edge(model(), def, core_build(), lines);
@@ -138,7 +149,7 @@ BOOST_AUTO_TEST_CASE(turbulator_taller_than_its_chamber) {
 BOOST_AUTO_TEST_CASE(trailing_edge_that_does_not_fit) {
   // The lip must lie downstream of the last chamber's end (this blade's TE region is ~1 mm long).
   expect_geometry_error([](json& d) { core_of(d)["trailing_edge"]["cutback_length"] = 3.0; },
-                        "cooling.core.trailing_edge.cutback_length", {"must be <", "at span"});
+                        "cooling.core.trailing_edge.cutback_length", {"must be <", "at span"}, RefusedBy::Validate);
   // Slot and lip thicker than the TE region: no suction-side wall left under the cutback.
   expect_geometry_error([](json& d) { core_of(d)["trailing_edge"]["slot_height"] = 3.0; },
                         "cooling.core.trailing_edge.slot_height", {"suction-side wall", "at span"});
