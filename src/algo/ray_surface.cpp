@@ -16,7 +16,6 @@ namespace {
 
 constexpr int kMaxDepth = 60;         // about 30 halvings in each direction
 constexpr double kFlatTol = 0.02;  // "nearly planar": pole deviation / patch box diagonal
-constexpr double kTransversalCos = 0.2;
 
 }  // namespace
 
@@ -94,10 +93,60 @@ RaySurfaceHit RaySurfaceCaster::first_hit(const Eigen::Vector3d& o, const Eigen:
   heap_.clear();
   free_.clear();
   pool_.clear();
+  // Two planes through the line (normals a, b perpendicular to d) and their two bisectors: a patch
+  // whose poles all lie strictly on one side of one of them cannot meet the line (convex hull).
+  const Eigen::Vector3d dn = d.normalized();
+  const Eigen::Vector3d a = dn.unitOrthogonal(), b = dn.cross(a);
+  const Eigen::Vector3d sides[4] = {a, b, (a + b) / std::sqrt(2.0), (a - b) / std::sqrt(2.0)};
+  double offsets[4];
+  for (int k = 0; k < 4; ++k) offsets[k] = sides[k].dot(o);
+  auto misses_line = [&](const double* hp) {
+    for (int k = 0; k < 4; ++k) {
+      bool below = false, above = false;
+      for (int i = 0; i < n && !(below && above); ++i) {
+        const double* h = hp + 4 * i;
+        const double f = (sides[k].x() * h[0] + sides[k].y() * h[1] + sides[k].z() * h[2]) / h[3] - offsets[k];
+        below = below || f <= grow;
+        above = above || f >= -grow;
+      }
+      if (!(below && above)) return true;
+    }
+    return false;
+  };
+  // The patch meets the line at most once when its projection along d onto the plane (a, b) is
+  // injective. Projected homogeneously, G(u, v) = sum B_kl w_kl (a.(P_kl - o), b.(P_kl - o)) is a
+  // polynomial map with the same zeros as the patch's projection (w > 0); G_u and G_v are non-negative
+  // combinations of the differences of its control points along u and along v. If every such u
+  // difference and v difference have determinants of one strict sign, det(G_u, G_v) is of that sign
+  // for every pair of such combinations (bilinear), so G(q) - G(p) = du U + dv V (U, V averages of
+  // G_u, G_v along the segment pq) vanishes only for p = q: G is injective and has at most one zero.
+  auto meets_line_once = [&](const double* hp) {
+    cu_.resize(static_cast<std::size_t>(2 * n));
+    for (int i = 0; i < n; ++i) {
+      const double* h = hp + 4 * i;
+      cu_[static_cast<std::size_t>(2 * i)] = a.x() * h[0] + a.y() * h[1] + a.z() * h[2] - offsets[0] * h[3];
+      cu_[static_cast<std::size_t>(2 * i + 1)] = b.x() * h[0] + b.y() * h[1] + b.z() * h[2] - offsets[1] * h[3];
+    }
+    auto c = [&](int k, int l, int x) { return cu_[static_cast<std::size_t>(2 * (k * (pv_ + 1) + l) + x)]; };
+    int sign = 0;
+    for (int k = 0; k < pu_; ++k)
+      for (int l = 0; l <= pv_; ++l) {
+        const double ux = c(k + 1, l, 0) - c(k, l, 0), uy = c(k + 1, l, 1) - c(k, l, 1);
+        for (int kk = 0; kk <= pu_; ++kk)
+          for (int ll = 0; ll < pv_; ++ll) {
+            const double vx = c(kk, ll + 1, 0) - c(kk, ll, 0), vy = c(kk, ll + 1, 1) - c(kk, ll, 1);
+            const double det = ux * vy - uy * vx;
+            const int sg = det > 0 ? 1 : (det < 0 ? -1 : 0);
+            if (sg == 0 || (sign != 0 && sg != sign)) return false;
+            sign = sg;
+          }
+      }
+    return true;
+  };
   auto push = [&](const double* hp, double u0, double u1, double v0, double v1, int depth) {
     const auto box = homogeneous_pole_box<3>(hp, n);
     double e0 = 0.0, e1 = s_max;
-    if (!box.clip_ray(o, d, e0, e1, grow)) return;
+    if (!box.clip_ray(o, d, e0, e1, grow) || misses_line(hp)) return;
     const std::size_t b = new_block();
     std::memcpy(&pool_[b * block_size], hp, sizeof(double) * block_size);
     heap_.push_back(Item{e0, u0, u1, v0, v1, depth, b});
@@ -150,16 +199,6 @@ RaySurfaceHit RaySurfaceCaster::first_hit(const Eigen::Vector3d& o, const Eigen:
         if (l < pv_) len_v += (pole(k, l + 1) - q).norm();
       }
     const bool flat = mean_n.norm() > 0 && dev <= kFlatTol * box.diagonal() && wmax <= (1 + kFlatTol) * wmin;
-    const Eigen::Vector3d dn = d.normalized();
-    bool transversal = true;
-    int side = 0;
-    for (const auto& nv : nc) {
-      const double nn = nv.norm();
-      const double cosang = nn > 0 ? dn.dot(nv) / nn : 0.0;
-      const int sg = cosang > 0 ? 1 : -1;
-      if (std::abs(cosang) < kTransversalCos || (side != 0 && sg != side)) transversal = false;
-      side = sg;
-    }
     if (flat || it.depth >= kMaxDepth) {
       RaySurfaceHit h;
       const bool hit = newton(it, o, d, h) && h.ray_param >= -tol_ / d.norm() && h.ray_param <= best_s;
@@ -168,8 +207,8 @@ RaySurfaceHit RaySurfaceCaster::first_hit(const Eigen::Vector3d& o, const Eigen:
         best = h;
         best_s = h.ray_param;
       }
-      if ((flat && transversal) || it.depth >= kMaxDepth) continue;
-      // Not transversal: the patch may be met twice; examine its halves while the ray runs inside
+      if (it.depth >= kMaxDepth || (hit && meets_line_once(hp))) continue;
+      // The patch may be met twice, or Newton did not settle: examine its halves while the ray runs inside
       // the box before the best hit.
       if (hit && (best_s - it.entry) * d.norm() <= 1e3 * tol_) continue;
     }

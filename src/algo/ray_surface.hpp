@@ -1,18 +1,20 @@
 #pragma once
 // First intersection of a 3D ray with a B-spline / NURBS surface.
 //
-// Method: the surface's Bézier patches whose pole boxes the ray enters (slab test) are kept in a
-// queue ordered by the ray parameter at which the ray enters the box. The nearest one is taken: a
-// patch that is not yet nearly planar (poles within 2% of the patch size from the plane of its
+// Method: the surface's Bézier patches whose pole boxes the ray enters (slab test) and whose poles
+// straddle each of four planes through the line (convex hull: otherwise the patch cannot meet it) are
+// kept in a queue ordered by the ray parameter at which the ray enters the box. The nearest one is
+// taken: a patch that is not yet nearly planar (poles within 2% of the patch size from the plane of its
 // corners, weights within 2%) is split by de Casteljau along its longer direction (Nishita et al.
 // 1990 use the same convex hull argument with Bézier clipping); a nearly planar one is solved by
 // Newton's method on the 3x3 system o + s d - S(u, v) = 0 (J = [d, -S_u, -S_v]) from its centre, and
-// a root inside the patch is a hit. When the ray is also transversal to the patch (angle to the
-// corner planes of the control net above ~11.5 degrees, all from one side) the patch is taken to meet
-// the ray at most once, and Newton settles it; otherwise the patch is split further, down to 2^-30 of a
-// knot patch. The search stops when the next box is entered beyond the best hit, so the hit returned
-// is the first along the ray. A ray grazing the surface within that resolution can be reported as a
-// miss.
+// a root inside the patch is a hit. A patch is done with its hit only when it provably meets the line
+// at most once: its homogeneous projection along d onto a plane is injective, shown by determinants of
+// one strict sign for every pair of control point differences along u and v (see meets_line_once in
+// the .cpp). Any other patch - Newton did not settle inside it, or it may be met twice - is split
+// further while the ray runs inside its box before the best hit, down to 2^-30 of a knot patch. The
+// search stops when the next box is entered beyond the best hit, so the hit returned is the first
+// along the ray. A ray grazing the surface within that resolution can be reported as a miss.
 #include <Eigen/Core>
 #include <limits>
 #include <memory>
@@ -61,7 +63,7 @@ class RaySurfaceCaster {
   std::vector<double> pool_;
   std::vector<std::size_t> free_;
   std::vector<Item> heap_;
-  std::vector<double> left_, right_, hp_;  // work buffers, reused across calls
+  std::vector<double> left_, right_, hp_, cu_;  // work buffers, reused across calls
 };
 
 /// First hit (builds a RaySurfaceCaster).

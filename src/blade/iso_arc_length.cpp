@@ -7,7 +7,6 @@
 #include "src/analyze/gauss_legendre.hpp"
 #include "src/core/basis.hpp"
 #include "src/core/error.hpp"
-#include "src/core/newton.hpp"
 #include "src/core/format.hpp"
 
 namespace cg::blade {
@@ -173,13 +172,35 @@ double IsoArcLength::param_at(double s) const {
     guess = h00 * lo + h10 * len / speed_lo_[c] + h01 * hi + h11 * len / speed_hi_[c];
   }
   if (!(guess > lo && guess < hi)) guess = lo + (hi - lo) * t;
-  // length_to(u) - s increases with u (derivative: the speed); bracketed Newton to |L(u) - s| <= tol.
-  return newton::solve_bracketed(
-      [&](double x, double& dL) {
-        dL = speed(x);
-        return s0 + cell_integral(c, x) - s;
-      },
-      lo, hi, -1, guess, 4e-16 * (std::abs(lo) + std::abs(hi) + (hi - lo)), tol_, 200);
+  // length_to(u) - s increases with u (derivative: the speed): bracketed Newton to |L(u) - s| <= tol.
+  // After the first step the iterate moves by ~the guess's error, a tiny fraction of the cell: L at the
+  // new iterate is L at the old one plus the 5-point rule over the step between them (exact far below
+  // the tolerance there), not the 10-point rule from the cell's start again.
+  static const struct Short {
+    double x[5], w[5];
+    Short() { gauss_legendre(5, x, w); }
+  } rule5;
+  double a = lo, b = hi, x = guess, Lx = s0 + cell_integral(c, x);
+  const double xtol = 4e-16 * (std::abs(lo) + std::abs(hi) + (hi - lo));
+  for (int it = 0; it < 200; ++it) {
+    const double r = Lx - s;
+    if (r == 0 || std::abs(r) <= tol_) break;
+    (r < 0 ? a : b) = x;
+    const double sp = speed(x);
+    double next = x - r / sp;
+    if (!(sp > 0) || !(next > a && next < b)) next = 0.5 * (a + b);
+    if (std::abs(next - x) <= xtol || b - a <= xtol) return next;
+    if (std::abs(next - x) <= 0.01 * (hi - lo)) {
+      const double h = 0.5 * (next - x), m = 0.5 * (next + x);
+      double step = 0;
+      for (int j = 0; j < 5; ++j) step += rule5.w[j] * speed(m + h * rule5.x[j]);
+      Lx += step * h;
+    } else {
+      Lx = s0 + cell_integral(c, next);
+    }
+    x = next;
+  }
+  return x;
 }
 
 }  // namespace cg::blade

@@ -3,6 +3,7 @@
 // knots with multiplicities, closing knot included, first multiplicity == last) and ours (unwrapped).
 // Seam and interior multiplicities range over 1..degree; degrees 1..7 for curves.
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "src/core/knots.hpp"
@@ -123,6 +124,47 @@ inline BSplineSurface<3> random_periodic_surface(Rng& r, bool rational, bool per
       if (rational) W[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] = W[a][b];
     }
   return BSplineSurface<3>::from_poles(pu, pv, std::move(U), std::move(V), P, W, periodic_u, periodic_v);
+}
+
+
+/// A blade-like surface: periodic in u (a thin cambered airfoil loop, chord 30..50 mm, thickness
+/// 0.8..4 mm, so the leading and trailing edges curve with radii down to ~0.01 mm), clamped in v (4..7
+/// sections over a 20..60 mm span with twist and lean); degree 2..5 in u, 1..3 in v, rational on request
+/// (weights in [0.5, 2]).
+inline BSplineSurface<3> random_blade_surface(Rng& r, bool rational) {
+  const int pu = r.integer(2, 5), sections = r.integer(4, 7), pv = std::min(3, r.integer(1, sections - 1));
+  const int du = r.integer(10, 24);  // distinct poles round the loop
+  PeriodicKnots k;
+  for (int i = 0; i <= du; ++i) {
+    k.values.push_back(static_cast<double>(i));
+    k.mults.push_back(1);
+  }
+  const int nu = du + pu;
+  std::vector<double> U = unwrap_periodic_knots(pu, k.period_flat(), k.period());
+  std::vector<double> V = random_knots(r, pv, sections);
+  const double chord = r.uniform(30, 50), span = r.uniform(20, 60);
+  std::vector<std::vector<Eigen::Vector3d>> P(static_cast<std::size_t>(nu), std::vector<Eigen::Vector3d>(static_cast<std::size_t>(sections)));
+  std::vector<std::vector<double>> W;
+  if (rational) W.assign(static_cast<std::size_t>(nu), std::vector<double>(static_cast<std::size_t>(sections)));
+  for (int j = 0; j < sections; ++j) {
+    const double thick = r.uniform(0.8, 4.0), camber = r.uniform(0, 0.1) * chord;
+    const double twist = r.uniform(-0.6, 0.6), lean = r.uniform(-3, 3);
+    const double z = span * j / (sections - 1);
+    for (int i = 0; i < du; ++i) {
+      const double th = 2 * M_PI * i / du;
+      const double x = 0.5 * chord * std::cos(th);
+      const double y = 0.5 * thick * std::sin(th) * (1 + 0.4 * std::cos(th)) + camber * (1 - std::pow(2 * x / chord, 2));
+      P[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] =
+          Eigen::Vector3d(std::cos(twist) * x - std::sin(twist) * y + lean * j, std::sin(twist) * x + std::cos(twist) * y, z);
+      if (rational) W[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] = r.uniform(0.5, 2.0);
+    }
+  }
+  for (int i = du; i < nu; ++i)
+    for (int j = 0; j < sections; ++j) {
+      P[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] = P[static_cast<std::size_t>(i - du)][static_cast<std::size_t>(j)];
+      if (rational) W[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] = W[static_cast<std::size_t>(i - du)][static_cast<std::size_t>(j)];
+    }
+  return BSplineSurface<3>::from_poles(pu, pv, std::move(U), std::move(V), P, W, true, false);
 }
 
 }  // namespace cg::test
