@@ -43,8 +43,14 @@ EXAMPLES = os.path.join(ROOT, "data", "examples")
 
 
 def load(name):
+    """An example config with its point files made absolute (the variants are written elsewhere)."""
     with open(os.path.join(EXAMPLES, name)) as f:
-        return json.load(f)
+        doc = json.load(f)
+    for s in doc["sections"]:
+        points = s.get("points", {})
+        if "file" in points and not os.path.isabs(points["file"]):
+            points["file"] = os.path.normpath(os.path.join(EXAMPLES, points["file"]))
+    return doc
 
 
 def chamber_at(chord, ribs):
@@ -195,7 +201,7 @@ FIELD = re.compile(r"^([A-Za-z_][A-Za-z0-9_]*(\[\d+\])?)(\.[A-Za-z_][A-Za-z0-9_]
 def classify(exit_code, err, report):
     lines = [l for l in err.strip().splitlines() if l.strip()]
     if exit_code == 0:
-        ok = report is not None and report.get("solid", {}).get("valid", False) and all(b.get("valid") for b in report.get("bodies", []))
+        ok = report is not None and report.get("valid") is True and all(b.get("valid") for b in report.get("bodies", []))
         return ("built", "") if ok else ("failed", "exit 0 but the report says invalid")
     if exit_code == 2:
         if len(lines) == 1:
