@@ -183,10 +183,30 @@ InsertBuild build_insert(const blade::BladeModel& model, const InsertChamber& ch
   };
   const double margin = def.jet_margin + 0.5 * D;
   const double s_mid = 0.5 * (span_at(0, true, 0) + span_at(0, false, 0));
+  // The chord range [c_lo, c_hi] runs between the ribs' centre lines; the sheet stops short of them by
+  // half a rib and the gap (the rib walls grown by Z), more where a rib leans. So the ring runs where
+  // the sheet is: the middle of the sheet inside the insert body, its ends found by bisection.
+  const auto in_sheet = [&](double c) {
+    const blade::BladeFrame f = coords.frame(s_mid, c);
+    BRepClass3d_SolidClassifier cls(body.shape, gp_Pnt(f.point.x() - (off + 0.5 * ts) * f.normal.x(), f.point.y() - (off + 0.5 * ts) * f.normal.y(),
+                                                         f.point.z() - (off + 0.5 * ts) * f.normal.z()),
+                                    1e-7);
+    return cls.State() == TopAbs_IN;
+  };
+  const auto sheet_end = [&](double in, double out) {  // in_sheet(in), !in_sheet(out)
+    for (int it = 0; it < 30; ++it) {  // |c_hi - c_lo| / 2^30 of chord: far below a micrometre
+      const double mid = 0.5 * (in + out);
+      (in_sheet(mid) ? in : out) = mid;
+    }
+    return in;
+  };
+  const double c_mid = 0.5 * (c_lo + c_hi);
+  if (!in_sheet(c_mid)) throw FeatureFailure(name + ": the middle of its jet ring is not in the insert's sheet");
+  const double r_lo = in_sheet(c_lo) ? c_lo : sheet_end(c_mid, c_lo), r_hi = in_sheet(c_hi) ? c_hi : sheet_end(c_mid, c_hi);
   std::vector<Eigen::Vector3d> ring;
   std::vector<double> chords;
   for (int k = 0; k <= 400; ++k) {
-    const double c = c_lo + (c_hi - c_lo) * k / 400.0;
+    const double c = r_lo + (r_hi - r_lo) * k / 400.0;
     ring.push_back(on_insert(s_mid, c).exit);
     chords.push_back(c);
   }

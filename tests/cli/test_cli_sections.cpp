@@ -64,6 +64,26 @@ BOOST_AUTO_TEST_CASE(repro_designs_are_refused_naming_a_field) {
   }
 }
 
+// The C3X film vane with its rib moved (random designs, issue 21): the insert's outermost jet lines fell
+// beside its sheet and removed nothing (exit 3). Every jet now crosses the sheet: built, valid, and the
+// insert's volume equals the independent one (1e-5 relative, as tests/features/test_insert.cpp).
+BOOST_AUTO_TEST_CASE(insert_jets_follow_the_sheet_when_the_rib_moves) {
+  test::TempDir dir("cli_jets");
+  json d = load(kRepro / "insert_jets_rib_moved.json");
+  d["output"] = {{"formats", json::array()}};  // report.json only: the build is what is tested
+  for (json& s : d.at("sections")) s.at("points").at("file") = (kRepro / s.at("points").at("file").get<std::string>()).string();
+  std::ofstream(dir.path / "jets.json") << d.dump(1);
+  const test::Run r = test::run_cli("build " + test::q(dir.path / "jets.json") + " -o " + test::q(dir.path / "out"), dir.path);
+  BOOST_TEST_REQUIRE(r.exit_code == 0, r.err);
+  const json report = load(dir.path / "out" / "report.json");
+  BOOST_TEST(report.at("valid").get<bool>());
+  const json& inserts = report.at("model").at("cooling").at("film").at("inserts");
+  BOOST_TEST_REQUIRE(inserts.size() == 1u);
+  const double v = inserts[0].at("volume_mm3").get<double>(), e = inserts[0].at("expected_volume_mm3").get<double>();
+  BOOST_TEST(std::abs(v - e) <= 1e-5 * e, v << " vs " << e);
+  BOOST_TEST(inserts[0].at("jet_holes").get<int>() >= 12, inserts[0].dump());
+}
+
 BOOST_AUTO_TEST_CASE(sections_of_a_built_design_match_the_design_checks) {
   test::TempDir dir("cli_sections");
   json d = load(kRepro / "section_loop_one_rib.json");
