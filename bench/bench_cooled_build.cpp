@@ -28,9 +28,9 @@
 #include <filesystem>
 #include <string>
 
-#include "features/core_passages.hpp"
-#include "features/passage_boolean.hpp"
-#include "features/wall_features.hpp"
+#include "features/passages/core_passages.hpp"
+#include "features/passages/passage_boolean.hpp"
+#include "features/wall/wall_features.hpp"
 #include "src/brep/blade_solid.hpp"
 #include "src/config/builtin_example.hpp"
 #include "src/config/config.hpp"

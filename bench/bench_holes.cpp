@@ -1,6 +1,6 @@
-// Many film holes through a blade wall: direct drilling (features/drill_holes.hpp) against OCCT's plain
+// Many film holes through a blade wall: direct drilling (features/drilling/drill_holes.hpp) against OCCT's plain
 // path (one BRepAlgoAPI_Cut with all tools), in the same run; optionally the verified boolean path
-// (features/verified_boolean.hpp) on the same holes.
+// (src/brep/boolean/verified_boolean.hpp) on the same holes.
 //
 //   bench_holes            N = 100, 400, 1000 holes drilled into the cooled example blade (ours, cut and
 //                          verified), OCCT plain at 100 and 400; each result also checked globally by
@@ -10,10 +10,10 @@
 //                          (--step: also the verified boolean path; --patches: split walls first)
 //
 // Work loads: the cooled example blade (builtin hpt_rotor config with its chambers, ribs and fillets,
-// features/passages.hpp; ~40 s to build, not timed) with a film-hole field from
-// features/drill_sample_holes.hpp (D 0.5 mm, 30 deg to the surface, staggered rows on both sides
+// features/passages/passages.hpp; ~40 s to build, not timed) with a film-hole field from
+// tests/support/drill_sample_holes.hpp (D 0.5 mm, 30 deg to the surface, staggered rows on both sides
 // wherever the exit lies on a chamber wall); or (--hollow, --quick) the hollow blade of
-// features/boolean_sample_part.hpp with its hole field. Our time covers everything drill_holes does:
+// tests/support/boolean_sample_part.hpp with its hole field. Our time covers everything drill_holes does:
 // patches, geometry and preconditions, topology, the local checks (per-hole volume by the divergence
 // theorem against ray quadrature, BRepCheck of every new face, edge use of the whole solid) and the
 // fallback step for holes that do not qualify.
@@ -39,10 +39,10 @@
 #include <string>
 #include <vector>
 
-#include "features/boolean_sample_part.hpp"
-#include "features/drill_holes.hpp"
-#include "features/drill_sample_holes.hpp"
-#include "features/verified_boolean.hpp"
+#include "tests/support/boolean_sample_part.hpp"
+#include "features/drilling/drill_holes.hpp"
+#include "tests/support/drill_sample_holes.hpp"
+#include "src/brep/boolean/verified_boolean.hpp"
 #include "src/brep/blade_solid.hpp"
 #include "src/config/builtin_example.hpp"
 #include "src/config/config.hpp"

@@ -116,7 +116,7 @@ void mesh_section(std::ostringstream& o, const json& m) {
   if (!rows.empty()) table(o, {"surface group", "faces", "triangles"}, rows);
 }
 
-// Film cooling (model.cooling.film, features/film_report.hpp): rows, chambers fed, inserts, every hole.
+// Film cooling (model.cooling.film, features/film/film_report.hpp): rows, chambers fed, inserts, every hole.
 // A null ligament means no other hole (or obstacle) is near: "-".
 void film_section(std::ostringstream& o, const json& f) {
   const auto lig = [](const json& v) { return v.is_null() ? std::string("-") : num(v); };

@@ -1,11 +1,11 @@
 #pragma once
 // The section table of report.json / report.md ("sections") from the span sections of the part
-// (features/span_sections.hpp: the sections sections.svg draws and the design checks measure).
+// (features/passages/span_sections.hpp: the sections sections.svg draws and the design checks measure).
 #include <nlohmann/json.hpp>
 
 #include <vector>
 
-#include "features/span_sections.hpp"
+#include "features/passages/span_sections.hpp"
 
 namespace cg::io {
 

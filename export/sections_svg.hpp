@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "features/span_sections.hpp"
+#include "features/passages/span_sections.hpp"
 
 namespace cg::io {
 

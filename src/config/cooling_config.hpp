@@ -1,6 +1,6 @@
 #pragma once
 // The "cooling" section of the configuration (data/schema/coolinggen.schema.json): parsing into the
-// feature definitions (features/passage_definition.hpp) with field-path errors. The pipeline builds them
+// feature definitions (features/passages/passage_definition.hpp) with field-path errors. The pipeline builds them
 // (src/pipeline/cooling.hpp).
 //
 // Layout (each feature area adds its own key under "cooling"; unknown keys are errors):
@@ -19,8 +19,8 @@
 #include <string>
 #include <vector>
 
-#include "features/film_definition.hpp"
-#include "features/passage_definition.hpp"
+#include "features/film/film_definition.hpp"
+#include "features/passages/passage_definition.hpp"
 #include "src/blade/blade_surface.hpp"
 #include "src/config/config_error.hpp"
 #include "src/config/json_fields.hpp"

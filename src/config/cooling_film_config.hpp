@@ -10,11 +10,11 @@
 //   }
 // Parsing checks types and ranges with field-path errors; what needs the blade (a hole larger than the
 // wall, a row beyond an end wall, overlapping rows, an insert that does not fit) is found when the
-// features are built (features/film_cooling.hpp) and reported by film_error() with the same
+// features are built (features/film/film_cooling.hpp) and reported by film_error() with the same
 // "cooling.<...>" paths.
 #include <array>
 
-#include "features/film_definition.hpp"
+#include "features/film/film_definition.hpp"
 #include "src/config/config_error.hpp"
 #include "src/config/json_fields.hpp"
 

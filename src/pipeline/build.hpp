@@ -19,8 +19,8 @@
 #include <string>
 #include <vector>
 
-#include "features/film_report.hpp"
-#include "features/passage_report.hpp"
+#include "features/film/film_report.hpp"
+#include "features/passages/passage_report.hpp"
 #include "src/blade/blade_surface.hpp"
 #include "src/brep/named_shape.hpp"
 #include "src/brep/verify.hpp"

@@ -1,8 +1,8 @@
 #include "src/pipeline/cooling.hpp"
 
-#include "features/film_cavity.hpp"
-#include "features/film_prechecks.hpp"
-#include "features/film_rows.hpp"
+#include "features/film/film_cavity.hpp"
+#include "features/film/film_prechecks.hpp"
+#include "features/film/film_rows.hpp"
 #include "src/config/cooling_film_config.hpp"
 
 namespace cg::pipeline {

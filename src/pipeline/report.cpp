@@ -136,7 +136,7 @@ io::ReportContent report_content(const config::Config& c, const BuildResult& r, 
                       {"faces", brep::count_face_names(r.part[i].geometry)}});
   }
   rc.extra["bodies"] = bodies;
-  // Tools a boolean step let in only after a perturbed retry (features/boolean_retries.hpp).
+  // Tools a boolean step let in only after a perturbed retry (src/brep/boolean/boolean_retries.hpp).
   nlohmann::ordered_json perturbed = nlohmann::ordered_json::array();
   for (const auto* list : {r.cooling ? &r.cooling->perturbed : nullptr, r.film ? &r.film->perturbed : nullptr})
     for (std::size_t i = 0; list && i < list->size(); ++i)

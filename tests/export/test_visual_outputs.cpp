@@ -2,7 +2,7 @@
 //  - STL: binary layout (84 + 50 n bytes) with the triangle count the writer reports.
 //  - VTK: the .vtp pieces read back with VTK have every triangle tagged with a valid feature id and the
 //    name tables; the .vtm names every piece.
-//  - Sections of the C3X vane (planar cuts, features/span_sections.hpp): passage areas against the
+//  - Sections of the C3X vane (planar cuts, features/passages/span_sections.hpp): passage areas against the
 //    analytic area of the cut of a straight cylinder by a plane, pi r^2 / |d.n| (minus the insert's
 //    ring), to 1e-6 relative (the curves are traced onto the faces to 1e-11 mm and integrated exactly;
 //    measured 2e-7: the boolean's edges lie off the faces within their tolerance), with the film holes
@@ -41,7 +41,7 @@
 #include "export/atomic_file.hpp"
 #include "export/cooled_part.hpp"
 #include "export/preview.hpp"
-#include "features/span_sections.hpp"
+#include "features/passages/span_sections.hpp"
 #include "export/sections_svg.hpp"
 #include "export/stl_writer.hpp"
 #include "export/triangulation.hpp"

@@ -11,7 +11,7 @@
 #include <map>
 #include <string>
 
-#include "features/verified_boolean.hpp"
+#include "src/brep/boolean/verified_boolean.hpp"
 
 namespace cg::test {
 

@@ -6,8 +6,8 @@
 
 #include <TopExp_Explorer.hxx>
 
-#include "features/drill_holes.hpp"
-#include "features/drill_sample_holes.hpp"
+#include "features/drilling/drill_holes.hpp"
+#include "tests/support/drill_sample_holes.hpp"
 #include "passage_fixtures.hpp"
 
 using namespace cg;

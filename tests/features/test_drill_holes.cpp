@@ -1,4 +1,4 @@
-// Direct drilling (features/drill_holes.hpp) on the hollow example blade, against the verified boolean
+// Direct drilling (features/drilling/drill_holes.hpp) on the hollow example blade, against the verified boolean
 // path (BooleanStep) on the same holes, measured on the built solids.
 //
 // Tolerances: whole-part volumes agree to 1e-6 relative (BRepGProp at 1e-9 on both solids; the
@@ -24,9 +24,9 @@
 #include "brep/step_read_back.hpp"
 #include "brep/temp_files.hpp"
 #include "export/step_writer.hpp"
-#include "features/boolean_sample_part.hpp"
-#include "features/drill_holes.hpp"
-#include "features/drill_sample_holes.hpp"
+#include "tests/support/boolean_sample_part.hpp"
+#include "features/drilling/drill_holes.hpp"
+#include "tests/support/drill_sample_holes.hpp"
 #include "src/config/builtin_example.hpp"
 #include "src/config/config.hpp"
 #include "src/algo/ray_surface.hpp"

@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "blade/blade_fixtures.hpp"
-#include "features/film_definition.hpp"
-#include "features/film_hollow_blade.hpp"
-#include "features/hole_target.hpp"
+#include "features/film/film_definition.hpp"
+#include "tests/support/film_hollow_blade.hpp"
+#include "features/film/hole_target.hpp"
 #include "src/blade/blade_surface.hpp"
 
 namespace cg::test {

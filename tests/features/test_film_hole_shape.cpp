@@ -1,5 +1,5 @@
-// Film hole tool solids (features/hole_tool.hpp) measured with OCCT against the exact shape definitions
-// of features/hole_shape.hpp: the 7-7-7 area ratio on the built tool, tool volumes, validity.
+// Film hole tool solids (features/film/hole_tool.hpp) measured with OCCT against the exact shape definitions
+// of features/film/hole_shape.hpp: the 7-7-7 area ratio on the built tool, tool volumes, validity.
 #define BOOST_TEST_MODULE film_hole_shape
 #include <boost/test/unit_test.hpp>
 
@@ -13,8 +13,8 @@
 
 #include <cmath>
 
-#include "features/hole_analysis.hpp"
-#include "features/hole_tool.hpp"
+#include "features/film/hole_analysis.hpp"
+#include "features/film/hole_tool.hpp"
 
 using namespace cg;
 using namespace cg::features;

@@ -8,8 +8,8 @@
 #include <cmath>
 #include <map>
 
-#include "features/film_holes.hpp"
-#include "features/film_rows.hpp"
+#include "features/film/film_holes.hpp"
+#include "features/film/film_rows.hpp"
 #include "src/blade/blade_coordinates.hpp"
 #include "test_film_fixtures.hpp"
 

@@ -10,9 +10,9 @@
 
 #include <BRepPrimAPI_MakeBox.hxx>
 
-#include "features/film_cavity.hpp"
-#include "features/film_holes.hpp"
-#include "features/film_rows.hpp"
+#include "features/film/film_cavity.hpp"
+#include "features/film/film_holes.hpp"
+#include "features/film/film_rows.hpp"
 #include "src/blade/blade_coordinates.hpp"
 #include "test_film_fixtures.hpp"
 

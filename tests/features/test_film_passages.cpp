@@ -1,5 +1,5 @@
 // Film holes and an impingement insert built by the pipeline into the chambers of the real passages
-// (features/film_cavity.hpp, src/pipeline/cooling.hpp): a short straight blade (the built-in example's
+// (features/film/film_cavity.hpp, src/pipeline/cooling.hpp): a short straight blade (the built-in example's
 // mid-span section, 16 mm span) with a core of two chambers split by a filleted rib, a 3-row showerhead and a
 // 7-7-7 row feeding from them, an insert in the front chamber. Measured on the built solids, independent
 // of the feature's own checks: every hole opens into the chamber its row names (its faces touch that

@@ -1,4 +1,4 @@
-// Impingement inserts (features/insert.hpp) in the core of a hollow vane (thick section, 1 mm wall), measured on the built solids:
+// Impingement inserts (features/film/insert.hpp) in the core of a hollow vane (thick section, 1 mm wall), measured on the built solids:
 // the gap to the chamber wall and the sheet thickness (along the wall normal through the built faces,
 // and the least distance between the bodies), the jet holes' removed volume against our quadrature, the
 // insert as its own valid body with named faces; inputs that do not fit.
@@ -10,7 +10,7 @@
 #include <chrono>
 #include <cmath>
 
-#include "features/insert.hpp"
+#include "features/film/insert.hpp"
 #include "test_film_fixtures.hpp"
 
 using namespace cg;

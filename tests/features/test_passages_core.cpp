@@ -20,10 +20,10 @@
 
 #include "brep/temp_files.hpp"
 #include "export/step_writer.hpp"
-#include "features/passage_boolean.hpp"
-#include "features/passage_checks.hpp"
+#include "features/passages/passage_boolean.hpp"
+#include "features/passages/passage_checks.hpp"
 #include "features/passage_fixtures.hpp"
-#include "features/span_sections.hpp"
+#include "features/passages/span_sections.hpp"
 
 using namespace cg;
 using test::cooled_example;

@@ -12,7 +12,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "features/false_seams.hpp"
+#include "src/brep/boolean/false_seams.hpp"
 #include "features/passage_fixtures.hpp"
 
 using namespace cg;
@@ -69,7 +69,7 @@ BOOST_AUTO_TEST_CASE(one_valid_solid_and_every_slot_verified) {
   BOOST_TEST(n >= 10);
   BOOST_TEST(names_with(r.blade, "te_slot_").size() == slots().size());
   BOOST_TEST(!names_with(r.blade, "pin_fin_").empty());
-  // The crease is no longer a false seam of the part (features/false_seams.hpp).
+  // The crease is no longer a false seam of the part (src/brep/boolean/false_seams.hpp).
   BOOST_TEST(features::repair_false_seams(r.blade).repaired_edges == 0);
 }
 

@@ -9,8 +9,8 @@
 #include <nlohmann/json.hpp>
 
 
-#include "features/trailing_edge.hpp"
-#include "features/turbulators.hpp"
+#include "features/wall/trailing_edge.hpp"
+#include "features/wall/turbulators.hpp"
 #include "src/config/builtin_example.hpp"
 #include "src/config/config.hpp"
 #include "src/config/cooling_config.hpp"

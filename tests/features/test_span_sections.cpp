@@ -1,4 +1,4 @@
-// Span sections (features/span_sections.hpp: the one routine behind the design checks' cross-sections,
+// Span sections (features/passages/span_sections.hpp: the one routine behind the design checks' cross-sections,
 // sections.svg and the passage table) on the real built-in example, built once by the pipeline's own
 // cooling and film stages. A light variant: without its turbulators, pin fins and 7-7-7 row (the slow
 // booleans), so its chambers' walls are those the design checks measure; its showerhead, four
@@ -20,7 +20,7 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
-#include "features/span_sections.hpp"
+#include "features/passages/span_sections.hpp"
 #include "src/config/builtin_example.hpp"
 #include "src/config/config.hpp"
 #include "src/pipeline/cooling.hpp"

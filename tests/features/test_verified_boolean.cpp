@@ -1,4 +1,4 @@
-// The verified boolean path (features/verified_boolean.hpp) on blocks and cylinders, where every
+// The verified boolean path (src/brep/boolean/verified_boolean.hpp) on blocks and cylinders, where every
 // removed or added volume is known analytically: pi r^2 h for a cylinder crossing a slab.
 #define BOOST_TEST_MODULE verified_boolean
 #include <boost/test/unit_test.hpp>
@@ -16,7 +16,7 @@
 #include <TopTools_IndexedMapOfShape.hxx>
 
 #include "boolean_test_shapes.hpp"
-#include "features/boolean_expected.hpp"
+#include "src/brep/boolean/boolean_expected.hpp"
 
 using namespace cg;
 using namespace cg::features;
@@ -307,7 +307,7 @@ BOOST_AUTO_TEST_CASE(warning_pinned_on_its_tool) {
   BOOST_TEST(step.report().tools[1].passed);
 }
 
-// Face-pair pruning (features/boolean_pair_pruning.hpp): a hole through a cylinder-shaped part. The
+// Face-pair pruning (src/brep/boolean/boolean_pair_pruning.hpp): a hole through a cylinder-shaped part. The
 // part's round wall encloses the hole in its box but never meets it: that pair is not intersected,
 // and the result is the same as with every pair.
 BOOST_AUTO_TEST_CASE(pruning_skips_pairs_that_cannot_meet) {

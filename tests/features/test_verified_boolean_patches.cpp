@@ -1,4 +1,4 @@
-// Patches (features/boolean_patches.hpp) and the per-tool measurement's own failure signals.
+// Patches (src/brep/boolean/boolean_patches.hpp) and the per-tool measurement's own failure signals.
 #define BOOST_TEST_MODULE verified_boolean_patches
 #include <boost/test/unit_test.hpp>
 
@@ -6,9 +6,9 @@
 #include <TopTools_IndexedMapOfShape.hxx>
 
 #include "boolean_test_shapes.hpp"
-#include "features/boolean_patches.hpp"
-#include "features/boolean_run.hpp"
-#include "features/boolean_volume.hpp"
+#include "src/brep/boolean/boolean_patches.hpp"
+#include "src/brep/boolean/boolean_run.hpp"
+#include "src/brep/boolean/boolean_volume.hpp"
 
 using namespace cg;
 using namespace cg::features;

@@ -11,8 +11,8 @@
 #include <random>
 
 #include "boolean_test_shapes.hpp"
-#include "features/wall_features.hpp"
-#include "features/wall_lines.hpp"
+#include "features/wall/wall_features.hpp"
+#include "features/wall/wall_lines.hpp"
 #include "src/config/builtin_example.hpp"
 #include "src/config/config.hpp"
 
