@@ -10,7 +10,7 @@
 //                          (--step: also the verified boolean path; --patches: split walls first)
 //
 // Work loads: the cooled example blade (builtin hpt_rotor config with its chambers, ribs and fillets,
-// features/passages/passages.hpp; ~40 s to build, not timed) with a film-hole field from
+// features/internal_cooling.hpp; ~40 s to build, not timed) with a film-hole field from
 // tests/support/drill_sample_holes.hpp (D 0.5 mm, 30 deg to the surface, staggered rows on both sides
 // wherever the exit lies on a chamber wall); or (--hollow, --quick) the hollow blade of
 // tests/support/boolean_sample_part.hpp with its hole field. Our time covers everything drill_holes does:

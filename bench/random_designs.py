@@ -202,14 +202,14 @@ def classify(exit_code, err, report):
     lines = [l for l in err.strip().splitlines() if l.strip()]
     if exit_code == 0:
         ok = report is not None and report.get("valid") is True and all(b.get("valid") for b in report.get("bodies", []))
-        return ("built", "") if ok else ("failed", "exit 0 but the report says invalid")
+        return ("built", "", "") if ok else ("failed", "exit 0 but the report says invalid", "")
     if exit_code == 2:
         if len(lines) == 1:
             m = FIELD.match(lines[0].removeprefix("coolinggen: error: "))
             if m:
-                return "refused", m.group(0)[:-2]
-        return "failed", "refusal without a one-line field error: " + " | ".join(lines)[:300]
-    return "failed", "exit %d: %s" % (exit_code, " | ".join(lines)[:300])
+                return "refused", m.group(0)[:-2], lines[0]
+        return "failed", "refusal without a one-line field error: " + " | ".join(lines)[:300], ""
+    return "failed", "exit %d: %s" % (exit_code, " | ".join(lines)[:300]), ""
 
 
 def field_group(field):
@@ -237,8 +237,8 @@ def run_variant(binary, work, index, doc, timeout):
             report = json.load(f)
     except (OSError, ValueError):
         pass
-    status, detail = classify(code, err, report)
-    return {"index": index, "status": status, "detail": detail, "seconds": seconds, "exit": code}
+    status, detail, message = classify(code, err, report)
+    return {"index": index, "status": status, "detail": detail, "message": message, "seconds": seconds, "exit": code}
 
 
 def main():
@@ -250,6 +250,7 @@ def main():
     ap.add_argument("--light", action="store_true")
     ap.add_argument("--timeout", type=float, default=900)
     ap.add_argument("--keep", help="keep the variants' configs and outputs in this directory")
+    ap.add_argument("--show-refusals", action="store_true", help="print the message of every refusal inside the ranges")
     a = ap.parse_args()
     rng = random.Random(a.seed)
     designs = []
@@ -303,6 +304,8 @@ def main():
         print("  time to refusal / median build time (%.1f s): median %.3f, worst %.3f (goal <= 0.05)" %
               (mb, statistics.median(refused) / mb, max(refused) / mb))
     for r in rows:
+        if a.show_refusals and r["status"] == "refused" and r["inside"]:
+            print("  refused v%03d (%s, inside): %s" % (r["index"], r["base"], r["message"][:400]))
         if r["status"] == "failed":
             print("  FAILED v%03d (%s, %s): %s" % (r["index"], r["base"], "inside" if r["inside"] else "free", r["detail"]))
     return 1 if allc["failed"] else 0

@@ -23,8 +23,8 @@
 #include <functional>
 #include <map>
 
-#include "src/brep/boolean/boolean_patches.hpp"
-#include "src/brep/boolean/boolean_volume.hpp"
+#include "src/brep/face_flux.hpp"
+#include "src/brep/face_patches.hpp"
 #include "features/drilling/drill_hole_geometry.hpp"
 #include "features/drilling/drill_hole_plan.hpp"
 #include "features/drilling/drill_hole_topology.hpp"
@@ -54,6 +54,9 @@ double hole_face_flux(const TopoDS_Face& f, const gp_Pnt& c) {
   g.Perform(bf, bd);
   return g.Mass();
 }
+
+// The same integral by our adaptive face flux (src/brep/face_flux.hpp) at 1e-9 of its scale.
+double face_flux(const TopoDS_Shape& f, const gp_Pnt& c) { return brep::face_volume_flux(TopoDS::Face(f), c, 1e-9).value; }
 
 bool no_error(const BRepCheck_ListOfStatus& l) {
   for (const BRepCheck_Status st : l)

@@ -22,7 +22,7 @@
 //     is rebuilt on the same surface with its own wires plus one inner wire per hole; the shells are
 //     rebuilt from the faces (no sewing).
 //  3. Wall faces that many holes reach are first split into patches along iso-lines between the holes
-//     (src/brep/boolean/boolean_patches.hpp), so each rebuilt face holds a bounded number of holes and every
+//     (src/brep/face_patches.hpp), so each rebuilt face holds a bounded number of holes and every
 //     local check costs O(holes on the face): the whole step stays linear in the number of holes.
 // Holes that fail a precondition fall back to the verified boolean path (verified_boolean.hpp,
 // BooleanStep), with the reason counted: first, on the part before drilling (a boolean's cost grows
@@ -77,7 +77,7 @@ struct DrillOptions {
   /// Per-hole |divergence volume - quadrature volume| <= rel * quadrature + uncertainty.
   double volume_rel_tolerance = 1e-6;
   /// Split faces reached by >= patch_min_holes holes into patches of about patch_holes_per_patch
-  /// (boolean_patches.hpp) first; 0: never. Off by default: every check here is per hole, so a wall
+  /// (src/brep/face_patches.hpp) first; 0: never. Off by default: every check here is per hole, so a wall
   /// with 1 000 holes costs no more per hole than one with 10 (measured, bench_holes), and the split
   /// (a general fuse, ~1-5 s) warns and is rejected on the cooled blade's trimmed chamber walls.
   int patch_min_holes = 0;

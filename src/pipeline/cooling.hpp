@@ -1,11 +1,11 @@
 #pragma once
 // The cooling stages of a build: the configured cooling features ("cooling" in the config) built into the
-// blade solid: internal passages (features/passages/passages.hpp), then film holes and impingement inserts against
+// blade solid: internal passages (features/internal_cooling.hpp), then film holes and impingement inserts against
 // the core the passages built (features/film/film_cooling.hpp, film_cavity.hpp). Input the blade cannot take
 // becomes ConfigError naming the field below "cooling" (cooling_config.hpp, cooling_film_config.hpp);
 // failed booleans and design checks stay features::FeatureFailure.
 #include "features/film/film_cooling.hpp"
-#include "features/passages/passages.hpp"
+#include "features/internal_cooling.hpp"
 #include "src/blade/blade_surface.hpp"
 #include "src/brep/named_shape.hpp"
 #include "src/config/cooling_config.hpp"

@@ -30,7 +30,7 @@
 #include "brep/temp_files.hpp"
 #include "export/step_writer.hpp"
 #include "brep/step_read_back.hpp"
-#include "features/passages/passages.hpp"
+#include "features/internal_cooling.hpp"
 #include "src/brep/blade_solid.hpp"
 #include "src/config/builtin_example.hpp"
 #include "src/config/config.hpp"

@@ -1,4 +1,4 @@
-// Patches (src/brep/boolean/boolean_patches.hpp) and the per-tool measurement's own failure signals.
+// Patches (src/brep/face_patches.hpp) and the per-tool measurement's own failure signals.
 #define BOOST_TEST_MODULE verified_boolean_patches
 #include <boost/test/unit_test.hpp>
 
@@ -6,7 +6,7 @@
 #include <TopTools_IndexedMapOfShape.hxx>
 
 #include "boolean_test_shapes.hpp"
-#include "src/brep/boolean/boolean_patches.hpp"
+#include "src/brep/face_patches.hpp"
 #include "src/brep/boolean/boolean_run.hpp"
 #include "src/brep/boolean/boolean_volume.hpp"
 

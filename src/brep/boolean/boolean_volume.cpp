@@ -81,11 +81,11 @@ gp_Pnt centre_of(const Bnd_Box& b) {
   return gp_Pnt(0.5 * (c[0] + c[3]), 0.5 * (c[1] + c[4]), 0.5 * (c[2] + c[5]));
 }
 
-}  // namespace
-
 double face_flux(const TopoDS_Shape& face, const gp_Pnt& c, double accuracy) {
   return brep::face_volume_flux(TopoDS::Face(face), c, accuracy).value;
 }
+
+}  // namespace
 
 VolumeMeasure measure_tool_volumes(const BooleanRun& run, const TopoDS_Shape& part, const std::vector<TopoDS_Shape>& tools,
                                    BooleanOperation op, bool parallel) {

@@ -48,8 +48,5 @@ struct VolumeMeasure {
 VolumeMeasure measure_tool_volumes(const BooleanRun& run, const TopoDS_Shape& part, const std::vector<TopoDS_Shape>& tools,
                                    BooleanOperation op, bool parallel);
 
-/// 1/3 * integral over the face of (x - c) . n dA (n follows the face's orientation), to the given
-/// relative accuracy (brep::face_volume_flux).
-double face_flux(const TopoDS_Shape& face, const gp_Pnt& c, double accuracy = 1e-9);
 
 }  // namespace cg::features

@@ -15,7 +15,7 @@
 #include "src/brep/boolean/boolean_disjoint.hpp"
 #include "src/brep/boolean/boolean_expected.hpp"
 #include "src/brep/boolean/boolean_naming.hpp"
-#include "src/brep/boolean/boolean_patches.hpp"
+#include "src/brep/face_patches.hpp"
 #include "src/brep/boolean/boolean_perturb.hpp"
 #include "src/brep/boolean/boolean_run.hpp"
 #include "src/brep/boolean/boolean_volume.hpp"

@@ -70,7 +70,7 @@ struct BooleanOptions {
   /// Tools closer than this (mm), overlapping or nested, are fused into one tool first.
   double overlap_gap = 1e-4;
   /// Faces reached by at least `patch_min_tools` tools are split into patches of about
-  /// `patch_tools_per_patch` tools first (src/brep/boolean/boolean_patches.hpp); 0 disables.
+  /// `patch_tools_per_patch` tools first (src/brep/face_patches.hpp); 0 disables.
   int patch_min_tools = 64;
   int patch_tools_per_patch = 32;
   /// Run brep::verify_solid on the result (BRepCheck, free edges, shells, closed mesh, volume).

@@ -1,4 +1,4 @@
-#include "src/brep/boolean/boolean_patches.hpp"
+#include "src/brep/face_patches.hpp"
 
 #include <BOPAlgo_Builder.hxx>
 #include <BRepBndLib.hxx>

@@ -1,4 +1,4 @@
-#include "features/passages/passages.hpp"
+#include "features/internal_cooling.hpp"
 
 #include <chrono>
 #include <cmath>
