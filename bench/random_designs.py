@@ -90,7 +90,7 @@ def inlets_for(ribs, rng, inside):
     chambers = len(ribs) + 1
     inlets, k = [], 1
     while k <= chambers:
-        inlets.append({"chamber": k, "end": "hub", "diameter": round(rng.uniform(1.5, 2.5) if inside else rng.uniform(0.5, 5.0), 4)})
+        inlets.append({"chamber": k, "end": "hub", "diameter": round(rng.uniform(1.0, 1.6) if inside else rng.uniform(0.5, 5.0), 4)})
         k += 1
         while k <= chambers and "turnaround" in ribs[k - 2]:  # rib k-1 between chamber k-1 and k
             k += 1
@@ -107,7 +107,7 @@ def vary_rotor(rng, inside, light):
         p["max_thickness"] = round(p["max_thickness"] * thick, 4)
     c = d["cooling"]
     core = c["core"]
-    core["wall_thickness"] = round(rng.uniform(0.7, 1.4) if inside else rng.uniform(0.4, 2.0), 4)
+    core["wall_thickness"] = round(rng.uniform(0.7, 1.2) if inside else rng.uniform(0.4, 2.0), 4)
     ribs = draw_ribs(rng, inside, rng.randint(1, 4), 50.0)
     core["ribs"] = ribs
     core["inlets"] = inlets_for(ribs, rng, inside)
@@ -127,7 +127,7 @@ def vary_rotor(rng, inside, light):
     if rng.random() < 0.7:
         te = core["trailing_edge"]
         te["pitch"] = 10.0 if light else round(rng.uniform(2.2, 3.5), 4)
-        te["cutback_length"] = round(rng.uniform(0.4, 0.8) if inside else rng.uniform(0.1, 4.0), 4)
+        te["cutback_length"] = round(rng.uniform(0.3, 0.6) if inside else rng.uniform(0.1, 4.0), 4)
         rows = rng.randint(0, 3 if inside else 5)
         if rows:
             te["pin_fins"] = {"diameter": round(rng.uniform(0.6, 0.9), 4),
@@ -142,6 +142,10 @@ def vary_rotor(rng, inside, light):
     for _ in range(rng.randint(0, 4)):
         side = rng.choice([-1, 1])
         chord = side * (rng.uniform(0.12, 0.85) if inside else rng.uniform(0.02, 0.98))
+        if inside:  # a row's bores run ~3 mm along the wall to the cavity: keep them 0.1 chord off the ribs
+            key = "suction_chord" if chord > 0 else "pressure_chord"
+            if any(abs(abs(chord) - abs(r[key])) < 0.1 for r in ribs):
+                continue
         ch = chamber_at(chord, ribs) if inside else rng.randint(1, chambers + 1)
         row = {"diameter": round(rng.uniform(0.3, 0.5), 4), "chord": round(chord, 4),
                "inclination_deg": round(rng.uniform(25, 40) if inside else rng.uniform(5, 80), 4),
@@ -188,7 +192,7 @@ def vary_c3x(rng, inside, light):
         c.pop("inserts", None)
     else:
         ins = c["inserts"][0]
-        ins["gap"] = round(rng.uniform(1.0, 2.0) if inside else rng.uniform(0.2, 4.0), 4)
+        ins["gap"] = round(rng.uniform(1.3, 2.0) if inside else rng.uniform(0.2, 4.0), 4)
         ins["sheet_thickness"] = round(rng.uniform(0.4, 0.8), 4)
         if light:
             ins["jets"]["spacing_x_d"] = ins["jets"]["spacing_y_d"] = 20

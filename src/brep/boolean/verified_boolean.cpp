@@ -245,7 +245,8 @@ class Engine {
   // the part comes back unchanged (apply() throws FeatureFailure naming every failed feature).
   brep::NamedShape retry(const brep::NamedShape& part, int id, const Attempt& first, bool verify) {
     Unit& u = units[static_cast<std::size_t>(id)];
-    std::string last = describe(first, u);
+    const std::string first_failure = describe(first, u);
+    std::string last = first_failure;
     bool shift_refused = false;
     for (int k = 1; k <= opt_.max_retries; ++k) {
       const Perturbed p = perturb_tool(u.shape, u.axis, k, opt_.perturbation);
@@ -281,7 +282,8 @@ class Engine {
       last = describe(a, u, expected) + " after " + p.what;
       report_.warnings.push_back(u.label + ": retry " + std::to_string(k) + " (" + p.what + ") rejected: " + last);
     }
-    failures.push_back("feature " + u.label + " could not be applied correctly (" + last + ", " +
+    failures.push_back("feature " + u.label + " could not be applied correctly (" + first_failure +
+                       (last != first_failure ? "; last retry: " + last : std::string()) + "; " +
                        (shift_refused ? std::string("no shifted retry: booleans.allow_perturbation is false; set it true to let it be moved by ") +
                                             format_number(opt_.perturbation) + " mm"
                                       : std::to_string(opt_.max_retries) + " perturbed retries failed") +
