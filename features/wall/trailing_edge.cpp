@@ -282,7 +282,6 @@ void check_lip(const TrailingEdgeDefinition& te, const TeFrame& f, double s) {
 }  // namespace
 
 void check_trailing_edge_placement(const blade::BladeModel& model, const CoreDefinition& def) {
-  check_trailing_edge_definition(def);
   if (!def.trailing_edge) return;
   const blade::BladeCoordinates coords(model);
   const std::optional<EndWall> hub = def.hub_floor.open ? std::nullopt : std::optional<EndWall>(EndWall(model, SpanEnd::Hub, def.hub_floor.thickness));

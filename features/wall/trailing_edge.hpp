@@ -68,7 +68,7 @@ struct TrailingEdgeBuild {
 /// Checks without geometry: sizes, slot pitch > slot width, count, taper (PassageInputError with
 /// "core.trailing_edge.<field>").
 void check_trailing_edge_definition(const CoreDefinition& def);
-/// check_trailing_edge_definition and what needs the blade model but no solid: the slots' layout
+/// After check_trailing_edge_definition (check_wall_feature_definitions), what needs the blade model but no solid: the slots' layout
 /// between the end walls (pitch, count) and, for a cutback, the lip downstream of the last chamber at
 /// every slot (the same code build_trailing_edge runs, before the first boolean).
 void check_trailing_edge_placement(const blade::BladeModel& model, const CoreDefinition& def);

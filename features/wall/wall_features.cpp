@@ -21,10 +21,6 @@ class Lap {
   std::chrono::steady_clock::time_point t0_ = std::chrono::steady_clock::now();
 };
 
-}  // namespace
-
-namespace {
-
 // A turbulator whose fuse misses its independent volume after the retries (the repro design
 // turbulator_volume_mismatch: ~1e-4 relative on every position tried, tolerance 1e-6; not yet explained):
 // refused naming the failed turbulator's definition, the part of the design the user can change.
