@@ -8,7 +8,9 @@
 #include <TopoDS_Compound.hxx>
 #include <TopoDS_Iterator.hxx>
 #include <dlfcn.h>
+#include <unistd.h>
 
+#include <chrono>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -336,14 +338,18 @@ features::FeatureTool tool_of(const json& j, const TopoDS_Shape& shape) {
   return t;
 }
 
-// SHA-256 of the file that holds this code (the coolinggen binary, or the library a host loaded).
+// SHA-256 of the file that holds this code (the coolinggen binary, or the library a host loaded), once.
 const std::string& binary_fingerprint() {
   static const std::string fingerprint = [] {
+    // The shared object this function is in (a host program's library), else the executable.
     Dl_info info{};
     std::string file = "/proc/self/exe";
-    if (dladdr(reinterpret_cast<const void*>(&binary_fingerprint), &info) != 0 && info.dli_fname && *info.dli_fname) file = info.dli_fname;
+    if (dladdr(reinterpret_cast<const void*>(&binary_fingerprint), &info) != 0 && info.dli_fname && *info.dli_fname &&
+        std::ifstream(info.dli_fname).good())
+      file = info.dli_fname;
     std::ifstream in(file, std::ios::binary);
-    if (!in) throw Error("stage cache: cannot read " + file + " for the binary's fingerprint");
+    // Unreadable: a fingerprint of this process alone (its entries are never read by another one).
+    if (!in) return "unread binary, process " + std::to_string(::getpid()) + " " + std::to_string(std::chrono::steady_clock::now().time_since_epoch().count());
     Sha256 h;
     char buffer[1 << 16];
     while (in.read(buffer, sizeof buffer) || in.gcount() > 0) h.update(buffer, static_cast<std::size_t>(in.gcount()));

@@ -3,7 +3,8 @@
 // an entry.
 //
 // Key: SHA-256 of the cache format, the tool version, a fingerprint of the binary that holds this code
-// (SHA-256 of its file: a rebuilt tool never reads the entries of another build), verify_each_step,
+// (SHA-256 of its file: a rebuilt tool never reads the entries of another build; when the file cannot
+// be read, a value of this process alone), verify_each_step,
 // and what the blade model, the solid and the cooling stage read: the parsed config without the fields
 // only other stages read (kNotCoolingInputs: name, description, output, mesh, grid and the film
 // fields under "cooling"), then the bytes of the config's section point files and cooling table files
