@@ -10,13 +10,13 @@
 //
 //   bench_stage_cache          6 variants of the built-in example, every film row's pitch_d 5 to 7 (long:
 //                              each uncached variant is a full cooled build)
-//   bench_stage_cache --quick  3 variants of tests/study/light_film_base.json, the film row's pitch_d 5 to 7
+//   bench_stage_cache --light  6 variants of tests/study/light_film_base.json, the film row's pitch_d 5 to 7
+//   bench_stage_cache --quick  3 of those (the CI smoke run)
 // Both with --jobs 2. Runs the coolinggen binary of the build directory.
 #include <sys/resource.h>
 #include <unistd.h>
 
 #include <cstdio>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -30,9 +30,12 @@ using nlohmann::json;
 
 namespace {
 
-std::string write_study(const fs::path& dir, bool quick) {
+enum class Size { kFull, kLight, kQuick };
+
+std::string write_study(const fs::path& dir, Size size) {
+  const bool quick = size != Size::kFull;
   json pitches = json::array();
-  const int n = quick ? 3 : 6;
+  const int n = size == Size::kQuick ? 3 : 6;
   for (int i = 0; i < n; ++i) pitches.push_back(5.0 + 2.0 * i / (n - 1));
   const json study{{"name", quick ? "light_film_pitch" : "hpt_rotor_film_pitch"},
                    {"base", quick ? COOLINGGEN_SOURCE_DIR "/tests/study/light_film_base.json" : COOLINGGEN_SOURCE_DIR "/data/examples/hpt_rotor.json"},
@@ -89,12 +92,13 @@ Run run(study::SweepOptions o, pipeline::StageCacheMode mode, const fs::path& di
 }  // namespace
 
 int main(int argc, char** argv) {
-  const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+  const std::string arg = argc > 1 ? argv[1] : "";
+  const Size size = arg == "--quick" ? Size::kQuick : arg == "--light" ? Size::kLight : Size::kFull;
   const fs::path work = fs::temp_directory_path() / ("cg_bench_stage_cache_" + std::to_string(::getpid()));
   fs::remove_all(work);
   fs::create_directories(work);
   study::SweepOptions o;
-  o.study_file = write_study(work, quick);
+  o.study_file = write_study(work, size);
   o.executable = fs::path(COOLINGGEN_BINARY_DIR) / "coolinggen";
   o.jobs = 2;
   int failures = 0;
@@ -103,8 +107,8 @@ int main(int argc, char** argv) {
     std::printf("FAILED: %s\n", what.c_str());
   };
   try {
-    std::printf("bench_stage_cache: a film-pitch-only sweep of %s, --jobs 2\n",
-                quick ? "tests/study/light_film_base.json (3 variants)" : "the built-in example (6 variants)");
+    std::printf("bench_stage_cache: a film-pitch-only sweep of %s (%d variants), --jobs 2\n",
+                size == Size::kFull ? "the built-in example" : "tests/study/light_film_base.json", size == Size::kQuick ? 3 : 6);
     const Run off = run(o, pipeline::StageCacheMode::kOff, work / "off");
     const Run on = run(o, pipeline::StageCacheMode::kDisk, work / "on");
     const auto& a = off.outcome.listing.rows;

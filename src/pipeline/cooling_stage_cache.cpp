@@ -17,7 +17,7 @@
 #include <sstream>
 
 #include "export/version.hpp"
-#include "features/core_passages.hpp"
+#include "features/passages/core_passages.hpp"
 #include "src/config/cooling_film_config.hpp"
 #include "src/core/error.hpp"
 #include "src/pipeline/report.hpp"

@@ -13,7 +13,7 @@
 //
 // Entry: the cooled blade and the wall-feature tools (turbulators, pin fins, slots) as shapes with
 // their face names, and as JSON the passage report, the blade's check, and of the core what the film
-// stage places holes and inserts against (features::film_cavity_of_core, add_wall_feature_obstacles):
+// stage places holes and inserts against (features/film/film_cavity.hpp):
 // the inner wall, the chambers and the end walls. A restored PassagesResult therefore holds every field
 // the film stage and the report read; the core's rib tubes, chamber systems and boolean tools, the
 // wall features' placement records and boolean step reports are not restored (nothing after the
@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-#include "features/passages.hpp"
+#include "features/internal_cooling.hpp"
 #include "src/config/config.hpp"
 #include "src/pipeline/stage_cache.hpp"
 
