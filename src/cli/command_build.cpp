@@ -1,6 +1,8 @@
-// coolinggen build [CONFIG] -o DIR [-q] [--timeout S]: the pipeline's run_build + write_outputs, printed.
+// coolinggen build [CONFIG] -o DIR [-q] [--timeout S] [--stage-cache CACHE_DIR]: the pipeline's run_build +
+// write_outputs, printed.
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 
 #include "export/atomic_file.hpp"
 #include "src/cli/commands.hpp"
@@ -31,6 +33,8 @@ void print_summary(const config::Config& c, const pipeline::BuildResult& r, cons
       total += t.seconds;
     }
   std::printf(" total %.3f s\n", total);
+  for (const pipeline::StageCacheUse& u : r.stage_cache)
+    std::printf("  stage cache: %s %s (key %s)\n", u.stage.c_str(), pipeline::StageCacheUse::name(u.outcome), u.key.c_str());
   for (const std::string& warning : r.warnings) std::printf("  warning: %s\n", warning.c_str());
   std::printf("  wrote");
   for (std::size_t i = 0; i < w.files.size(); ++i)
@@ -38,7 +42,7 @@ void print_summary(const config::Config& c, const pipeline::BuildResult& r, cons
   std::printf("\n");
 }
 
-int run_build(const JobOptions& o) {
+int run_build(const JobOptions& o, const std::string& stage_cache_dir) {
   ConsoleProgress console(o.show_progress());
   pipeline::TimeLimit limit(&console, o.timeout_s);
   Watchdog watchdog(limit, console, watchdog_grace(o.timeout_s), o.output.string());
@@ -48,7 +52,11 @@ int run_build(const JobOptions& o) {
     if (std::filesystem::exists(o.output, ec) && !std::filesystem::is_directory(o.output, ec))
       throw io::ExportError("output directory " + o.output.string() + " exists and is not a directory");
     const config::Config c = load_config_argument(o.config);
-    const pipeline::BuildResult r = pipeline::run_build(c, {}, &limit);
+    std::optional<pipeline::StageCache> cache;
+    if (!stage_cache_dir.empty()) cache.emplace(pipeline::StageCacheOptions{pipeline::StageCacheMode::kDisk, stage_cache_dir});
+    pipeline::BuildOptions options;
+    options.stage_cache = cache ? &*cache : nullptr;
+    const pipeline::BuildResult r = pipeline::run_build(c, options, &limit);
     // The directory is touched only from here on (write_outputs polls before each file).
     if (limit.stop_requested()) throw Cancelled("writing outputs", "before");
     watchdog.set_writing();
@@ -77,7 +85,12 @@ Command add_build_command(CLI::App& app) {
   auto o = std::make_shared<JobOptions>();
   CLI::App* cmd = app.add_subcommand("build", "Build and check the blade solid; write DIR/blade.step and DIR/report.json");
   add_job_options(cmd, *o);
-  return {cmd, [o] { return run_build(*o); }};
+  auto cache_dir = std::make_shared<std::string>();
+  cmd->add_option("--stage-cache", *cache_dir,
+                  "Take the cooling stage from DIR when a build of the same inputs stored it there, else store it "
+                  "(docs/studies.md; coolinggen sweep passes its study's cache)")
+      ->type_name("DIR");
+  return {cmd, [o, cache_dir] { return run_build(*o, *cache_dir); }};
 }
 
 }  // namespace cg::cli

@@ -1,4 +1,4 @@
-// coolinggen sweep STUDY -o DIR [--jobs N] [--timeout S] [--only ID] [--emit slurm] [-q]
+// coolinggen sweep STUDY -o DIR [--jobs N] [--timeout S] [--only ID] [--emit slurm] [--stage-cache off|disk] [-q]
 // coolinggen sweep --collect DIR
 // A design study (src/study/sweep.hpp): every variant of STUDY built by a `coolinggen build` process of
 // this binary into DIR/variants/<id>/, DIR/results.csv and DIR/study_report.md. Exit 0 when every
@@ -35,6 +35,7 @@ void install_terminate_handler() {
 
 struct SweepArguments {
   std::string study, output, only, emit, collect;
+  std::string stage_cache = "disk";
   int jobs = 0;  // 0: the core count
   double timeout_s = 0;
   bool quiet = false;
@@ -66,6 +67,7 @@ int run_sweep_command(const SweepArguments& a) {
   o.kill_after_s = a.timeout_s > 0 ? a.timeout_s + watchdog_grace(a.timeout_s) + 5 : 0;
   o.only = a.only;
   o.emit = a.emit == "slurm" ? study::Emit::kSlurm : study::Emit::kNone;
+  o.stage_cache = pipeline::parse_stage_cache_mode(a.stage_cache, "--stage-cache");
   ConsoleProgress interrupt(false);  // reads the Ctrl-C flag (install_interrupt_handler in main)
   install_terminate_handler();
   o.stop_requested = [&interrupt] { return interrupt.stop_requested() || g_terminated; };
@@ -108,6 +110,10 @@ Command add_sweep_command(CLI::App& app) {
       ->type_name("SECONDS");
   cmd->add_option("--only", a->only, "Build only this variant (index or id; a Slurm array task); results.csv is left to --collect");
   cmd->add_option("--emit", a->emit, "Write a job script instead of running: slurm (DIR/study.sbatch)")->check(CLI::IsMember({"slurm"}));
+  cmd->add_option("--stage-cache", a->stage_cache,
+                  "disk (default): variants that differ only after the cooling stage share it through DIR/cache; off: "
+                  "every variant builds every stage")
+      ->check(CLI::IsMember({"off", "disk"}));
   cmd->add_option("--collect", a->collect, "Merge the variants' reports in DIR into DIR/results.csv and DIR/study_report.md")
       ->type_name("DIR");
   cmd->add_flag("-q,--quiet", a->quiet, "Print nothing on success (the progress line is shown only on a terminal)");

@@ -26,6 +26,7 @@
 #include "src/brep/verify.hpp"
 #include "src/config/config.hpp"
 #include "src/core/progress.hpp"
+#include "src/pipeline/stage_cache.hpp"
 #include "src/pipeline/time_limit.hpp"
 
 namespace cg::pipeline {
@@ -38,6 +39,22 @@ struct BuildOptions {
   /// stage, on the final blade; only if that fails are the feature stages run again with it after
   /// every step, which names the feature to blame (stages "cooling_rechecked", "film_rechecked").
   bool verify_each_step = false;
+  /// Optional: the cooling stage is taken from this cache when an earlier build stored the same inputs,
+  /// and stored in it otherwise (stage_cache.hpp, cooling_stage_cache.hpp). Null: always built.
+  StageCache* stage_cache = nullptr;
+};
+
+/// What the stage cache did for one stage of a build.
+struct StageCacheUse {
+  enum class Outcome {
+    kHit,        ///< taken from the cache
+    kStored,     ///< built and stored
+    kNotStored,  ///< built; storing failed (the warning says why)
+  };
+  std::string stage;
+  std::string key;  ///< hex digest of the stage's inputs
+  Outcome outcome = Outcome::kStored;
+  static const char* name(Outcome o);  ///< "hit", "stored", "not_stored"
 };
 
 /// Wall-clock time of one stage, seconds.
@@ -59,6 +76,8 @@ struct BuildResult {
   std::vector<std::string> warnings;
   /// Stages in run order.
   std::vector<StageTiming> timings;
+  /// The stages that went through BuildOptions::stage_cache, in run order (empty without a cache).
+  std::vector<StageCacheUse> stage_cache;
   /// What the cooling stage measured (design checks, passage sections, volumes); none when uncooled.
   std::optional<features::PassageReport> cooling;
   /// What the film stage measured (per hole, row, chamber, insert); none without film input.

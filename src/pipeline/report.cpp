@@ -86,14 +86,13 @@ nlohmann::ordered_json report_model(const config::Config& c, const blade::BladeM
               {"config", c.source}};
 }
 
-std::string input_hash(const config::Config& c) {
-  Sha256 h;
+void hash_inputs(Sha256& h, const nlohmann::json& document, const config::Config& c) {
   // Each part is length-prefixed so that moving bytes between parts changes the hash.
   const auto part = [&](const std::string& s) {
     h.update(std::to_string(s.size()) + ":");
     h.update(s);
   };
-  part(c.source.dump());
+  part(document.dump());
   std::vector<std::string> files;
   for (const auto& s : c.blade.sections) {
     const auto* p = std::get_if<blade::PointSectionDefinition>(&s.shape);
@@ -106,6 +105,11 @@ std::string input_hash(const config::Config& c) {
     bytes << in.rdbuf();
     part(in ? bytes.str() : std::string("<unreadable>"));
   }
+}
+
+std::string input_hash(const config::Config& c) {
+  Sha256 h;
+  hash_inputs(h, c.source, c);
   return "sha256:" + h.hex_digest();
 }
 
@@ -142,6 +146,13 @@ io::ReportContent report_content(const config::Config& c, const BuildResult& r, 
     for (std::size_t i = 0; list && i < list->size(); ++i)
       perturbed.push_back({{"feature", (*list)[i].feature}, {"change", (*list)[i].change},
                            {"geometry_changed", (*list)[i].geometry_changed}});
+  // Which stages came from the stage cache: not a property of the model (the same with or without it).
+  if (!r.stage_cache.empty()) {
+    nlohmann::ordered_json uses = nlohmann::ordered_json::array();
+    for (const StageCacheUse& u : r.stage_cache)
+      uses.push_back({{"stage", u.stage}, {"outcome", StageCacheUse::name(u.outcome)}, {"key", u.key}});
+    rc.extra["stage_cache"] = uses;
+  }
   rc.extra["booleans"] = {{"allow_perturbation", c.cooling.passages.retries == features::PerturbedRetries::Any},
                           {"perturbed_tools", perturbed}};
   return rc;

@@ -22,6 +22,12 @@ nlohmann::ordered_json report_model(const config::Config& config, const blade::B
 /// equal inputs, whatever the formatting or the files' location.
 std::string input_hash(const config::Config& config);
 
+class Sha256;
+/// What input_hash hashes, with `document` (the parsed config or a part of it, e.g. the fields one stage
+/// reads: stage_cache_key.hpp) in place of the whole config: its canonical dump, then the bytes of the
+/// config's section point files and cooling table files, each length-prefixed.
+void hash_inputs(Sha256& hash, const nlohmann::json& document, const config::Config& config);
+
 /// The report of `result` for the files `outputs` (report.json included) and the stage `timings`.
 io::ReportContent report_content(const config::Config& config, const BuildResult& result,
                                  const std::vector<std::string>& outputs, const std::vector<StageTiming>& timings);

@@ -66,10 +66,20 @@ fs::path current_executable() {
 std::vector<ProcessResult> run_processes(const std::vector<ProcessSpec>& specs, const PoolOptions& o) {
   std::vector<ProcessResult> results(specs.size());
   std::vector<Running> running;
-  std::size_t next = 0;
+  std::vector<bool> started(specs.size(), false), ended(specs.size(), false);
+  std::size_t first_unstarted = 0;  // specs before it have all started
   bool stopping = false;
   auto last_tick = Clock::now();
-  while (next < specs.size() || !running.empty()) {
+  // The first spec that has not started and whose `after` spec (an earlier one) has ended.
+  const auto next_ready = [&]() -> std::size_t {
+    while (first_unstarted < specs.size() && started[first_unstarted]) ++first_unstarted;
+    for (std::size_t i = first_unstarted; i < specs.size(); ++i) {
+      const std::size_t a = specs[i].after;
+      if (!started[i] && (a >= i || ended[a])) return i;
+    }
+    return specs.size();
+  };
+  while (first_unstarted < specs.size() || !running.empty()) {
     if (!stopping && o.stop_requested && o.stop_requested()) {
       stopping = true;
       for (Running& r : running) {
@@ -78,7 +88,9 @@ std::vector<ProcessResult> run_processes(const std::vector<ProcessSpec>& specs, 
         r.interrupt_time = Clock::now();
       }
     }
-    while (!stopping && next < specs.size() && static_cast<int>(running.size()) < std::max(1, o.jobs)) {
+    while (!stopping && static_cast<int>(running.size()) < std::max(1, o.jobs)) {
+      const std::size_t next = next_ready();
+      if (next == specs.size()) break;
       pid_t pid = -1;
       try {
         pid = start(specs[next]);
@@ -88,9 +100,9 @@ std::vector<ProcessResult> run_processes(const std::vector<ProcessSpec>& specs, 
       }
       running.push_back({next, pid, Clock::now(), false, false, Clock::now()});
       results[next].started = true;
-      ++next;
+      started[next] = true;
     }
-    if (stopping) next = specs.size();
+    if (stopping) first_unstarted = specs.size();
     for (std::size_t k = 0; k < running.size();) {
       Running& r = running[k];
       int status = 0;
@@ -102,6 +114,7 @@ std::vector<ProcessResult> run_processes(const std::vector<ProcessSpec>& specs, 
         res.signal = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
         res.killed_for_time = r.killed && !r.interrupted;
         res.interrupted = r.interrupted;
+        ended[r.index] = true;
         if (o.on_finished) o.on_finished(r.index, res);
         running.erase(running.begin() + static_cast<long>(k));
         continue;

@@ -1,5 +1,6 @@
 #pragma once
-// Runs commands as child processes, at most `jobs` at a time. Each child runs in its own process group
+// Runs commands as child processes, at most `jobs` at a time, in order (a spec may wait for an earlier one
+// to end: ProcessSpec::after). Each child runs in its own process group
 // with stdout and stderr in files; one that outlives its `kill_after_s` is killed (SIGKILL to its
 // group). When `stop_requested` turns true no child is started any more, the running ones get SIGINT
 // (a coolinggen build stops cleanly at its next check point) and, after `stop_grace_s`, SIGKILL.
@@ -15,6 +16,11 @@ struct ProcessSpec {
   std::vector<std::string> argv;  ///< argv[0] is the program (a path)
   std::filesystem::path stdout_file, stderr_file;
   double kill_after_s = 0;  ///< 0: never
+  /// Index of an earlier spec that must have ended before this one starts (e.g. the variant that
+  /// stores the stage this one takes from the stage cache); kNone: no such wait. Specs start in
+  /// order, a waiting one skipped for the next that can start.
+  static constexpr std::size_t kNone = static_cast<std::size_t>(-1);
+  std::size_t after = kNone;
 };
 
 struct ProcessResult {

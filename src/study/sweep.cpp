@@ -4,6 +4,7 @@
 #include <csignal>
 #include <cstring>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "export/atomic_file.hpp"
@@ -115,6 +116,7 @@ std::string slurm_script(const SweepOptions& o, const std::string& name, std::si
     << "exec " << shell_quote(fs::absolute(o.executable).string()) << " sweep " << shell_quote(fs::absolute(o.study_file).lexically_normal().string())
     << " -o " << shell_quote(dir.string()) << " --only \"$SLURM_ARRAY_TASK_ID\" --jobs 1";
   if (o.timeout_s > 0) s << " --timeout " << format_number(o.timeout_s);
+  if (o.stage_cache == pipeline::StageCacheMode::kOff) s << " --stage-cache off";
   s << "\n";
   return s.str();
 }
@@ -127,8 +129,13 @@ StudyListing collect_study(const fs::path& dir) {
   return l;
 }
 
+fs::path stage_cache_directory(const fs::path& study_dir) { return study_dir / "cache"; }
+
 SweepOutcome run_sweep(const SweepOptions& o) {
   const auto t0 = Clock::now();
+  if (o.stage_cache == pipeline::StageCacheMode::kMemory)
+    throw config::ConfigError("--stage-cache: \"memory\" keeps stages within one process, and each variant of a sweep is its own "
+                              "process (allowed: \"off\", \"disk\")");
   const Study study = load_study(o.study_file);
   const std::vector<Variant> all = expand_design(study);
   const std::vector<Variant> chosen = select(all, o.only);
@@ -172,6 +179,7 @@ SweepOutcome run_sweep(const SweepOptions& o) {
   // Resume: what an earlier run of the same config found is kept.
   std::vector<ProcessSpec> specs;
   std::vector<std::size_t> spec_of;  // specs[k] -> prepared index
+  std::map<std::string, std::size_t> builds_stage;  // cooling key -> the spec that builds it first
   for (std::size_t i = 0; i < prepared.size(); ++i) {
     const PreparedVariant& p = prepared[i];
     if (p.refused()) continue;
@@ -184,6 +192,14 @@ SweepOutcome run_sweep(const SweepOptions& o) {
     ProcessSpec s;
     s.argv = {o.executable.string(), "build", p.config_file.string(), "-o", p.dir.string()};
     if (o.timeout_s > 0) s.argv.insert(s.argv.end(), {"--timeout", format_number(o.timeout_s)});
+    if (o.stage_cache == pipeline::StageCacheMode::kDisk) {
+      s.argv.insert(s.argv.end(), {"--stage-cache", stage_cache_directory(o.output).string()});
+      // The first variant of a cooling stage builds and stores it; the others of this run wait for it.
+      if (!p.cooling_key.empty()) {
+        const auto [it, first] = builds_stage.emplace(p.cooling_key, specs.size());
+        if (!first) s.after = it->second;
+      }
+    }
     s.stdout_file = p.dir / "build.log";
     s.stderr_file = p.dir / "build.err";
     s.kill_after_s = o.kill_after_s;

@@ -20,6 +20,9 @@ struct PreparedVariant {
   std::filesystem::path config_file;  ///< dir/config.json
   std::string input_hash;             ///< as report.json will carry it (pipeline::input_hash); empty when refused
   std::string refusal;                ///< the config error (one line, starts with the field); empty: valid
+  /// The key of its cooling stage in the stage cache (pipeline::cooling_stage_key); empty when refused
+  /// or uncooled. Variants with equal keys share the stage.
+  std::string cooling_key;
   bool refused() const { return !refusal.empty(); }
 };
 

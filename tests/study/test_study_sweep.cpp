@@ -18,6 +18,7 @@
 #include <thread>
 
 #include "cli/run_cli.hpp"
+#include "study/results_csv.hpp"
 #include "src/config/config_error.hpp"
 #include "src/study/design.hpp"
 #include "src/study/field_path.hpp"
@@ -27,6 +28,7 @@ namespace fs = std::filesystem;
 using namespace cg;
 using nlohmann::json;
 using test::q;
+using test::read_results;
 using test::read_text;
 using test::TempDir;
 
@@ -50,40 +52,6 @@ std::string study_text(const std::string& extra_parameter = "") {
          {"design", {{"type", "csv"}, {"file", "rows.csv"}}}};
   if (!extra_parameter.empty()) s["parameters"].push_back(json::parse(extra_parameter));
   return s.dump(1);
-}
-
-// results.csv as rows of cells (no quoted commas in the columns read here but the error, which is last
-// of the ones compared and compared as a prefix).
-std::vector<std::map<std::string, std::string>> read_results(const fs::path& file) {
-  std::ifstream in(file);
-  std::string line;
-  std::vector<std::string> header;
-  std::vector<std::map<std::string, std::string>> rows;
-  const auto split = [](const std::string& l) {
-    std::vector<std::string> cells;
-    std::string cell;
-    bool quoted = false;
-    for (std::size_t i = 0; i < l.size(); ++i) {
-      if (quoted && l[i] == '"' && i + 1 < l.size() && l[i + 1] == '"') cell += '"', ++i;
-      else if (l[i] == '"') quoted = !quoted;
-      else if (l[i] == ',' && !quoted) cells.push_back(cell), cell.clear();
-      else cell += l[i];
-    }
-    cells.push_back(cell);
-    return cells;
-  };
-  while (std::getline(in, line)) {
-    const auto cells = split(line);
-    if (header.empty()) {
-      header = cells;
-      continue;
-    }
-    BOOST_TEST_REQUIRE(cells.size() == header.size(), line);
-    std::map<std::string, std::string> row;
-    for (std::size_t i = 0; i < cells.size(); ++i) row[header[i]] = cells[i];
-    rows.push_back(row);
-  }
-  return rows;
 }
 
 long long mtime(const fs::path& f) { return fs::last_write_time(f).time_since_epoch().count(); }
