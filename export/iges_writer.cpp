@@ -18,6 +18,7 @@
 #include <Geom_BSplineCurve.hxx>
 #include <Geom_BSplineSurface.hxx>
 #include <Geom_BezierCurve.hxx>
+#include <Geom_Circle.hxx>
 #include <Geom_ConicalSurface.hxx>
 #include <Geom_CylindricalSurface.hxx>
 #include <Geom_ElementarySurface.hxx>
@@ -42,6 +43,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <tuple>
 #include <vector>
 
@@ -65,11 +67,21 @@ double converted_angle_parameter(double phi) {
   return turns * period + m + span / 2 * std::tan((local - m) / 2) / std::tan(span / 4);
 }
 
+// An edge's old pcurve c2 as a function of the parameter t of the edge's converted 3D curve: c2 at t
+// itself when the conversion kept the parametrisation (a B-spline, Bezier or line 3D curve, or none),
+// else c2 at the old parameter the point C(t) of the converted curve has (`old_parameter`, e.g. the
+// angle of C(t) on the edge's circle).
+struct PcurveMap {
+  const Geom2d_Curve& c2;
+  std::function<double(double)> old_parameter;  ///< empty: the identity
+  gp_Pnt2d Value(double t) const { return c2.Value(old_parameter ? old_parameter(t) : t); }
+};
+
 // Knots for the fit of the mapped pcurve: c2's own, plus a knot of multiplicity p - 1 where the angle
 // crosses a span boundary of the converted surface (the map is only C1 there: its second derivative
 // jumps; found by bisection between 16 samples per span), plus knots so that no span sweeps more than
 // pi / 16 of angle (c2's own spans are often one per loop piece).
-std::vector<double> mapped_pcurve_knots(const Geom2d_Curve& c2, double first, double last, std::vector<double> knots, int p) {
+std::vector<double> mapped_pcurve_knots(const PcurveMap& c2, double first, double last, std::vector<double> knots, int p) {
   const double third = 2 * M_PI / 3;
   auto sector = [&](double t) { return std::floor(c2.Value(t).X() / third); };
   const int samples = 16 * (static_cast<int>(knots.size()) - 2 * p - 1);
@@ -105,20 +117,17 @@ std::vector<double> span_samples(const std::vector<double>& knots, int p) {
   return params;
 }
 
-// The pcurve c2 (on a cylinder or cone, u the angle) carried over to `now`, the periodic B-spline form
+// The pcurve c2 (on a cylinder or cone, u the angle; initial knots `knots` of degree p over
+// [first, last], the parameter of the new 3D curve) carried over to `now`, the periodic B-spline form
 // of that surface (NewSurface): u mapped exactly (converted_angle_parameter) at the samples, fitted by
 // least squares (degree at least 3) on mapped_pcurve_knots, a knot added in every span where the fit
 // is off, up to 8 rounds; accepted when the fitted pcurve puts every check point (the samples and the
 // midpoints between them) on `now` within a tenth of the edge's tolerance of where c2 put it on the
 // cylinder. Null otherwise: then OCCT's projection (ProjLib_ComputeApproxOnPolarSurface, ~30 ms per
 // film-hole edge) does it.
-Handle(Geom2d_Curve) angular_pcurve(const Geom2d_Curve& c2, double first, double last, const Geom_Surface& old,
-                                    const Geom_Surface& now, double tol) {
-  Handle(Geom2d_BSplineCurve) b =
-      Geom2dConvert::CurveToBSplineCurve(new Geom2d_TrimmedCurve(Handle(Geom2d_Curve)::DownCast(c2.Copy()), first, last));
-  if (b->Degree() < 3) b->IncreaseDegree(3);
-  const int p = b->Degree();
-  std::vector<double> knots = mapped_pcurve_knots(c2, first, last, occt::from_occt(*b).knots(), p);
+Handle(Geom2d_Curve) angular_pcurve(const PcurveMap& c2, double first, double last, std::vector<double> knots, int p,
+                                    const Geom_Surface& old, const Geom_Surface& now, double tol) {
+  knots = mapped_pcurve_knots(c2, first, last, std::move(knots), p);
   for (int round = 0; round < 8; ++round) {
     const std::vector<double> params = span_samples(knots, p);
     PointList<2> points;
@@ -200,13 +209,56 @@ class KeepBSplineFaces : public BRepTools_NurbsConvertModification {
     if (usable && (s->IsKind(STANDARD_TYPE(Geom_CylindricalSurface)) || s->IsKind(STANDARD_TYPE(Geom_ConicalSurface)))) {
       TopLoc_Location nl;
       const Handle(Geom_Surface) now = BRep_Tool::Surface(new_f, nl);
-      c = angular_pcurve(*c2, f2, l2, *s, *now, BRep_Tool::Tolerance(e));
+      Handle(Geom2d_BSplineCurve) b = Geom2dConvert::CurveToBSplineCurve(new Geom2d_TrimmedCurve(Handle(Geom2d_Curve)::DownCast(c2->Copy()), f2, l2));
+      if (b->Degree() < 3) b->IncreaseDegree(3);
+      c = angular_pcurve({*c2, {}}, f2, l2, occt::from_occt(*b).knots(), b->Degree(), *s, *now, BRep_Tool::Tolerance(e));
       if (!c.IsNull()) {
         tol = BRep_Tool::Tolerance(e);
         return Standard_True;
       }
     }
+    if (circle_pcurve(e, f, new_e, new_f, c)) {
+      tol = BRep_Tool::Tolerance(e);
+      return Standard_True;
+    }
     return BRepTools_NurbsConvertModification::NewCurve2d(e, f, new_e, new_f, c, tol);
+  }
+
+  // A circle's edge on a cylinder or cone (a hole's or pin's rim): its 3D curve is now a rational
+  // B-spline C whose parameter t is not the angle, so the old pcurve is mapped at the angle of C(t)
+  // on the circle (exact: ElCLib), unwrapped about the linear guess between the edge's ends, and
+  // fitted as above on C's knots. False when it does not apply or the fit is not accepted.
+  static bool circle_pcurve(const TopoDS_Edge& e, const TopoDS_Face& f, const TopoDS_Edge& new_e, const TopoDS_Face& new_f,
+                            Handle(Geom2d_Curve)& c) {
+    TopLoc_Location sl;
+    const Handle(Geom_Surface) s = BRep_Tool::Surface(f, sl);
+    if (!s->IsKind(STANDARD_TYPE(Geom_CylindricalSurface)) && !s->IsKind(STANDARD_TYPE(Geom_ConicalSurface))) return false;
+    if (BRep_Tool::Degenerated(e) || !BRep_Tool::SameParameter(e) || !BRep_Tool::SameRange(e)) return false;
+    double f3 = 0, l3 = 0, f2 = 0, l2 = 0, fn = 0, ln = 0;
+    Handle(Geom_Curve) c3 = BRep_Tool::Curve(e, f3, l3);
+    const Handle(Geom2d_Curve) c2 = BRep_Tool::CurveOnSurface(e, f, f2, l2);
+    const Handle(Geom_BSplineCurve) cn = Handle(Geom_BSplineCurve)::DownCast(BRep_Tool::Curve(new_e, fn, ln));
+    if (c3.IsNull() || c2.IsNull() || cn.IsNull() || f2 != f3 || l2 != l3 || !(ln > fn) || !(l3 > f3)) return false;
+    while (c3->IsKind(STANDARD_TYPE(Geom_TrimmedCurve))) c3 = Handle(Geom_TrimmedCurve)::DownCast(c3)->BasisCurve();
+    const Handle(Geom_Circle) circle = Handle(Geom_Circle)::DownCast(c3);
+    if (circle.IsNull()) return false;
+    const gp_Circ circ = circle->Circ();
+    auto angle = [=](double t) {
+      if (t <= fn) return f3;
+      if (t >= ln) return l3;
+      const double guess = f3 + (l3 - f3) * (t - fn) / (ln - fn), raw = ElCLib::Parameter(circ, cn->Value(t));
+      return raw + 2 * M_PI * std::round((guess - raw) / (2 * M_PI));
+    };
+    // C's distinct knots in (fn, ln) as simple knots of a cubic.
+    const int p = 3;
+    std::vector<double> knots(p + 1, fn);
+    for (int k = 1; k <= cn->NbKnots(); ++k)
+      if (cn->Knot(k) > fn && cn->Knot(k) < ln) knots.push_back(cn->Knot(k));
+    knots.insert(knots.end(), p + 1, ln);
+    TopLoc_Location nl;
+    const Handle(Geom_Surface) now = BRep_Tool::Surface(new_f, nl);
+    c = angular_pcurve({*c2, angle}, fn, ln, knots, p, *s, *now, BRep_Tool::Tolerance(e));
+    return !c.IsNull();
   }
 
  private:
