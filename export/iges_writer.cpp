@@ -23,6 +23,7 @@
 #include <Geom_CylindricalSurface.hxx>
 #include <Geom_ElementarySurface.hxx>
 #include <Geom_RectangularTrimmedSurface.hxx>
+#include <Geom_SurfaceOfRevolution.hxx>
 #include <GeomConvert.hxx>
 #include <BRepTools.hxx>
 #include <Geom_Line.hxx>
@@ -168,7 +169,8 @@ Handle(Geom2d_Curve) angular_pcurve(const PcurveMap& c2, double first, double la
 // edge keeps its parametrisation (3D curve absent, a B-spline, Bezier or line: converted without
 // reparametrisation) the existing pcurve is still exact: it is kept, in B-spline form. Everything
 // else (analytic surfaces, conic edges whose parameter changes) goes through OCCT's conversion.
-// Surfaces closed around an axis (cylinders, cones, spheres, tori: hole and pin walls) become
+// Surfaces closed around an axis (cylinders, cones, spheres, tori: hole and pin walls; surfaces of
+// revolution: hub and casing end walls) become
 // PERIODIC B-splines here, over the face's v range: OCCT's own conversion trims such a face's full
 // circle to a closed non-periodic B-spline whose domain ([-pi/8, 15 pi/8] on a film hole) leaves part
 // of the face's pcurves outside it (see surface_holding_loops). Planes and everything else go through
@@ -178,11 +180,13 @@ class KeepBSplineFaces : public BRepTools_NurbsConvertModification {
   Standard_Boolean NewSurface(const TopoDS_Face& f, Handle(Geom_Surface)& s, TopLoc_Location& l, Standard_Real& tol,
                               Standard_Boolean& rev_wires, Standard_Boolean& rev_face) override {
     TopLoc_Location loc;
-    const Handle(Geom_ElementarySurface) e = Handle(Geom_ElementarySurface)::DownCast(BRep_Tool::Surface(f, loc));
-    if (e.IsNull() || !e->IsUPeriodic())
-      return BRepTools_NurbsConvertModification::NewSurface(f, s, l, tol, rev_wires, rev_face);
-    double u0, u1, v0, v1;
+    const Handle(Geom_Surface) e = BRep_Tool::Surface(f, loc);
+    if (!angular(*e)) return BRepTools_NurbsConvertModification::NewSurface(f, s, l, tol, rev_wires, rev_face);
+    double u0, u1, v0, v1, su0, su1, sv0, sv1;
     BRepTools::UVBounds(f, u0, u1, v0, v1);
+    e->Bounds(su0, su1, sv0, sv1);  // a revolved meridian ends where it ends
+    v0 = std::max(v0, sv0);
+    v1 = std::min(v1, sv1);
     const Handle(Geom_Surface) trimmed =
         e->IsVPeriodic() ? Handle(Geom_Surface)(e) : new Geom_RectangularTrimmedSurface(e, v0, v1, /*UTrim=*/false);
     s = GeomConvert::SurfaceToBSplineSurface(trimmed);
@@ -206,7 +210,8 @@ class KeepBSplineFaces : public BRepTools_NurbsConvertModification {
       tol = BRep_Tool::Tolerance(e);
       return Standard_True;
     }
-    if (usable && (s->IsKind(STANDARD_TYPE(Geom_CylindricalSurface)) || s->IsKind(STANDARD_TYPE(Geom_ConicalSurface)))) {
+    if (usable && (s->IsKind(STANDARD_TYPE(Geom_CylindricalSurface)) || s->IsKind(STANDARD_TYPE(Geom_ConicalSurface)) ||
+                   s->IsKind(STANDARD_TYPE(Geom_SurfaceOfRevolution)))) {
       TopLoc_Location nl;
       const Handle(Geom_Surface) now = BRep_Tool::Surface(new_f, nl);
       Handle(Geom2d_BSplineCurve) b = Geom2dConvert::CurveToBSplineCurve(new Geom2d_TrimmedCurve(Handle(Geom2d_Curve)::DownCast(c2->Copy()), f2, l2));
@@ -262,6 +267,11 @@ class KeepBSplineFaces : public BRepTools_NurbsConvertModification {
   }
 
  private:
+  // Closed around an axis, u the angle: GeomConvert makes the full turn three equal rational arcs.
+  static bool angular(const Geom_Surface& s) {
+    return (s.IsKind(STANDARD_TYPE(Geom_ElementarySurface)) || s.IsKind(STANDARD_TYPE(Geom_SurfaceOfRevolution))) &&
+           s.IsUPeriodic();
+  }
   static bool keeps_parameter(Handle(Geom_Curve) c) {
     while (c->IsKind(STANDARD_TYPE(Geom_TrimmedCurve))) c = Handle(Geom_TrimmedCurve)::DownCast(c)->BasisCurve();
     return c->IsKind(STANDARD_TYPE(Geom_BSplineCurve)) || c->IsKind(STANDARD_TYPE(Geom_BezierCurve)) ||
