@@ -29,6 +29,14 @@
 #include <Geom_Line.hxx>
 #include <Geom_TrimmedCurve.hxx>
 #include <IGESCAFControl_Writer.hxx>
+#include <Standard_ExtCharacter.hxx>
+#include <TCollection_HAsciiString.hxx>
+#include <TCollection_HExtendedString.hxx>
+#include <IGESData_IGESEntity.hxx>
+#include <Transfer_FinderProcess.hxx>
+#include <TransferBRep_ShapeMapper.hxx>
+#include <TransferBRep.hxx>
+#include <IGESBasic_Name.hxx>
 #include <TopoDS.hxx>
 #include <IGESControl_Controller.hxx>
 #include <IGESData_GlobalSection.hxx>
@@ -477,6 +485,34 @@ brep::Part nurbs_part(const brep::Part& part) {
   return out;
 }
 
+// The names OCCT's IGESCAFControl_Writer writes in name mode (WriteNames: an 8-character label on the
+// entity, right-aligned, and a name property, 406 form 15), but in a fixed order: the product, then per
+// body its solid and its faces in part order. OCCT visits them in a hash map of shapes, i.e. in an order
+// of memory addresses: the 406 entities and the label of the part's group (402: product or body name)
+// changed from run to run, so two runs wrote different bytes.
+void write_names(IGESControl_Writer& writer, const TopoDS_Shape& compound, const brep::Part& part, const std::string& product) {
+  const Handle(Transfer_FinderProcess) fp = writer.TransferProcess();
+  auto name_entity = [&](const TopoDS_Shape& shape, const std::string& name) {
+    Handle(IGESData_IGESEntity) entity;
+    if (!fp->FindTypedTransient(TransferBRep::ShapeMapper(fp, shape), STANDARD_TYPE(IGESData_IGESEntity), entity)) return;
+    const TCollection_ExtendedString text(name.c_str(), /*isMultiByte=*/true);
+    const Handle(TCollection_HAsciiString) label = new TCollection_HAsciiString("        ");
+    for (int k = 1, at = std::max(0, 8 - text.Length()); at < 8; ++k, ++at)
+      label->SetValue(at + 1, IsAnAscii(text.Value(k)) ? static_cast<char>(text.Value(k)) : '?');
+    entity->SetLabel(label);
+    const Handle(IGESBasic_Name) long_name = new IGESBasic_Name;
+    long_name->Init(1, new TCollection_HAsciiString(new TCollection_HExtendedString(text), '_'));
+    entity->AddProperty(long_name);
+    writer.AddEntity(long_name);
+  };
+  name_entity(compound, product);
+  for (const brep::NamedBody& body : part) {
+    TopExp_Explorer solid(body.geometry.shape, TopAbs_SOLID);
+    name_entity(solid.Current(), body.name);
+    for (const brep::NamedFace& f : body.geometry.faces) name_entity(f.face, f.name);
+  }
+}
+
 }  // namespace
 
 void write_iges(const std::filesystem::path& file, const brep::Part& part, const IgesOptions& options) {
@@ -486,16 +522,18 @@ void write_iges(const std::filesystem::path& file, const brep::Part& part, const
   set_param("write.iges.header.product", options.product_name.c_str());
   set_param("write.iges.header.author", kToolName);
   set_param("write.iges.header.company", "");
-  const PartDocument doc(nurbs_part(part), options.product_name);
+  const brep::Part converted = nurbs_part(part);
+  const PartDocument doc(converted, options.product_name);
   // The default constructor: built on a fresh XSControl_WorkSession (the other constructor) OCCT 7.6.3
   // leaves the model's global section unset (unit flag 0, no unit name, unit value 0, resolution 0),
   // and the writer then scales every coordinate by 1 / 0: the file held INF for each non-zero
   // coordinate, which OCCT's reader turned into 927 faces, 496 of them invalid (test_acceptance_*).
   IGESCAFControl_Writer writer;
-  writer.SetNameMode(true);
+  writer.SetNameMode(false);  // write_names below
   writer.SetColorMode(true);
   writer.SetLayerMode(true);
   if (!writer.Transfer(doc.document())) throw ExportError("IGES transfer of the part failed");
+  write_names(writer, doc.compound(), converted, options.product_name);
 
   // The global section names OCCT as the sending system by default.
   const Handle(IGESData_IGESModel) model = writer.Model();
