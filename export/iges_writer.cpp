@@ -52,7 +52,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <functional>
+#include <sstream>
 #include <tuple>
 #include <vector>
 
@@ -546,8 +548,15 @@ void write_iges(const std::filesystem::path& file, const brep::Part& part, const
   gs.SetReceiveName(new TCollection_HAsciiString(options.product_name.c_str()));
   model->SetGlobalSection(gs);
 
+  // Into memory first: OCCT's IGES writer flushes its stream after every line (one system call per
+  // line on a file stream: ~135 000 write calls for the built-in example's 160 000 lines).
+  std::ostringstream text;
+  if (!writer.Write(text)) throw ExportError("cannot write the IGES data of " + file.string());
   write_atomically(file, [&](const std::filesystem::path& tmp) {
-    if (!writer.Write(tmp.string().c_str())) throw ExportError("cannot write IGES file " + tmp.string());
+    std::ofstream out(tmp, std::ios::binary);
+    out << text.str();
+    out.close();
+    if (!out) throw ExportError("cannot write IGES file " + tmp.string());
   });
 }
 
