@@ -19,6 +19,7 @@
 #include <Geom_BSplineSurface.hxx>
 #include <Geom_BezierCurve.hxx>
 #include <Geom_Circle.hxx>
+#include <Geom_Plane.hxx>
 #include <Geom_ConicalSurface.hxx>
 #include <Geom_CylindricalSurface.hxx>
 #include <Geom_ElementarySurface.hxx>
@@ -187,6 +188,19 @@ Handle(Geom2d_Curve) angular_pcurve(const PcurveMap& c2, double first, double la
 // OCCT's conversion.
 class KeepBSplineFaces : public BRepTools_NurbsConvertModification {
  public:
+  // `shape`: the shape to be converted. Its edges on a plane keep OCCT's pcurves on every face: OCCT
+  // carries the plane's pcurve over to the new 3D curve from what its own conversion of the edge's
+  // other pcurves recorded, and with our circle fit on the cylinder side it made an invalid B-spline on
+  // the plane (a cylinder chamber's planar cap, tests/export/test_handoff_outputs).
+  explicit KeepBSplineFaces(const TopoDS_Shape& shape) {
+    for (TopExp_Explorer fx(shape, TopAbs_FACE); fx.More(); fx.Next()) {
+      TopLoc_Location loc;
+      const Handle(Geom_Surface) s = BRep_Tool::Surface(TopoDS::Face(fx.Current()), loc);
+      if (s.IsNull() || !s->IsKind(STANDARD_TYPE(Geom_Plane))) continue;
+      for (TopExp_Explorer ex(fx.Current(), TopAbs_EDGE); ex.More(); ex.Next()) planar_edges_.Add(ex.Current());
+    }
+  }
+
   Standard_Boolean NewSurface(const TopoDS_Face& f, Handle(Geom_Surface)& s, TopLoc_Location& l, Standard_Real& tol,
                               Standard_Boolean& rev_wires, Standard_Boolean& rev_face) override {
     TopLoc_Location loc;
@@ -232,7 +246,7 @@ class KeepBSplineFaces : public BRepTools_NurbsConvertModification {
         return Standard_True;
       }
     }
-    if (circle_pcurve(e, f, new_e, new_f, c)) {
+    if (!planar_edges_.Contains(e) && circle_pcurve(e, f, new_e, new_f, c)) {
       tol = BRep_Tool::Tolerance(e);
       return Standard_True;
     }
@@ -287,13 +301,15 @@ class KeepBSplineFaces : public BRepTools_NurbsConvertModification {
     return c->IsKind(STANDARD_TYPE(Geom_BSplineCurve)) || c->IsKind(STANDARD_TYPE(Geom_BezierCurve)) ||
            c->IsKind(STANDARD_TYPE(Geom_Line));
   }
+
+  TopTools_IndexedMapOfShape planar_edges_;
 };
 
 // BRepBuilderAPI_NurbsConvert (the modifier and its vertex tolerance correction) with the modification above.
 class NurbsConvertKeepingBSplines : public BRepBuilderAPI_NurbsConvert {
  public:
   explicit NurbsConvertKeepingBSplines(const TopoDS_Shape& shape) {
-    myModification = new KeepBSplineFaces();
+    myModification = new KeepBSplineFaces(shape);
     Perform(shape);
   }
 };
