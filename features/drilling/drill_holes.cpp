@@ -165,18 +165,14 @@ FeatureTool hole_tool(const CylindricalHole& hole) {
   return tool;
 }
 
-DrillResult drill_holes(const brep::NamedShape& input, const std::vector<CylindricalHole>& holes,
-                        const DrillOptions& o) {
-  const auto t_start = Clock::now();
-  require(!input.shape.IsNull(), "drill_holes: null part");
-  std::vector<HolePlan> plans = initial_plans(holes, o);
-  DrillResult r;
-  r.holes.resize(holes.size());
+namespace {
 
-  // 1. Patches: walls that many holes reach are split between them.
-  auto t = Clock::now();
+// 1. Patches: walls that many holes reach are split between them (the part unchanged when that does
+// not give one clean solid).
+brep::NamedShape patch_walls(const brep::NamedShape& input, const std::vector<HolePlan>& plans, std::size_t hole_count,
+                             const DrillOptions& o, DrillResult& r) {
   brep::NamedShape base = input;
-  if (o.patch_min_holes > 0 && static_cast<int>(holes.size()) >= o.patch_min_holes) {
+  if (o.patch_min_holes > 0 && static_cast<int>(hole_count) >= o.patch_min_holes) {
     std::vector<TopoDS_Shape> tools;
     for (const HolePlan& p : plans)
       tools.push_back(BRepPrimAPI_MakeCylinder(gp_Ax2(pnt(p.cyl.o), gp_Dir(p.cyl.d.x(), p.cyl.d.y(), p.cyl.d.z())),
@@ -192,46 +188,56 @@ DrillResult drill_holes(const brep::NamedShape& input, const std::vector<Cylindr
       r.patched_faces = pp.faces_after - pp.faces_before;
     }
   }
-  r.seconds_patches = since(t);
+  return base;
+}
 
-  // 2. Geometry of every hole (parallel): faces crossed, loops, preconditions, quadrature volume.
-  t = Clock::now();
-  Part part = index_part(base);
+// 2. Geometry of every hole (parallel): faces crossed, loops, preconditions, quadrature volume.
+// Holes that fall back are cut first, by the boolean path on the part as it is (its cost grows
+// with the faces of the part, and the drilled part has many); the others are then planned again on
+// that result. A hole that no longer qualifies there is cut by the boolean path after the drilling.
+// `applied` marks the holes cut here; `base` and `part` become the part the others are drilled into.
+void plan_all_holes(brep::NamedShape& base, Part& part, std::vector<HolePlan>& plans, const std::vector<CylindricalHole>& holes,
+                    const DrillOptions& o, DrillResult& r, std::vector<bool>& applied) {
+  part = index_part(base);
   plan_holes(part, plans, holes, o);
-  // Holes that fall back are cut first, by the boolean path on the part as it is (its cost grows
-  // with the faces of the part, and the drilled part has many); the others are then planned again on
-  // that result. A hole that no longer qualifies there is cut by the boolean path after the drilling.
-  std::vector<bool> applied(plans.size(), false);
+  applied.assign(plans.size(), false);
   std::vector<std::size_t> early;
   for (std::size_t i = 0; i < plans.size(); ++i)
     if (!plans[i].reason.empty()) early.push_back(i);
-  if (!early.empty()) {
-    const auto tf = Clock::now();
-    for (std::size_t i : early) r.holes[i].fallback_reason = plans[i].reason;
-    base = apply_fallback(base, early, holes, o, r);
-    for (std::size_t i : early) applied[i] = true;
-    r.seconds_fallback += since(tf);
-    if (early.size() < plans.size()) {
-      part = index_part(base);
-      std::vector<std::size_t> rest;
-      std::vector<CylindricalHole> rest_holes;
-      for (std::size_t i = 0; i < plans.size(); ++i)
-        if (!applied[i]) rest.push_back(i), rest_holes.push_back(holes[i]);
-      std::vector<HolePlan> again = initial_plans(rest_holes, o);
-      plan_holes(part, again, rest_holes, o);
-      for (std::size_t k = 0; k < rest.size(); ++k) {
-        plans[rest[k]] = std::move(again[k]);
-        if (!plans[rest[k]].reason.empty())
-          plans[rest[k]].reason = "after the other fallback holes were cut: " + plans[rest[k]].reason;
-      }
-    }
+  if (early.empty()) return;
+  const auto tf = Clock::now();
+  for (std::size_t i : early) r.holes[i].fallback_reason = plans[i].reason;
+  base = apply_fallback(base, early, holes, o, r);
+  for (std::size_t i : early) applied[i] = true;
+  r.seconds_fallback += since(tf);
+  if (early.size() == plans.size()) return;
+  part = index_part(base);
+  std::vector<std::size_t> rest;
+  std::vector<CylindricalHole> rest_holes;
+  for (std::size_t i = 0; i < plans.size(); ++i)
+    if (!applied[i]) rest.push_back(i), rest_holes.push_back(holes[i]);
+  std::vector<HolePlan> again = initial_plans(rest_holes, o);
+  plan_holes(part, again, rest_holes, o);
+  for (std::size_t k = 0; k < rest.size(); ++k) {
+    plans[rest[k]] = std::move(again[k]);
+    if (!plans[rest[k]].reason.empty())
+      plans[rest[k]].reason = "after the other fallback holes were cut: " + plans[rest[k]].reason;
   }
-  r.seconds_geometry = since(t) - r.seconds_fallback;
+}
 
-  // 3. Topology: hole faces, rebuilt walls, shells.
-  t = Clock::now();
-  std::vector<HoleShape> shapes(plans.size());
-  std::map<int, std::vector<std::pair<int, LoopEdge*>>> on_face;  // face -> (hole, loop edge)
+// The drilled topology: each hole's faces, the walls rebuilt with their holes.
+struct Topology {
+  std::vector<HoleShape> shapes;
+  std::map<int, std::vector<std::pair<int, LoopEdge*>>> on_face;  // face -> (hole, loop edge in `shapes`)
+  std::vector<int> rebuilt_ids;
+  std::vector<TopoDS_Face> rebuilt;
+};
+
+// 3. Topology: hole faces, rebuilt walls, shells.
+void build_topology(const Part& part, std::vector<HolePlan>& plans, const std::vector<CylindricalHole>& holes, DrillResult& r,
+                    Topology& topo) {
+  std::vector<HoleShape>& shapes = topo.shapes;
+  shapes.resize(plans.size());
   for (std::size_t i = 0; i < plans.size(); ++i) {
     HolePlan& p = plans[i];
     DrilledHole& dh = r.holes[i];
@@ -244,103 +250,114 @@ DrillResult drill_holes(const brep::NamedShape& input, const std::vector<Cylindr
     const FaceInfo& fb = part.faces[static_cast<std::size_t>(p.exit)];
     shapes[i] = build_hole_shape(p.cyl, p.entry_loop, part.occt_surfaces[static_cast<std::size_t>(fa.surface)], p.exit_loop,
                                  part.occt_surfaces[static_cast<std::size_t>(fb.surface)]);
-    on_face[p.entry].emplace_back(static_cast<int>(i), &shapes[i].entry);
-    on_face[p.exit].emplace_back(static_cast<int>(i), &shapes[i].exit);
+    topo.on_face[p.entry].emplace_back(static_cast<int>(i), &shapes[i].entry);
+    topo.on_face[p.exit].emplace_back(static_cast<int>(i), &shapes[i].exit);
     dh.drilled = true;
     dh.entry_face = fa.name, dh.exit_face = fb.name;
     dh.independent_volume = p.quadrature;
     dh.edge_tolerance = std::max(shapes[i].entry.tolerance, shapes[i].exit.tolerance);
     dh.nodes = std::max(p.entry_loop.nodes, p.exit_loop.nodes);
   }
-  std::vector<int> rebuilt_ids;
-  for (const auto& [f, loops] : on_face) rebuilt_ids.push_back(f);
-  std::vector<TopoDS_Face> rebuilt(part.faces.size());
-  for (const auto& [f, loops] : on_face) {
+  for (const auto& [f, loops] : topo.on_face) topo.rebuilt_ids.push_back(f);
+  topo.rebuilt.resize(part.faces.size());
+  for (const auto& [f, loops] : topo.on_face) {
     std::vector<LoopEdge*> edges;
     for (const auto& [hole, e] : loops) edges.push_back(e);
-    rebuilt[static_cast<std::size_t>(f)] = wall_with_holes(part.faces[static_cast<std::size_t>(f)].face, edges);
+    topo.rebuilt[static_cast<std::size_t>(f)] = wall_with_holes(part.faces[static_cast<std::size_t>(f)].face, edges);
   }
-  r.rebuilt_faces = static_cast<int>(on_face.size());
-  r.seconds_topology = since(t);
+  r.rebuilt_faces = static_cast<int>(topo.on_face.size());
+}
 
-  // 4. Local checks (parallel): per hole, volume by the divergence theorem over its faces against the
-  // quadrature, and BRepCheck of its face; per rebuilt wall, BRepCheck and the integral balance.
-  t = Clock::now();
+// 4. (per hole) Volume by the divergence theorem over its faces against the quadrature, and BRepCheck
+// of its face and of its loops in their walls; `f` the failure, if any.
+void check_drilled_hole(DrilledHole& dh, const HolePlan& p, const HoleShape& s, const Part& part, const DrillOptions& o,
+                        std::string& f) {
+  const TopoDS_Face cap_a = cap_face(part.faces[static_cast<std::size_t>(p.entry)].oriented, s.entry);
+  const TopoDS_Face cap_b = cap_face(part.faces[static_cast<std::size_t>(p.exit)].oriented, s.exit);
+  const Eigen::Vector3d mid = p.cyl.o + 0.5 * (p.entry_hit.t + p.exit_hit.t) * p.cyl.d;
+  // About two points a hole size apart: a closed boundary gives the same volume ("closure").
+  const Eigen::Vector3d mid2 = mid + (p.cyl.radius + 0.5 * (p.exit_hit.t - p.entry_hit.t)) * p.cyl.e1;
+  const auto measure = [&](bool adaptive) {
+    double v2 = 0;
+    dh.volume = 0;
+    for (const TopoDS_Face& face : {cap_a, cap_b, s.face}) {
+      dh.volume += adaptive ? face_flux(face, pnt(mid)) : hole_face_flux(face, pnt(mid));
+      v2 += adaptive ? face_flux(face, pnt(mid2)) : hole_face_flux(face, pnt(mid2));
+    }
+    dh.closure = std::abs(dh.volume - v2);
+  };
+  measure(false);
+  // Edge tolerances leave a band of 2 tol along each loop undefined; its lever about `mid` is at
+  // most the loop's distance from it (/3 of the divergence integrand).
+  const double lever = std::max((p.entry_loop.start - mid).norm(), (p.exit_loop.start - mid).norm()) +
+                       p.cyl.radius / std::max(0.1, p.entry_loop.min_sin_incidence);
+  dh.uncertainty = (2 * s.entry.tolerance * s.entry.length + 2 * s.exit.tolerance * s.exit.length) * lever / 3;
+  const double allowed = o.volume_rel_tolerance * dh.independent_volume + dh.uncertainty;
+  const auto agrees = [&] { return std::abs(dh.volume - dh.independent_volume) <= allowed && dh.closure <= allowed; };
+  // The fixed rule first (fast); before a disagreement counts, BRepGProp's adaptive rule at 1e-9.
+  if (!agrees()) measure(true);
+  if (!agrees())
+    f = "hole '" + dh.name + "': removed volume " + format_number(dh.volume) + " mm^3 by its faces, " +
+        format_number(dh.independent_volume) + " mm^3 by quadrature, closure " + format_number(dh.closure);
+  if (!f.empty()) return;
+  if (!BRepCheck_Analyzer(s.face).IsValid()) {
+    f = "hole '" + dh.name + "': its face fails BRepCheck";
+    return;
+  }
+  // Its loops as inner wires of the rebuilt walls: the wire and edge checks of BRepCheck in the
+  // context of the wall face (2D closure, self-intersection, orientation; pcurve on the wall).
+  for (const auto& [face, e] : {std::make_pair(p.entry, &s.entry), std::make_pair(p.exit, &s.exit)}) {
+    if (!inner_wire_valid(e->wire, e->edge, part.faces[static_cast<std::size_t>(face)].face)) {
+      f = "hole '" + dh.name + "': its loop fails BRepCheck in face '" + part.faces[static_cast<std::size_t>(face)].name + "'";
+      return;
+    }
+  }
+}
+
+// 4. (per rebuilt wall) BRepCheck and the integral balance; `f` the failure, if any.
+void check_rebuilt_wall(int face, const Part& part, const Topology& topo, const DrillOptions& o, std::string& f,
+                        double& balance) {
+  const FaceInfo& fi = part.faces[static_cast<std::size_t>(face)];
+  const TopoDS_Face& nf = topo.rebuilt[static_cast<std::size_t>(face)];
+  if (!o.whole_face_checks) return;
+  if (!BRepCheck_Analyzer(nf).IsValid()) {
+    f = "face '" + fi.name + "' with its holes fails BRepCheck";
+    return;
+  }
+  // Integral after = before - the caps of its holes (all about one point near the face).
+  const gp_Pnt c = pnt(0.5 * (Eigen::Vector3d(fi.box.CornerMin().X(), fi.box.CornerMin().Y(), fi.box.CornerMin().Z()) +
+                              Eigen::Vector3d(fi.box.CornerMax().X(), fi.box.CornerMax().Y(), fi.box.CornerMax().Z())));
+  double caps = 0, cap_sum_abs = 0;
+  for (const auto& [hole, e] : topo.on_face.at(face)) {
+    const double v = face_flux(cap_face(fi.oriented, *e), c);
+    caps += v;
+    cap_sum_abs += std::abs(v);
+  }
+  const double before = face_flux(fi.oriented, c), after = face_flux(nf.Oriented(fi.oriented.Orientation()), c);
+  balance = after - before + caps;
+  // Tolerance: the integrations' relative accuracy (1e-9 each, x10) plus 1e-6 of the caps.
+  if (!(std::abs(after - before + caps) <= 1e-8 * (std::abs(before) + std::abs(after)) + 1e-6 * cap_sum_abs + 1e-9))
+    f = "face '" + fi.name + "': integral with holes " + format_number(after) + " != without " + format_number(before) +
+        " - caps " + std::to_string(caps);
+}
+
+// 4. Local checks (parallel): per hole, volume by the divergence theorem over its faces against the
+// quadrature, and BRepCheck of its face; per rebuilt wall, BRepCheck and the integral balance.
+void check_locally(const Part& part, const std::vector<HolePlan>& plans, const Topology& topo, const DrillOptions& o,
+                   DrillResult& r) {
   std::vector<std::string> failures(plans.size() + part.faces.size());
   std::vector<double> balance(part.faces.size(), 0.0);
-  parallel_for(static_cast<int>(plans.size() + rebuilt_ids.size()), o.parallel ? parallel_workers() : 1, [&](int j, int) {
+  parallel_for(static_cast<int>(plans.size() + topo.rebuilt_ids.size()), o.parallel ? parallel_workers() : 1, [&](int j, int) {
     if (j < static_cast<int>(plans.size())) {
       DrilledHole& dh = r.holes[static_cast<std::size_t>(j)];
       if (!dh.drilled) return;
-      const HolePlan& p = plans[static_cast<std::size_t>(j)];
-      const HoleShape& s = shapes[static_cast<std::size_t>(j)];
-      const TopoDS_Face cap_a = cap_face(part.faces[static_cast<std::size_t>(p.entry)].oriented, s.entry);
-      const TopoDS_Face cap_b = cap_face(part.faces[static_cast<std::size_t>(p.exit)].oriented, s.exit);
-      const Eigen::Vector3d mid = p.cyl.o + 0.5 * (p.entry_hit.t + p.exit_hit.t) * p.cyl.d;
-      // About two points a hole size apart: a closed boundary gives the same volume ("closure").
-      const Eigen::Vector3d mid2 = mid + (p.cyl.radius + 0.5 * (p.exit_hit.t - p.entry_hit.t)) * p.cyl.e1;
-      const auto measure = [&](bool adaptive) {
-        double v2 = 0;
-        dh.volume = 0;
-        for (const TopoDS_Face& face : {cap_a, cap_b, s.face}) {
-          dh.volume += adaptive ? face_flux(face, pnt(mid)) : hole_face_flux(face, pnt(mid));
-          v2 += adaptive ? face_flux(face, pnt(mid2)) : hole_face_flux(face, pnt(mid2));
-        }
-        dh.closure = std::abs(dh.volume - v2);
-      };
-      measure(false);
-      // Edge tolerances leave a band of 2 tol along each loop undefined; its lever about `mid` is at
-      // most the loop's distance from it (/3 of the divergence integrand).
-      const double lever = std::max((p.entry_loop.start - mid).norm(), (p.exit_loop.start - mid).norm()) +
-                           p.cyl.radius / std::max(0.1, p.entry_loop.min_sin_incidence);
-      dh.uncertainty = (2 * s.entry.tolerance * s.entry.length + 2 * s.exit.tolerance * s.exit.length) * lever / 3;
-      const double allowed = o.volume_rel_tolerance * dh.independent_volume + dh.uncertainty;
-      std::string& f = failures[static_cast<std::size_t>(j)];
-      const auto agrees = [&] { return std::abs(dh.volume - dh.independent_volume) <= allowed && dh.closure <= allowed; };
-      // The fixed rule first (fast); before a disagreement counts, BRepGProp's adaptive rule at 1e-9.
-      if (!agrees()) measure(true);
-      if (!agrees())
-        f = "hole '" + dh.name + "': removed volume " + format_number(dh.volume) + " mm^3 by its faces, " +
-            format_number(dh.independent_volume) + " mm^3 by quadrature, closure " + format_number(dh.closure);
-      if (!f.empty()) return;
-      if (!BRepCheck_Analyzer(s.face).IsValid()) {
-        f = "hole '" + dh.name + "': its face fails BRepCheck";
-        return;
-      }
-      // Its loops as inner wires of the rebuilt walls: the wire and edge checks of BRepCheck in the
-      // context of the wall face (2D closure, self-intersection, orientation; pcurve on the wall).
-      for (const auto& [face, e] : {std::make_pair(p.entry, &s.entry), std::make_pair(p.exit, &s.exit)}) {
-        if (!inner_wire_valid(e->wire, e->edge, part.faces[static_cast<std::size_t>(face)].face)) {
-          f = "hole '" + dh.name + "': its loop fails BRepCheck in face '" + part.faces[static_cast<std::size_t>(face)].name + "'";
-          return;
-        }
-      }
+      check_drilled_hole(dh, plans[static_cast<std::size_t>(j)], topo.shapes[static_cast<std::size_t>(j)], part, o,
+                         failures[static_cast<std::size_t>(j)]);
       return;
     }
-    const int face = rebuilt_ids[static_cast<std::size_t>(j) - plans.size()];
-    const FaceInfo& fi = part.faces[static_cast<std::size_t>(face)];
-    const TopoDS_Face& nf = rebuilt[static_cast<std::size_t>(face)];
-    std::string& f = failures[plans.size() + static_cast<std::size_t>(face)];
-    if (!o.whole_face_checks) return;
-    if (!BRepCheck_Analyzer(nf).IsValid()) {
-      f = "face '" + fi.name + "' with its holes fails BRepCheck";
-      return;
-    }
-    // Integral after = before - the caps of its holes (all about one point near the face).
-    const gp_Pnt c = pnt(0.5 * (Eigen::Vector3d(fi.box.CornerMin().X(), fi.box.CornerMin().Y(), fi.box.CornerMin().Z()) +
-                                Eigen::Vector3d(fi.box.CornerMax().X(), fi.box.CornerMax().Y(), fi.box.CornerMax().Z())));
-    double caps = 0, cap_sum_abs = 0;
-    for (const auto& [hole, e] : on_face.at(face)) {
-      const double v = face_flux(cap_face(fi.oriented, *e), c);
-      caps += v;
-      cap_sum_abs += std::abs(v);
-    }
-    const double before = face_flux(fi.oriented, c), after = face_flux(nf.Oriented(fi.oriented.Orientation()), c);
-    balance[static_cast<std::size_t>(face)] = after - before + caps;
-    // Tolerance: the integrations' relative accuracy (1e-9 each, x10) plus 1e-6 of the caps.
-    if (!(std::abs(after - before + caps) <= 1e-8 * (std::abs(before) + std::abs(after)) + 1e-6 * cap_sum_abs + 1e-9))
-      f = "face '" + fi.name + "': integral with holes " + format_number(after) + " != without " + format_number(before) +
-          " - caps " + std::to_string(caps);
+    const int face = topo.rebuilt_ids[static_cast<std::size_t>(j) - plans.size()];
+    check_rebuilt_wall(face, part, topo, o, failures[plans.size() + static_cast<std::size_t>(face)],
+                       balance[static_cast<std::size_t>(face)]);
   });
   std::string failed;
   int failed_count = 0;
@@ -348,8 +365,11 @@ DrillResult drill_holes(const brep::NamedShape& input, const std::vector<Cylindr
     if (!f.empty()) failed += (failed_count++ ? "; " : "") + f;
   if (failed_count) throw FeatureFailure("drill_holes: " + std::to_string(failed_count) + " check(s) failed: " + failed);
   for (double b : balance) r.face_balance += std::abs(b);
+}
 
-  // 5. The solid: shells rebuilt from their faces (a hole joining two shells merges them).
+// 5. The solid: shells rebuilt from their faces (a hole joining two shells merges them).
+brep::NamedShape assemble_solid(const Part& part, const std::vector<HolePlan>& plans, const Topology& topo,
+                                const std::vector<CylindricalHole>& holes, DrillResult& r) {
   BRep_Builder b;
   std::vector<int> shell_of(part.shells.size());
   for (std::size_t i = 0; i < shell_of.size(); ++i) shell_of[i] = static_cast<int>(i);
@@ -373,7 +393,7 @@ DrillResult drill_holes(const brep::NamedShape& input, const std::vector<Cylindr
   };
   brep::NamedShape result;
   for (std::size_t f = 0; f < part.faces.size(); ++f) {
-    const TopoDS_Face& face = rebuilt[f].IsNull() ? part.faces[f].face : rebuilt[f];
+    const TopoDS_Face& face = topo.rebuilt[f].IsNull() ? part.faces[f].face : topo.rebuilt[f];
     b.Add(shell(part.faces[f].shell), face);
     result.faces.push_back({face, part.faces[f].name});
   }
@@ -383,7 +403,7 @@ DrillResult drill_holes(const brep::NamedShape& input, const std::vector<Cylindr
       const FaceInfo& fa = part.faces[static_cast<std::size_t>(plans[i].entry)];
       const TopAbs_Orientation frame =
           fa.oriented.Orientation() == fa.face.Orientation() ? TopAbs_FORWARD : TopAbs_REVERSED;
-      const TopoDS_Face face = TopoDS::Face(shapes[i].face.Oriented(TopAbs::Compose(TopAbs_REVERSED, frame)));
+      const TopoDS_Face face = TopoDS::Face(topo.shapes[i].face.Oriented(TopAbs::Compose(TopAbs_REVERSED, frame)));
       b.Add(shell(fa.shell), face);
       result.faces.push_back({face, holes[i].name});
       r.volume_change += r.holes[i].volume;
@@ -398,6 +418,41 @@ DrillResult drill_holes(const brep::NamedShape& input, const std::vector<Cylindr
   result.shape = solid.Oriented(part.solid_orientation);
   const std::string edges = edge_use_failure(result.shape);
   if (!edges.empty()) throw FeatureFailure("drill_holes: the drilled solid is not closed: " + edges);
+  return result;
+}
+
+}  // namespace
+
+DrillResult drill_holes(const brep::NamedShape& input, const std::vector<CylindricalHole>& holes,
+                        const DrillOptions& o) {
+  const auto t_start = Clock::now();
+  require(!input.shape.IsNull(), "drill_holes: null part");
+  std::vector<HolePlan> plans = initial_plans(holes, o);
+  DrillResult r;
+  r.holes.resize(holes.size());
+
+  // 1. Patches: walls that many holes reach are split between them.
+  auto t = Clock::now();
+  brep::NamedShape base = patch_walls(input, plans, holes.size(), o, r);
+  r.seconds_patches = since(t);
+
+  // 2. Geometry of every hole (parallel): faces crossed, loops, preconditions, quadrature volume.
+  t = Clock::now();
+  Part part;
+  std::vector<bool> applied;
+  plan_all_holes(base, part, plans, holes, o, r, applied);
+  r.seconds_geometry = since(t) - r.seconds_fallback;
+
+  // 3. Topology: hole faces, rebuilt walls, shells.
+  t = Clock::now();
+  Topology topo;
+  build_topology(part, plans, holes, r, topo);
+  r.seconds_topology = since(t);
+
+  // 4. Local checks; 5. the solid.
+  t = Clock::now();
+  check_locally(part, plans, topo, o, r);
+  brep::NamedShape result = assemble_solid(part, plans, topo, holes, r);
   r.seconds_checks = since(t);
 
   // 6. Holes that could not be drilled directly: the verified boolean path.

@@ -99,6 +99,7 @@ struct HoleAnalyser::Impl {
   std::vector<double> rim_si, rim_sf;
 
   HoleGeometry analyse(const HoleSpec& h);
+  struct Analysis;
 };
 
 HoleAnalyser::HoleAnalyser(const HoleTarget& target, const FilmLimits& limits, const HoleQuadrature& quadrature) {
@@ -109,51 +110,91 @@ HoleAnalyser::HoleAnalyser(const HoleTarget& target, const FilmLimits& limits, c
 HoleAnalyser::~HoleAnalyser() = default;
 HoleGeometry HoleAnalyser::analyse(const HoleSpec& hole) { return impl_->analyse(hole); }
 
-HoleGeometry HoleAnalyser::Impl::analyse(const HoleSpec& h) {
+// One hole's analysis: the quantities its stages pass on, named as in the stages (the analyser's
+// casters, quadrature and work buffers by reference).
+struct HoleAnalyser::Impl::Analysis {
+  Impl& im;
+  const HoleTarget& target;
+  const FilmLimits& limits;
+  const HoleQuadrature& quad;
+  NearCaster &outer, &inner;
+  const std::vector<double>&rx, &rw, &px, &pw;
+  std::vector<Eigen::Vector3d>&inlet_rim, &exit_outline, &end_rim;
+  std::vector<double>&rim_si, &rim_sf;
+  const HoleSpec& h;
   HoleGeometry g;
-  const double D = h.shape.diameter, r = 0.5 * D, c = limits.clearance;
-  const Eigen::Vector3d E = h.frame.exit, d = h.frame.axis, fw = h.frame.forward, lat = h.frame.lateral();
-  const bool fan = h.shape.kind == HoleKind::FanShaped;
-  const double s_out = 1.0 + 6 * D;   // lines start this far outside (along the axis)
-  const double search = s_out + 40 + 20 * D;
+  const double D, r, c;
+  const Eigen::Vector3d E, d, fw, lat;
+  const bool fan;
+  const double s_out;  // lines start this far outside (along the axis)
+  const double search;
   const std::string dsub = ".diameter";
+  const Eigen::Vector3d base;
+  // The axis' hits
+  RaySurfaceHit ao, ai, af;
+  double sense_o = 0, sense_i = 0, sense_f = 0, inlet_span = 0;
+  const TargetChamber* chamber = nullptr;
+  // The diffuser
+  std::unique_ptr<FanProfile> prof;
+  double sd = 0;
+  // The lines through the metering disc
+  double s_o_min = HUGE_VAL, s_i_max = -HUGE_VAL, s_i_min = HUGE_VAL, depth_n = 0, axis_far = HUGE_VAL;
+  Eigen::Vector3d n_inlet;
+  // The diffuser lines
+  double t_c_max = 0;
 
-  // The axis: exit point, cavity wall, chamber (global first hits; the other lines start from these).
-  const Eigen::Vector3d base = E - s_out * d;
-  const RaySurfaceHit ao = outer.first(base, d, search);
+  Analysis(Impl& impl, const HoleSpec& hole)
+      : im(impl), target(impl.target), limits(impl.limits), quad(impl.quad), outer(impl.outer), inner(impl.inner),
+        rx(impl.rx), rw(impl.rw), px(impl.px), pw(impl.pw), inlet_rim(impl.inlet_rim), exit_outline(impl.exit_outline),
+        end_rim(impl.end_rim), rim_si(impl.rim_si), rim_sf(impl.rim_sf), h(hole), D(h.shape.diameter), r(0.5 * D),
+        c(limits.clearance), E(h.frame.exit), d(h.frame.axis), fw(h.frame.forward), lat(h.frame.lateral()),
+        fan(h.shape.kind == HoleKind::FanShaped), s_out(1.0 + 6 * D), search(s_out + 40 + 20 * D), base(E - s_out * d) {}
+
+  void axis();
+  void diffuser();
+  void metering_lines();
+  void diffuser_lines();
+  void tool_extent();
+  void inlet_and_obstacles();
+  void breakout_width();
+  void envelope();
+};
+
+// The axis: exit point, cavity wall, chamber (global first hits; the other lines start from these).
+void HoleAnalyser::Impl::Analysis::axis() {
+  ao = outer.first(base, d, search);
   if (!ao.found || std::abs(ao.ray_param - s_out) > 1e-6 * (1 + s_out))
     fail(h, h.position_field, "the hole axis meets the outer wall " + format_number(s_out - ao.ray_param) + " mm before its exit point "
                          "(the hole would cut the blade elsewhere first)");
   Eigen::Vector3d n_exit = target.model->surface.normal(ao.u, ao.v);
   if (n_exit.dot(d) > 0) n_exit = -n_exit;
   g.inclination_deg = std::asin(std::min(1.0, -n_exit.dot(d))) * 180 / kPi;
-  const RaySurfaceHit ai = inner.first(base, d, search);
+  ai = inner.first(base, d, search);
   const RaySurfaceHit ao2 = outer.first(ao.point + 1e-6 * d, d, search);
   if (ao2.found && (!ai.found || ao.ray_param + 1e-6 + ao2.ray_param < ai.ray_param))
     fail(h, h.position_field, "reaches no chamber: its axis leaves the blade again " + format_number(ao2.ray_param) +
                              " mm past its exit point, before it enters the cavity");
   if (!ai.found || ai.ray_param <= s_out)
     fail(h, h.position_field, "reaches no chamber: its axis does not enter the cavity within " + format_number(search - s_out) + " mm");
-  const double sense_o = outer.sense(d, ao), sense_i = inner.sense(d, ai);
-  const RaySurfaceHit af = inner.first(ai.point + 1e-6 * d, d, search);
-  const double sense_f = af.found ? inner.sense(d, af) : 0;
+  sense_o = outer.sense(d, ao), sense_i = inner.sense(d, ai);
+  af = inner.first(ai.point + 1e-6 * d, d, search);
+  sense_f = af.found ? inner.sense(d, af) : 0;
   g.length = ai.ray_param - s_out;
   g.inlet = ai.point;
-  double inlet_span = 0;
-  g.inlet_chord = chord_of(ai.point, ao, std::nan(""), &inlet_span);
+  g.inlet_chord = im.chord_of(ai.point, ao, std::nan(""), &inlet_span);
   g.chamber = std::isnan(g.inlet_chord) ? -1 : target.chamber_at(g.inlet_chord);
   if (g.chamber < 0)
     fail(h, h.position_field, "reaches no chamber: its axis enters the cavity at chord " + format_number(g.inlet_chord) +
                              ", which belongs to no chamber (a rib or beyond the core)");
-  const TargetChamber& chamber = target.chambers[g.chamber];
-  if (h.required_chamber > 0 && chamber.number != h.required_chamber)
-    fail(h, ".chamber", "feeds from " + chamber.name + ", not from chamber_" + std::to_string(h.required_chamber) +
+  chamber = &target.chambers[g.chamber];
+  if (h.required_chamber > 0 && chamber->number != h.required_chamber)
+    fail(h, ".chamber", "feeds from " + chamber->name + ", not from chamber_" + std::to_string(h.required_chamber) +
                             " as configured");
   g.metering_area = kPi * r * r;
+}
 
-  // Fan-shaped: diffuser length and profile from the local wall.
-  std::unique_ptr<FanProfile> prof;
-  double sd = 0;
+// Fan-shaped: diffuser length and profile from the local wall.
+void HoleAnalyser::Impl::Analysis::diffuser() {
   if (fan) {
     const FanDiffuser& fd = h.shape.fan;
     const double ld = fd.diffuser_length_d > 0 ? fd.diffuser_length_d * D : g.length - fd.metering_length_d * D;
@@ -173,15 +214,16 @@ HoleGeometry HoleAnalyser::Impl::analyse(const HoleSpec& h) {
   } else {
     g.metering_length = g.length;
   }
+}
 
-  // Lines parallel to the axis through the metering disc (and its rim, for outlines and obstacles).
-  double s_o_min = HUGE_VAL, s_i_max = -HUGE_VAL, s_i_min = HUGE_VAL, depth_n = 0;
+// Lines parallel to the axis through the metering disc (and its rim, for outlines and obstacles).
+void HoleAnalyser::Impl::Analysis::metering_lines() {
   inlet_rim.clear();
   exit_outline.clear();
   end_rim.clear();
   rim_si.clear();
   rim_sf.clear();
-  Eigen::Vector3d n_inlet = inner.normal(ai);
+  n_inlet = inner.normal(ai);
   if (n_inlet.dot(d) < 0) n_inlet = -n_inlet;
   const int na = quad.angular;
   for (int k = 0; k <= quad.radial; ++k) {
@@ -226,10 +268,11 @@ HoleGeometry HoleAnalyser::Impl::analyse(const HoleSpec& h) {
       }
     }
   }
-  const double axis_far = af.found ? ai.ray_param + 1e-6 + af.ray_param - s_out : HUGE_VAL;
+  axis_far = af.found ? ai.ray_param + 1e-6 + af.ray_param - s_out : HUGE_VAL;
+}
 
-  // Diffuser lines: every reference point of every piece moves on a straight line as t grows.
-  double t_c_max = 0;
+// Diffuser lines: every reference point of every piece moves on a straight line as t grows.
+void HoleAnalyser::Impl::Analysis::diffuser_lines() {
   if (fan) {
     const double t_far = sd + s_out;
     auto line = [&](int piece, double a, double b, double& t_c, Eigen::Vector3d& v, RaySurfaceHit& hit) {
@@ -288,11 +331,13 @@ HoleGeometry HoleAnalyser::Impl::analyse(const HoleSpec& h) {
   } else {
     g.exit_area = g.metering_area;
   }
+}
 
-  // Tool extent: clear of the outer wall; the end a plane normal to the axis `clearance` past the last
-  // line's inlet. Where the far side of the cavity is closer than that (a hole entering at a shallow
-  // angle, e.g. a showerhead hole angled to the span), the end plane follows the cavity wall instead: its
-  // normal is the wall's normal at the axis' inlet, placed `clearance` (along the lines) past every inlet.
+// Tool extent: clear of the outer wall; the end a plane normal to the axis `clearance` past the last
+// line's inlet. Where the far side of the cavity is closer than that (a hole entering at a shallow
+// angle, e.g. a showerhead hole angled to the span), the end plane follows the cavity wall instead: its
+// normal is the wall's normal at the axis' inlet, placed `clearance` (along the lines) past every inlet.
+void HoleAnalyser::Impl::Analysis::tool_extent() {
   g.extent.s_top = fan ? sd - (t_c_max + c) : s_o_min - c;
   g.extent.s_diffuser = sd;
   g.extent.diffuser_length = sd;
@@ -326,16 +371,18 @@ HoleGeometry HoleAnalyser::Impl::analyse(const HoleSpec& h) {
     reach = std::max(reach, s_end_rim[q] - rim_si[q]);
     end_rim[q] += (s_out + s_end_rim[q]) * d;
   }
-  if (reach > chamber.reach)
-    fail(h, h.position_field, "its tool would reach " + format_number(reach) + " mm into " + chamber.name + ", which allows " +
-                             format_number(chamber.reach) + " mm (an insert lies behind the gap)");
+  if (reach > chamber->reach)
+    fail(h, h.position_field, "its tool would reach " + format_number(reach) + " mm into " + chamber->name + ", which allows " +
+                             format_number(chamber->reach) + " mm (an insert lies behind the gap)");
+}
 
-  // Chamber of the whole inlet, obstacles.
+// Chamber of the whole inlet, obstacles.
+void HoleAnalyser::Impl::Analysis::inlet_and_obstacles() {
   for (const Eigen::Vector3d& p : inlet_rim) {
-    const double ch = chord_of(p, ao, inlet_span);
+    const double ch = im.chord_of(p, ao, inlet_span);
     const int k = std::isnan(ch) ? -1 : target.chamber_at(ch);
     if (k != g.chamber)
-      fail(h, h.position_field, "its inlet straddles " + chamber.name + " and " +
+      fail(h, h.position_field, "its inlet straddles " + chamber->name + " and " +
                                (k < 0 ? std::string("no chamber (a rib)") : target.chambers[k].name));
   }
   for (const TargetObstacle& ob : target.obstacles) {
@@ -351,9 +398,11 @@ HoleGeometry HoleAnalyser::Impl::analyse(const HoleSpec& h) {
     }
     if (touch <= 0) fail(h, ob.field.empty() ? h.position_field : ob.field, "its tool would cut " + ob.name);
   }
+}
 
-  // Breakout width along the row: extent of the outline; on the cylinder's evenly spaced rim the extreme
-  // values are refined by a parabola through the extreme sample and its neighbours.
+// Breakout width along the row: extent of the outline; on the cylinder's evenly spaced rim the extreme
+// values are refined by a parabola through the extreme sample and its neighbours.
+void HoleAnalyser::Impl::Analysis::breakout_width() {
   std::vector<double> xs;
   for (const Eigen::Vector3d& p : exit_outline) xs.push_back((p - E).dot(h.row_direction));
   auto extreme = [&](double sign) {
@@ -366,8 +415,10 @@ HoleGeometry HoleAnalyser::Impl::analyse(const HoleSpec& h) {
     return std::abs(den) > 1e-300 ? b - 0.125 * (cc - a) * (cc - a) / den : b;
   };
   g.breakout_width = extreme(1) - extreme(-1);
+}
 
-  // Envelope between the outer and the cavity wall (balls along the axis).
+// Envelope between the outer and the cavity wall (balls along the axis).
+void HoleAnalyser::Impl::Analysis::envelope() {
   const double s_lo = fan ? sd - t_c_max : s_o_min, s_hi = s_i_max;
   const int ns = std::min(80, 2 + static_cast<int>(std::ceil((s_hi - s_lo) / (0.5 * r))));
   for (int k = 0; k < ns; ++k) {
@@ -380,7 +431,19 @@ HoleGeometry HoleAnalyser::Impl::analyse(const HoleSpec& h) {
     g.envelope_points.push_back(E + s * d);
     g.envelope_radii.push_back(radius);
   }
-  return g;
+}
+
+HoleGeometry HoleAnalyser::Impl::analyse(const HoleSpec& h) {
+  Analysis a(*this, h);
+  a.axis();
+  a.diffuser();
+  a.metering_lines();
+  a.diffuser_lines();
+  a.tool_extent();
+  a.inlet_and_obstacles();
+  a.breakout_width();
+  a.envelope();
+  return std::move(a.g);
 }
 
 }  // namespace cg::features

@@ -110,19 +110,18 @@ void check_insert_input(const InsertChamber& chamber, const InsertDefinition& de
   if (D >= Z * 4 || D <= 0) throw FilmInputError(field + ".jets.diameter", name + ": the jet diameter must be in (0, 4 Z)");
 }
 
-InsertBuild build_insert(const blade::BladeModel& model, const InsertChamber& chamber, const InsertDefinition& def,
-                         int index, const std::string& field, ProgressSink* progress, PerturbedRetries retries) {
-  check_insert_input(chamber, def, index, field);
-  const std::string name = "insert_" + std::to_string(index);
-  const double tw = chamber.wall_thickness, Z = def.gap, ts = def.sheet_thickness, D = def.jet_diameter;
-  InsertBuild out;
-  auto t0 = std::chrono::steady_clock::now();
-  const auto lap = [&](const char* stage) {
-    const auto t = std::chrono::steady_clock::now();
-    out.seconds.emplace_back(stage, std::chrono::duration<double>(t - t0).count());
-    t0 = t;
-  };
-  // Offsets of the wall: the insert's outer and inner sheet surfaces.
+namespace {
+
+// The insert's sheet as two solids (outer minus inner is the sheet) and its outer ends.
+struct InsertSolids {
+  brep::EndTrim hub_o, tip_o;
+  TopoDS_Shape outer, inner;
+};
+
+// Offsets of the wall: the insert's outer and inner sheet surfaces (into `out`), and the solids they bound.
+InsertSolids insert_solids(const blade::BladeModel& model, const InsertChamber& chamber, const InsertDefinition& def,
+                           const std::string& name, const std::string& field, InsertBuild& out) {
+  const double tw = chamber.wall_thickness, Z = def.gap, ts = def.sheet_thickness;
   try {
     out.outer_surface = blade::build_inner_wall(model, blade::ThicknessField::constant(tw + Z));
     out.inner_surface = blade::build_inner_wall(model, blade::ThicknessField::constant(tw + Z + ts));
@@ -144,32 +143,22 @@ InsertBuild build_insert(const blade::BladeModel& model, const InsertChamber& ch
   } catch (const AlgorithmFailure& e) {
     throw FilmInputError(field + ".gap", name + " does not fit in " + chamber.name + " (" + e.what() + ")");
   }
-  lap("offsets");
-  BooleanOptions bo;
-  bo.progress = progress;
-  bo.perturbed_retries = retries;
-  BooleanStep shell(BooleanOperation::Cut, bo);
-  FeatureTool core;
-  core.feature = name;
-  core.shape = named_all_faces(inner, name);
-  if (!def.hub_open && !def.tip_open) core.expected_volume = volume_of(inner);  // inside the outer solid
-  shell.add(core);
-  brep::NamedShape body = shell.apply(named_all_faces(outer, name));
-  lap("shell");
+  return InsertSolids{hub_o, tip_o, outer, inner};
+}
 
-  // Jet lines around the chamber at mid-span of the insert.
-  const blade::BladeCoordinates coords(model);
-  const double off = tw + Z;
-  const auto on_insert = [&](double s, double c) {
+// Points on the insert's outer surface (the wall offset by `off`, jets into the insert) and their
+// distances to the insert's ends.
+struct SheetPoints {
+  blade::BladeCoordinates coords;
+  double off = 0;
+  std::function<double(const Eigen::Vector3d&)> hub_dist, tip_dist;
+
+  Jet on_insert(double s, double c) const {
     const blade::BladeFrame f = coords.frame(s, c);
     return Jet{f.point - off * f.normal, -f.normal, s, c};
-  };
-  const Eigen::Vector3d inside = chamber.reference;
-  const auto hub_dist = end_wall_distance(hub_o, inside), tip_dist = end_wall_distance(tip_o, inside);
-  const double c_lo = std::max(chamber.pressure_from, out.inner_surface.max_pressure_chord);
-  const double c_hi = std::min(chamber.suction_to, out.inner_surface.min_suction_chord);
+  }
   // Span of a point where the distance to an end is `need` (bisection on the insert's line at chord c).
-  const auto span_at = [&](double c, bool hub, double need) {
+  double span_at(double c, bool hub, double need) const {
     double lo = -0.2, hi = 1.2;  // the distance to the hub end grows with span, to the tip end falls
     for (int it = 0; it < 36; ++it) {  // 1.4 / 2^36: far below a micrometre
       const double mid = 0.5 * (lo + hi);
@@ -180,16 +169,25 @@ InsertBuild build_insert(const blade::BladeModel& model, const InsertChamber& ch
         (tip_dist(p) < need ? hi : lo) = mid;
     }
     return 0.5 * (lo + hi);
-  };
+  }
+};
+
+// Jet lines around the chamber at mid-span of the insert (`body`: the insert's sheet).
+std::vector<Jet> place_jets(const SheetPoints& sp, const InsertChamber& chamber, const InsertDefinition& def,
+                            const InsertBuild& build, const TopoDS_Shape& body, const std::string& name, const std::string& field) {
+  const double ts = def.sheet_thickness, D = def.jet_diameter, off = sp.off;
+  const blade::BladeCoordinates& coords = sp.coords;
+  const double c_lo = std::max(chamber.pressure_from, build.inner_surface.max_pressure_chord);
+  const double c_hi = std::min(chamber.suction_to, build.inner_surface.min_suction_chord);
   const double margin = def.jet_margin + 0.5 * D;
-  const double s_mid = 0.5 * (span_at(0, true, 0) + span_at(0, false, 0));
+  const double s_mid = 0.5 * (sp.span_at(0, true, 0) + sp.span_at(0, false, 0));
   // The chord range [c_lo, c_hi] runs between the ribs' centre lines; the sheet stops short of them by
   // half a rib and the gap (the rib walls grown by Z), more where a rib leans. So the ring runs where
   // the sheet is: the middle of the sheet inside the insert body, its ends found by bisection.
   const auto in_sheet = [&](double c) {
     const blade::BladeFrame f = coords.frame(s_mid, c);
-    BRepClass3d_SolidClassifier cls(body.shape, gp_Pnt(f.point.x() - (off + 0.5 * ts) * f.normal.x(), f.point.y() - (off + 0.5 * ts) * f.normal.y(),
-                                                         f.point.z() - (off + 0.5 * ts) * f.normal.z()),
+    BRepClass3d_SolidClassifier cls(body, gp_Pnt(f.point.x() - (off + 0.5 * ts) * f.normal.x(), f.point.y() - (off + 0.5 * ts) * f.normal.y(),
+                                                 f.point.z() - (off + 0.5 * ts) * f.normal.z()),
                                     1e-7);
     return cls.State() == TopAbs_IN;
   };
@@ -207,7 +205,7 @@ InsertBuild build_insert(const blade::BladeModel& model, const InsertChamber& ch
   std::vector<double> chords;
   for (int k = 0; k <= 400; ++k) {
     const double c = r_lo + (r_hi - r_lo) * k / 400.0;
-    ring.push_back(on_insert(s_mid, c).exit);
+    ring.push_back(sp.on_insert(s_mid, c).exit);
     chords.push_back(c);
   }
   const std::vector<double> arc = arc_table(ring);
@@ -217,73 +215,118 @@ InsertBuild build_insert(const blade::BladeModel& model, const InsertChamber& ch
   std::vector<Jet> jets;
   for (std::size_t li = 0; li < lines.size(); ++li) {
     const double c = interpolate(arc, chords, lines[li]);
-    const double s0 = span_at(c, true, margin + (def.hub_open ? 0 : ts)), s1 = span_at(c, false, margin + (def.tip_open ? 0 : ts));
+    const double s0 = sp.span_at(c, true, margin + (def.hub_open ? 0 : ts)), s1 = sp.span_at(c, false, margin + (def.tip_open ? 0 : ts));
     if (s1 <= s0) throw FilmInputError(field + ".jets.margin", name + ": no room for jets between the insert's ends");
     std::vector<Eigen::Vector3d> line;
     std::vector<double> spans;
     // Each span is a new section (an iso-curve with its arc-length map): 32 chords of the line.
     for (int k = 0; k <= 32; ++k) {
       spans.push_back(s0 + (s1 - s0) * k / 32.0);
-      line.push_back(on_insert(spans.back(), c).exit);
+      line.push_back(sp.on_insert(spans.back(), c).exit);
     }
     const std::vector<double> la = arc_table(line);
     const double pitch = def.jet_spacing_y_d * D;
     for (double a : spaced(0, la.back(), pitch, def.staggered && li % 2 == 1 ? 0.5 * pitch : 0))
-      jets.push_back(on_insert(interpolate(la, spans, a), c));
+      jets.push_back(sp.on_insert(interpolate(la, spans, a), c));
   }
+  return jets;
+}
+
+// Jet tool `jn`: from the middle of the gap through the sheet, `clear` past its inner surface; expected
+// removal by ray quadrature (gx, gw: Gauss-Legendre on [0, 1]) between the two offset surfaces.
+FeatureTool jet_tool(const Jet& jet, const char* jn, NearCaster& entry, NearCaster& exit, const std::vector<double>& gx,
+                     const std::vector<double>& gw, const InsertDefinition& def, const std::string& field) {
+  constexpr int kAngles = 16;
+  const double Z = def.gap, ts = def.sheet_thickness, D = def.jet_diameter;
+  const double r = 0.5 * D, clear = std::min(0.2, 0.5 * Z);
+  const Eigen::Vector3d d = jet.axis, e1 = d.unitOrthogonal(), e2 = d.cross(e1);
+  const double back = 0.5 * Z;  // the tool starts in the middle of the gap
+  const Eigen::Vector3d base = jet.exit - back * d;
+  const RaySurfaceHit ao = entry.first(base, d, 4 * (back + ts) + 1), ai = exit.first(base, d, 4 * (back + ts) + 1);
+  if (!ao.found || !ai.found || ai.ray_param <= ao.ray_param)
+    throw FilmInputError(field + ".jets.diameter", std::string(jn) + ": does not cross the insert's sheet");
+  const RaySurfaceHit far = exit.first(ai.point + 1e-6 * d, d, 4 * (back + ts) + 1);
+  if (far.found && far.ray_param < 2 * clear)
+    throw FilmInputError(field + ".jets.margin", std::string(jn) + ": the insert is only " + format_number(far.ray_param) +
+                                                   " mm wide behind the jet; keep the jets further from its narrow end");
+  const double so = entry.sense(d, ao), si = exit.sense(d, ai);
+  double volume = 0, s_max = 0, s_min = HUGE_VAL;
+  for (int k = 0; k <= 6; ++k)
+    for (int a = 0; a < kAngles; ++a) {
+      const double rho = k == 6 ? r : r * gx[k], th = 2 * kPi * a / kAngles;
+      const Eigen::Vector3d o = base + rho * (std::cos(th) * e1 + std::sin(th) * e2);
+      const RaySurfaceHit ho = entry.near(o, d, ao, so, 0, 4 * (back + ts) + 1, 4 * (back + ts) + 1);
+      const RaySurfaceHit hi = exit.near(o, d, ai, si, 0, 4 * (back + ts) + 1, 4 * (back + ts) + 1);
+      if (!ho.found || !hi.found || hi.ray_param <= ho.ray_param || ho.ray_param < 0.25 * Z)
+        throw FilmInputError(field + ".jets.diameter", std::string(jn) + ": does not cross the insert's sheet cleanly");
+      s_min = std::min(s_min, ho.ray_param);
+      s_max = std::max(s_max, hi.ray_param);
+      if (k < 6) volume += r * r * gx[k] * gw[k] * 2 * kPi / kAngles * (hi.ray_param - ho.ray_param);
+    }
+  HoleFrame hf;
+  hf.exit = base;
+  hf.axis = d;
+  hf.forward = e2;
+  HoleShape cyl;
+  cyl.diameter = D;
+  HoleToolExtent ext;
+  ext.s_top = 0;
+  ext.s_end = s_max + clear;
+  FeatureTool t;
+  t.feature = jn;
+  t.shape = named_all_faces(make_hole_solid(hf, cyl, ext), jn);
+  t.expected_volume = volume;
+  t.symmetry_axis = gp_Ax1(pnt(base), gp_Dir(d.x(), d.y(), d.z()));
+  return t;
+}
+
+}  // namespace
+
+InsertBuild build_insert(const blade::BladeModel& model, const InsertChamber& chamber, const InsertDefinition& def,
+                         int index, const std::string& field, ProgressSink* progress, PerturbedRetries retries) {
+  check_insert_input(chamber, def, index, field);
+  const std::string name = "insert_" + std::to_string(index);
+  const double tw = chamber.wall_thickness, Z = def.gap, ts = def.sheet_thickness, D = def.jet_diameter;
+  InsertBuild out;
+  auto t0 = std::chrono::steady_clock::now();
+  const auto lap = [&](const char* stage) {
+    const auto t = std::chrono::steady_clock::now();
+    out.seconds.emplace_back(stage, std::chrono::duration<double>(t - t0).count());
+    t0 = t;
+  };
+  const InsertSolids solids = insert_solids(model, chamber, def, name, field, out);
+  const TopoDS_Shape& outer = solids.outer;
+  const TopoDS_Shape& inner = solids.inner;
+  lap("offsets");
+  BooleanOptions bo;
+  bo.progress = progress;
+  bo.perturbed_retries = retries;
+  BooleanStep shell(BooleanOperation::Cut, bo);
+  FeatureTool core;
+  core.feature = name;
+  core.shape = named_all_faces(inner, name);
+  if (!def.hub_open && !def.tip_open) core.expected_volume = volume_of(inner);  // inside the outer solid
+  shell.add(core);
+  brep::NamedShape body = shell.apply(named_all_faces(outer, name));
+  lap("shell");
+
+  const Eigen::Vector3d inside = chamber.reference;
+  const SheetPoints sp{blade::BladeCoordinates(model), tw + Z, end_wall_distance(solids.hub_o, inside),
+                       end_wall_distance(solids.tip_o, inside)};
+  const std::vector<Jet> jets = place_jets(sp, chamber, def, out, body.shape, name, field);
 
   // Jet tools: from the middle of the gap through the sheet, `clear` past its inner surface; expected
   // removal by ray quadrature between the two offset surfaces.
   NearCaster entry(out.outer_surface.surface), exit(out.inner_surface.surface);
   std::vector<double> gx, gw;
   gauss_legendre_01(6, gx, gw);
-  constexpr int kAngles = 16;
-  const double r = 0.5 * D, clear = std::min(0.2, 0.5 * Z);
+  const double r = 0.5 * D;
   BooleanStep holes(BooleanOperation::Cut, bo);
   double jet_area = 0;
   for (std::size_t j = 0; j < jets.size(); ++j) {
-    const Jet& jet = jets[j];
     char jn[64];
     std::snprintf(jn, sizeof jn, "%s_jet_%03d", name.c_str(), static_cast<int>(j) + 1);
-    const Eigen::Vector3d d = jet.axis, e1 = d.unitOrthogonal(), e2 = d.cross(e1);
-    const double back = 0.5 * Z;  // the tool starts in the middle of the gap
-    const Eigen::Vector3d base = jet.exit - back * d;
-    const RaySurfaceHit ao = entry.first(base, d, 4 * (back + ts) + 1), ai = exit.first(base, d, 4 * (back + ts) + 1);
-    if (!ao.found || !ai.found || ai.ray_param <= ao.ray_param)
-      throw FilmInputError(field + ".jets.diameter", std::string(jn) + ": does not cross the insert's sheet");
-    const RaySurfaceHit far = exit.first(ai.point + 1e-6 * d, d, 4 * (back + ts) + 1);
-    if (far.found && far.ray_param < 2 * clear)
-      throw FilmInputError(field + ".jets.margin", std::string(jn) + ": the insert is only " + format_number(far.ray_param) +
-                                                     " mm wide behind the jet; keep the jets further from its narrow end");
-    const double so = entry.sense(d, ao), si = exit.sense(d, ai);
-    double volume = 0, s_max = 0, s_min = HUGE_VAL;
-    for (int k = 0; k <= 6; ++k)
-      for (int a = 0; a < kAngles; ++a) {
-        const double rho = k == 6 ? r : r * gx[k], th = 2 * kPi * a / kAngles;
-        const Eigen::Vector3d o = base + rho * (std::cos(th) * e1 + std::sin(th) * e2);
-        const RaySurfaceHit ho = entry.near(o, d, ao, so, 0, 4 * (back + ts) + 1, 4 * (back + ts) + 1);
-        const RaySurfaceHit hi = exit.near(o, d, ai, si, 0, 4 * (back + ts) + 1, 4 * (back + ts) + 1);
-        if (!ho.found || !hi.found || hi.ray_param <= ho.ray_param || ho.ray_param < 0.25 * Z)
-          throw FilmInputError(field + ".jets.diameter", std::string(jn) + ": does not cross the insert's sheet cleanly");
-        s_min = std::min(s_min, ho.ray_param);
-        s_max = std::max(s_max, hi.ray_param);
-        if (k < 6) volume += r * r * gx[k] * gw[k] * 2 * kPi / kAngles * (hi.ray_param - ho.ray_param);
-      }
-    HoleFrame hf;
-    hf.exit = base;
-    hf.axis = d;
-    hf.forward = e2;
-    HoleShape cyl;
-    cyl.diameter = D;
-    HoleToolExtent ext;
-    ext.s_top = 0;
-    ext.s_end = s_max + clear;
-    FeatureTool t;
-    t.feature = jn;
-    t.shape = named_all_faces(make_hole_solid(hf, cyl, ext), jn);
-    t.expected_volume = volume;
-    t.symmetry_axis = gp_Ax1(pnt(base), gp_Dir(d.x(), d.y(), d.z()));
-    holes.add(t);
+    holes.add(jet_tool(jets[j], jn, entry, exit, gx, gw, def, field));
     jet_area += kPi * r * r;
   }
   lap("jet_tools");

@@ -366,27 +366,29 @@ CoreBuild build_core_walls(const blade::BladeModel& model, const CoreDefinition&
   return out;
 }
 
-void build_core_cells(const blade::BladeModel& model, const CoreDefinition& def, CoreBuild& out) {
-  Stopwatch sw;
-  const blade::BladeCoordinates coords(model);
-  const double delta = 0.4 * model.options.overbuild * model.span_length;  // cutting ends just outside the blade
+namespace {
+
+// The core solid: the inner wall trimmed by the end walls (or, at an open end, by a cutting end just
+// outside the blade), its faces named.
+brep::BladeSolid build_core_solid(const blade::BladeModel& model, const CoreDefinition& def, const CoreBuild& out,
+                                  double delta, FaceNames& names) {
   const EndWall bottom = def.hub_floor.open ? EndWall(model, SpanEnd::Hub, -delta) : *out.hub_floor;
   const EndWall top = def.tip_cap.open ? EndWall(model, SpanEnd::Tip, -delta) : *out.tip_cap;
-  const brep::BladeSolid core = brep::build_blade_solid(out.inner_wall.surface, bottom.trim(), top.trim());
+  brep::BladeSolid core = brep::build_blade_solid(out.inner_wall.surface, bottom.trim(), top.trim());
   if (!core.warnings.empty()) throw FeatureFailure("core solid: BOPAlgo warnings while trimming the inner wall");
-  FaceNames names;
   for (const auto& f : core.faces) {
     const std::string n = f.name == brep::kWallFaceName ? "chamber_wall"
                           : f.name == brep::kHubFaceName ? (def.hub_floor.open ? "open_hub" : "hub_floor")
                                                          : (def.tip_cap.open ? "open_tip" : "tip_cap");
     names.set(f.face, n);
   }
-  out.seconds.emplace_back("core_solid", sw.lap());
+  return core;
+}
 
-  // 2. Ribs and chambers.
-  out.chambers = chambers_of(coords, def);
-  // The ribs are independent: built in parallel, each worker with its own coordinates and end walls
-  // (both cache evaluation state); the error of the first failing rib is reported.
+// 2. Ribs and chambers.
+// The ribs are independent: built in parallel, each worker with its own coordinates and end walls
+// (both cache evaluation state); the error of the first failing rib is reported.
+void build_rib_tubes(const blade::BladeModel& model, const CoreDefinition& def, CoreBuild& out, FaceNames& names) {
   std::vector<int> turnaround_of(def.ribs.size(), 0);
   for (std::size_t i = 0, j = 0; i < def.ribs.size(); ++i)
     if (def.ribs[i].turnaround) turnaround_of[i] = static_cast<int>(++j);
@@ -422,50 +424,56 @@ void build_core_cells(const blade::BladeModel& model, const CoreDefinition& def,
     out.ribs.push_back(std::move(*t));
     names.add(out.ribs.back().faces);
   }
-  out.seconds.emplace_back("ribs", sw.lap());
+}
 
-  std::vector<TopoDS_Shape> cells{core.solid};
-  if (!out.ribs.empty()) {
-    BRepAlgoAPI_Splitter split;
-    TopTools_ListOfShape args, tools;
-    args.Append(core.solid);
-    for (const auto& r : out.ribs) tools.Append(r.shell);
-    split.SetArguments(args);
-    split.SetTools(tools);
-    split.SetRunParallel(true);
-    split.Build();
-    // Seen when a rib meets the inner wall where the core is thinner than the rib with its fillets, or
-    // at a very acute angle (e.g. a rib near the trailing-edge crease): name the input that moves it.
-    const std::string hint =
-        " (cooling.core.ribs: a rib probably meets the inner wall where the core is thinner than the rib "
-        "with its fillets, or at a very acute angle; move it away from the trailing edge or make it thinner)";
-    if (!split.IsDone() || split.HasErrors())
-      throw FeatureFailure("splitting the core by the ribs failed: " + alerts(*split.GetReport(), Message_Fail) + hint);
-    if (split.HasWarnings())
-      throw FeatureFailure("splitting the core by the ribs raised BOPAlgo warnings: " +
-                           alerts(*split.GetReport(), Message_Warning) + hint);
-    names = names.carried(split, split.Shape());
-    cells = solids_of(split.Shape());
-  }
-  // The cells partition the core: their volumes give the core's, the ribs' and (before the fillets)
-  // the chambers'.
-  const std::vector<double> cell_volume = volumes_of(cells);
-  for (double v : cell_volume) out.core_volume += v;
-  // Coolant cells: those holding chamber reference points (the cells are disjoint: the first cell that
-  // holds a point is its only one; a cell's bounding box rules most cells out without classifying).
-  std::vector<int> cell_of(out.chambers.size(), -1);
+// The core split by the rib tubes into cells (the core itself without ribs).
+std::vector<TopoDS_Shape> split_core_by_ribs(const TopoDS_Shape& core, const std::vector<RibTube>& ribs, FaceNames& names) {
+  if (ribs.empty()) return {core};
+  BRepAlgoAPI_Splitter split;
+  TopTools_ListOfShape args, tools;
+  args.Append(core);
+  for (const auto& r : ribs) tools.Append(r.shell);
+  split.SetArguments(args);
+  split.SetTools(tools);
+  split.SetRunParallel(true);
+  split.Build();
+  // Seen when a rib meets the inner wall where the core is thinner than the rib with its fillets, or
+  // at a very acute angle (e.g. a rib near the trailing-edge crease): name the input that moves it.
+  const std::string hint =
+      " (cooling.core.ribs: a rib probably meets the inner wall where the core is thinner than the rib "
+      "with its fillets, or at a very acute angle; move it away from the trailing edge or make it thinner)";
+  if (!split.IsDone() || split.HasErrors())
+    throw FeatureFailure("splitting the core by the ribs failed: " + alerts(*split.GetReport(), Message_Fail) + hint);
+  if (split.HasWarnings())
+    throw FeatureFailure("splitting the core by the ribs raised BOPAlgo warnings: " +
+                         alerts(*split.GetReport(), Message_Warning) + hint);
+  names = names.carried(split, split.Shape());
+  return solids_of(split.Shape());
+}
+
+// Coolant cells: those holding chamber reference points (the cells are disjoint: the first cell that
+// holds a point is its only one; a cell's bounding box rules most cells out without classifying).
+std::vector<int> chamber_cells(const std::vector<TopoDS_Shape>& cells, const std::vector<ChamberInfo>& chambers) {
+  std::vector<int> cell_of(chambers.size(), -1);
   std::vector<std::unique_ptr<Inside>> in_cell(cells.size());
   std::vector<Bnd_Box> cell_box(cells.size());
   for (std::size_t c = 0; c < cells.size(); ++c) BRepBndLib::Add(cells[c], cell_box[c]);
-  for (std::size_t k = 0; k < out.chambers.size(); ++k) {
+  for (std::size_t k = 0; k < chambers.size(); ++k) {
     for (std::size_t c = 0; c < cells.size() && cell_of[k] < 0; ++c) {
-      if (cell_box[c].IsOut(pnt(out.chambers[k].reference))) continue;
+      if (cell_box[c].IsOut(pnt(chambers[k].reference))) continue;
       if (!in_cell[c]) in_cell[c] = std::make_unique<Inside>(cells[c]);
-      if ((*in_cell[c])(out.chambers[k].reference)) cell_of[k] = static_cast<int>(c);
+      if ((*in_cell[c])(chambers[k].reference)) cell_of[k] = static_cast<int>(c);
     }
     if (cell_of[k] < 0)
       throw FeatureFailure("chamber " + std::to_string(k + 1) + ": its reference point lies in no cell of the core");
   }
+  return cell_of;
+}
+
+// The other cells are the ribs': their volumes per rib (found by the names of their faces).
+void measure_rib_cells(const std::vector<TopoDS_Shape>& cells, const std::vector<double>& cell_volume,
+                       const std::vector<int>& cell_of, const FaceNames& names, const CoreDefinition& def,
+                       CoreBuild& out) {
   out.rib_volumes.assign(def.ribs.size(), 0.0);
   out.fillet_volumes.assign(def.ribs.size(), 0.0);
   for (std::size_t c = 0; c < cells.size(); ++c) {
@@ -476,193 +484,245 @@ void build_core_cells(const blade::BladeModel& model, const CoreDefinition& def,
     if (rib < 0) throw FeatureFailure("a cell of the core belongs to no chamber and no rib");
     out.rib_volumes[static_cast<std::size_t>(rib)] += cell_volume[c];
   }
-  out.seconds.emplace_back("split", sw.lap());
+}
 
-  // 3. + 4. Per coolant cell: fillets, naming split, merge.
-  std::map<int, std::vector<int>> systems;  // cell -> chambers (0-based)
-  for (std::size_t k = 0; k < cell_of.size(); ++k) systems[cell_of[k]].push_back(static_cast<int>(k));
-  for (const auto& [cell_index, members] : systems) {
-    TopoDS_Shape cell = cells[static_cast<std::size_t>(cell_index)];
-    const double v_before = cell_volume[static_cast<std::size_t>(cell_index)];
-    // Fillets on every edge between a rib face and the inner wall.
-    TopTools_IndexedDataMapOfShapeListOfShape edge_faces;
-    TopExp::MapShapesAndAncestors(cell, TopAbs_EDGE, TopAbs_FACE, edge_faces);
-    BRepFilletAPI_MakeFillet fillet(cell);
-    std::vector<std::pair<TopoDS_Edge, int>> filleted;
-    for (int e = 1; e <= edge_faces.Extent(); ++e) {
-      int rib = -1;
-      bool wall = false;
-      for (const TopoDS_Shape& f : edge_faces(e)) {
-        const std::string n = names.get(f);
-        wall |= n == "chamber_wall";
-        if (const int r = rib_of(n, out.ribs); r >= 0) rib = r;
-      }
-      if (!wall || rib < 0 || def.ribs[static_cast<std::size_t>(rib)].fillet_radius <= 0) continue;
-      const TopoDS_Edge edge = TopoDS::Edge(edge_faces.FindKey(e));
-      if (fillet.Contour(edge) == 0) fillet.Add(def.ribs[static_cast<std::size_t>(rib)].fillet_radius, edge);
-      filleted.emplace_back(edge, rib);
+// 3. Fillets on every edge between a rib face and the inner wall of a coolant cell (`cell` becomes the
+// filleted cell); the filleted edges with their ribs (0-based).
+std::vector<std::pair<TopoDS_Edge, int>> fillet_rib_edges(TopoDS_Shape& cell, const CoreDefinition& def,
+                                                          const std::vector<RibTube>& ribs, FaceNames& names) {
+  TopTools_IndexedDataMapOfShapeListOfShape edge_faces;
+  TopExp::MapShapesAndAncestors(cell, TopAbs_EDGE, TopAbs_FACE, edge_faces);
+  BRepFilletAPI_MakeFillet fillet(cell);
+  std::vector<std::pair<TopoDS_Edge, int>> filleted;
+  for (int e = 1; e <= edge_faces.Extent(); ++e) {
+    int rib = -1;
+    bool wall = false;
+    for (const TopoDS_Shape& f : edge_faces(e)) {
+      const std::string n = names.get(f);
+      wall |= n == "chamber_wall";
+      if (const int r = rib_of(n, ribs); r >= 0) rib = r;
     }
-    if (!filleted.empty()) {
-      fillet.Build();
-      if (!fillet.IsDone()) {
-        std::set<int> ribs;
-        for (const auto& [e, r] : filleted) ribs.insert(r + 1);
-        std::string list;
-        for (int r : ribs) list += (list.empty() ? "" : ", ") + std::to_string(r);
-        // OCCT cannot make these fillets: the user's remedy is the radius (a refusal naming it).
-        throw PassageInputError(rib_field(static_cast<std::size_t>(*ribs.begin() - 1), "fillet_radius"),
-                                "fillets of rib(s) " + list + " failed (BRepFilletAPI_MakeFillet, " +
-                                    std::to_string(fillet.NbFaultyContours()) + " faulty contours); try another fillet radius");
-      }
-      const TopoDS_Shape result = fillet.Shape();
-      FaceNames next = names.carried(fillet, result);
-      for (const auto& [edge, rib] : filleted) {
-        std::string base;
-        for (const TopoDS_Shape& f : edge_faces.FindFromKey(edge))
-          if (rib_of(names.get(f), out.ribs) >= 0) base = names.get(f);
-        for (const TopoDS_Shape& g : fillet.Generated(edge))
-          if (g.ShapeType() == TopAbs_FACE) next.set(g, base + "_fillet");
-      }
-      names.merge(next);
-      cell = result;
-    }
-    // Naming split by the turnaround sheets of this system's ribs.
-    std::vector<TopoDS_Shape> pieces{cell};
-    TopTools_ListOfShape sheets;
-    for (std::size_t r = 0; r < out.ribs.size(); ++r) {
-      const bool joins = std::find(members.begin(), members.end(), static_cast<int>(r)) != members.end() &&
-                         std::find(members.begin(), members.end(), static_cast<int>(r) + 1) != members.end();
-      if (joins && !out.ribs[r].turnaround_sheet.IsNull()) sheets.Append(out.ribs[r].turnaround_sheet);
-    }
-    if (!sheets.IsEmpty()) {
-      BRepAlgoAPI_Splitter split;
-      TopTools_ListOfShape args;
-      args.Append(cell);
-      split.SetArguments(args);
-      split.SetTools(sheets);
-      split.Build();
-      if (!split.IsDone() || split.HasErrors() || split.HasWarnings())
-        throw FeatureFailure("splitting the turnaround faces for naming failed: " +
-                             alerts(*split.GetReport(), Message_Fail) + " " + alerts(*split.GetReport(), Message_Warning));
-      names.merge(names.carried(split, split.Shape()));
-      pieces = solids_of(split.Shape());
-    }
-    ChamberSystem sys;
-    const std::vector<double> piece_volume = volumes_of(pieces);
-    for (std::size_t pc = 0; pc < pieces.size(); ++pc) {
-      const TopoDS_Shape& piece = pieces[pc];
-      int owner = -1;
-      Bnd_Box box;
-      BRepBndLib::Add(piece, box);
-      std::optional<Inside> in_piece;
-      for (int k : members) {
-        const Vec3& ref = out.chambers[static_cast<std::size_t>(k)].reference;
-        if (box.IsOut(pnt(ref))) continue;
-        if (!in_piece) in_piece.emplace(piece);
-        if ((*in_piece)(ref)) owner = k;
-      }
-      if (owner < 0) throw FeatureFailure("a piece of a chamber system holds no chamber reference point");
-      const double v = piece_volume[pc];
-      out.chambers[static_cast<std::size_t>(owner)].volume += v;
-      sys.volume += v;  // the pieces' shared faces cancel: the merged solid's volume is their sum
-      for (const TopoDS_Shape& f : faces_of(piece))
-        if (names.get(f) == "chamber_wall") names.set(f, "chamber_" + std::to_string(owner + 1) + "_wall");
-    }
-    const TopoDS_Shape merged = merge_cells(pieces);
-    for (int k : members) {
-      sys.chambers.push_back(k + 1);
-      out.chambers[static_cast<std::size_t>(k)].system = static_cast<int>(out.systems.size());
-    }
-    sys.feature = members.size() == 1 ? "chamber_" + std::to_string(members.front() + 1)
-                                      : "chambers_" + std::to_string(members.front() + 1) + "_" +
-                                            std::to_string(members.back() + 1);
-    // Fillet material per rib, shared in proportion to the rib's edge count (one system rarely has ribs
-    // of different radii; the per-system total is exact).
-    if (!filleted.empty()) {
-      std::map<int, int> per_rib;
-      for (const auto& [e, r] : filleted) ++per_rib[r];
-      for (const auto& [r, count] : per_rib)
-        out.fillet_volumes[static_cast<std::size_t>(r)] += (v_before - sys.volume) * count / filleted.size();
-    }
-    FeatureTool tool;
-    tool.feature = sys.feature;
-    tool.shape.shape = merged;
-    tool.shape.faces = names.list(merged, sys.feature);
-    // Closed ends: the tool lies inside the blade (inside the inner wall, between the end walls), so it
-    // removes its own volume. Open ends: the verified path computes the overlap.
-    sys.shape = merged;
-    if (def.hub_floor.open || def.tip_cap.open) {
-      tool.expected_volume = std::numeric_limits<double>::quiet_NaN();
-      out.cut_tools.push_back(tool);
-    } else {
-      tool.expected_volume = sys.volume;
-      out.interior_tools.push_back(tool);
-    }
-    out.systems.push_back(sys);
+    if (!wall || rib < 0 || def.ribs[static_cast<std::size_t>(rib)].fillet_radius <= 0) continue;
+    const TopoDS_Edge edge = TopoDS::Edge(edge_faces.FindKey(e));
+    if (fillet.Contour(edge) == 0) fillet.Add(def.ribs[static_cast<std::size_t>(rib)].fillet_radius, edge);
+    filleted.emplace_back(edge, rib);
   }
-  out.seconds.emplace_back("fillets_and_names", sw.lap());
+  if (filleted.empty()) return filleted;
+  fillet.Build();
+  if (!fillet.IsDone()) {
+    std::set<int> failed;
+    for (const auto& [e, r] : filleted) failed.insert(r + 1);
+    std::string list;
+    for (int r : failed) list += (list.empty() ? "" : ", ") + std::to_string(r);
+    // OCCT cannot make these fillets: the user's remedy is the radius (a refusal naming it).
+    throw PassageInputError(rib_field(static_cast<std::size_t>(*failed.begin() - 1), "fillet_radius"),
+                            "fillets of rib(s) " + list + " failed (BRepFilletAPI_MakeFillet, " +
+                                std::to_string(fillet.NbFaultyContours()) + " faulty contours); try another fillet radius");
+  }
+  const TopoDS_Shape result = fillet.Shape();
+  FaceNames next = names.carried(fillet, result);
+  for (const auto& [edge, rib] : filleted) {
+    std::string base;
+    for (const TopoDS_Shape& f : edge_faces.FindFromKey(edge))
+      if (rib_of(names.get(f), ribs) >= 0) base = names.get(f);
+    for (const TopoDS_Shape& g : fillet.Generated(edge))
+      if (g.ShapeType() == TopAbs_FACE) next.set(g, base + "_fillet");
+  }
+  names.merge(next);
+  cell = result;
+  return filleted;
+}
 
-  // Which chambers receive coolant (for the report; the definition check already refused unfed ones).
+// 4. Naming split by the turnaround sheets of this system's ribs: the cell's pieces, one per chamber.
+std::vector<TopoDS_Shape> split_at_turnarounds(const TopoDS_Shape& cell, const std::vector<int>& members,
+                                               const std::vector<RibTube>& ribs, FaceNames& names) {
+  TopTools_ListOfShape sheets;
+  for (std::size_t r = 0; r < ribs.size(); ++r) {
+    const bool joins = std::find(members.begin(), members.end(), static_cast<int>(r)) != members.end() &&
+                       std::find(members.begin(), members.end(), static_cast<int>(r) + 1) != members.end();
+    if (joins && !ribs[r].turnaround_sheet.IsNull()) sheets.Append(ribs[r].turnaround_sheet);
+  }
+  if (sheets.IsEmpty()) return {cell};
+  BRepAlgoAPI_Splitter split;
+  TopTools_ListOfShape args;
+  args.Append(cell);
+  split.SetArguments(args);
+  split.SetTools(sheets);
+  split.Build();
+  if (!split.IsDone() || split.HasErrors() || split.HasWarnings())
+    throw FeatureFailure("splitting the turnaround faces for naming failed: " +
+                         alerts(*split.GetReport(), Message_Fail) + " " + alerts(*split.GetReport(), Message_Warning));
+  names.merge(names.carried(split, split.Shape()));
+  return solids_of(split.Shape());
+}
+
+// Each piece to the chamber whose reference point it holds: the chambers' and the system's volumes, and
+// the chamber wall named per chamber.
+void assign_pieces(const std::vector<TopoDS_Shape>& pieces, const std::vector<int>& members, ChamberSystem& sys,
+                   FaceNames& names, CoreBuild& out) {
+  const std::vector<double> piece_volume = volumes_of(pieces);
+  for (std::size_t pc = 0; pc < pieces.size(); ++pc) {
+    const TopoDS_Shape& piece = pieces[pc];
+    int owner = -1;
+    Bnd_Box box;
+    BRepBndLib::Add(piece, box);
+    std::optional<Inside> in_piece;
+    for (int k : members) {
+      const Vec3& ref = out.chambers[static_cast<std::size_t>(k)].reference;
+      if (box.IsOut(pnt(ref))) continue;
+      if (!in_piece) in_piece.emplace(piece);
+      if ((*in_piece)(ref)) owner = k;
+    }
+    if (owner < 0) throw FeatureFailure("a piece of a chamber system holds no chamber reference point");
+    const double v = piece_volume[pc];
+    out.chambers[static_cast<std::size_t>(owner)].volume += v;
+    sys.volume += v;  // the pieces' shared faces cancel: the merged solid's volume is their sum
+    for (const TopoDS_Shape& f : faces_of(piece))
+      if (names.get(f) == "chamber_wall") names.set(f, "chamber_" + std::to_string(owner + 1) + "_wall");
+  }
+}
+
+// 3. + 4. One coolant cell (holding the chambers `members`, 0-based): fillets, naming split, merge; its
+// chamber system and its tool.
+void build_chamber_system(TopoDS_Shape cell, double v_before, const std::vector<int>& members,
+                          const CoreDefinition& def, FaceNames& names, CoreBuild& out) {
+  const std::vector<std::pair<TopoDS_Edge, int>> filleted = fillet_rib_edges(cell, def, out.ribs, names);
+  const std::vector<TopoDS_Shape> pieces = split_at_turnarounds(cell, members, out.ribs, names);
+  ChamberSystem sys;
+  assign_pieces(pieces, members, sys, names, out);
+  const TopoDS_Shape merged = merge_cells(pieces);
+  for (int k : members) {
+    sys.chambers.push_back(k + 1);
+    out.chambers[static_cast<std::size_t>(k)].system = static_cast<int>(out.systems.size());
+  }
+  sys.feature = members.size() == 1 ? "chamber_" + std::to_string(members.front() + 1)
+                                    : "chambers_" + std::to_string(members.front() + 1) + "_" +
+                                          std::to_string(members.back() + 1);
+  // Fillet material per rib, shared in proportion to the rib's edge count (one system rarely has ribs
+  // of different radii; the per-system total is exact).
+  if (!filleted.empty()) {
+    std::map<int, int> per_rib;
+    for (const auto& [e, r] : filleted) ++per_rib[r];
+    for (const auto& [r, count] : per_rib)
+      out.fillet_volumes[static_cast<std::size_t>(r)] += (v_before - sys.volume) * count / filleted.size();
+  }
+  FeatureTool tool;
+  tool.feature = sys.feature;
+  tool.shape.shape = merged;
+  tool.shape.faces = names.list(merged, sys.feature);
+  // Closed ends: the tool lies inside the blade (inside the inner wall, between the end walls), so it
+  // removes its own volume. Open ends: the verified path computes the overlap.
+  sys.shape = merged;
+  if (def.hub_floor.open || def.tip_cap.open) {
+    tool.expected_volume = std::numeric_limits<double>::quiet_NaN();
+    out.cut_tools.push_back(tool);
+  } else {
+    tool.expected_volume = sys.volume;
+    out.interior_tools.push_back(tool);
+  }
+  out.systems.push_back(sys);
+}
+
+// Which chambers receive coolant (for the report; the definition check already refused unfed ones).
+void mark_fed_chambers(const CoreDefinition& def, CoreBuild& out) {
   for (auto& c : out.chambers) c.fed = def.hub_floor.open || def.tip_cap.open;
   for (const auto& in : def.inlets) {
     const int sys = out.chambers[static_cast<std::size_t>(in.chamber - 1)].system;
     for (auto& c : out.chambers)
       if (c.system == sys) c.fed = true;
   }
+}
 
-  // Inlets: cylinders along the span direction through the end wall into the chamber.
-  for (std::size_t m = 0; m < def.inlets.size(); ++m) {
-    const InletDefinition& in = def.inlets[m];
-    const std::string field = "core.inlets[" + std::to_string(m) + "]";
-    const std::string name = "inlet_" + std::to_string(m + 1);
-    ChamberInfo at = out.chambers[static_cast<std::size_t>(in.chamber - 1)];
-    if (!std::isnan(in.suction_chord)) at.suction_from = at.suction_to = in.suction_chord;
-    if (!std::isnan(in.pressure_chord)) at.pressure_from = at.pressure_to = in.pressure_chord;
-    const bool hub = in.end == SpanEnd::Hub;
-    const double s0 = hub ? 0.0 : 1.0;
-    const Vec3 x0 = chamber_point(coords, def.wall_thickness, at, s0);
-    const Vec3 dir = ((chamber_point(coords, def.wall_thickness, at, hub ? 0.1 : 0.9) - x0) * (hub ? 1.0 : -1.0)).normalized();
-    const EndWall& wall = hub ? *out.hub_floor : *out.tip_cap;
-    const EndWall outside(model, in.end, -0.5 * delta);
-    // Along the axis (into the chamber = +dir): from outside the blade to `reach` past the end wall.
-    auto along = [&](const EndWall& w, double target) { return along_line(w, x0, dir, target); };
-    const double reach = std::max(0.5, 0.25 * in.diameter);
-    const double t0 = along(outside, 0.0), t1 = along(wall, reach);
-    const gp_Ax2 ax(pnt(x0 + t0 * dir), gp_Dir(dir.x(), dir.y(), dir.z()));
-    BRepPrimAPI_MakeCylinder cyl(ax, 0.5 * in.diameter, t1 - t0);
-    cyl.Build();
-    if (!cyl.IsDone()) throw FeatureFailure(name + ": cannot make its cylinder");
-    const TopoDS_Shape s = cyl.Shape();
-    // It must open into its chamber: a ring just past the end wall lies inside the chamber's tool
-    // (classified by check_inlet_rims).
-    InletRim rim;
-    rim.system = out.chambers[static_cast<std::size_t>(in.chamber - 1)].system;
-    rim.field = field + ".diameter";
-    rim.message = name + " (diameter " + format_number(in.diameter) + " mm) does not fit into chamber " +
-                  std::to_string(in.chamber) + " where it passes the " + (hub ? "hub floor" : "tip cap") +
-                  ": its rim leaves the chamber; use a smaller diameter or move it";
-    const double tm = along(wall, 0.5 * reach);
-    const Vec3 e1 = dir.unitOrthogonal(), e2 = dir.cross(e1);
-    for (int k = 0; k < 12; ++k) {
-      const double a = 2 * kPi * k / 12;
-      rim.points.push_back(x0 + tm * dir + 0.5 * in.diameter * (std::cos(a) * e1 + std::sin(a) * e2));
-    }
-    out.inlet_rims.push_back(std::move(rim));
-    FeatureTool tool;
-    tool.feature = name;
-    tool.shape.shape = s;
-    for (const TopoDS_Shape& f : faces_of(s)) tool.shape.faces.push_back({TopoDS::Face(f), name});
-    // It removes the material between the flow-path surface and the end wall (beyond the end wall it
-    // opens into the chamber): the integral over its disc of the axial distance between the two surfaces
-    // (Gauss-Legendre in the radius, the trapezoidal rule in the angle, exact for periodic integrands).
-    const EndWall flow_path(model, in.end, 0.0);
-    tool.expected_volume = disc_integral(0.5 * in.diameter, [&](double rho, double phi) {
-      const Vec3 base = x0 + rho * (std::cos(phi) * e1 + std::sin(phi) * e2);
-      return along_line(wall, base, dir, 0.0) - along_line(flow_path, base, dir, 0.0);
-    });
-    out.inlet_volumes.push_back(tool.expected_volume);
-    out.cut_tools.push_back(tool);
+// Inlet m: a cylinder along the span direction through the end wall into the chamber, its rim to
+// check and its tool with the volume it removes.
+void build_inlet(std::size_t m, const blade::BladeModel& model, const blade::BladeCoordinates& coords,
+                 const CoreDefinition& def, double delta, CoreBuild& out) {
+  const InletDefinition& in = def.inlets[m];
+  const std::string field = "core.inlets[" + std::to_string(m) + "]";
+  const std::string name = "inlet_" + std::to_string(m + 1);
+  ChamberInfo at = out.chambers[static_cast<std::size_t>(in.chamber - 1)];
+  if (!std::isnan(in.suction_chord)) at.suction_from = at.suction_to = in.suction_chord;
+  if (!std::isnan(in.pressure_chord)) at.pressure_from = at.pressure_to = in.pressure_chord;
+  const bool hub = in.end == SpanEnd::Hub;
+  const double s0 = hub ? 0.0 : 1.0;
+  const Vec3 x0 = chamber_point(coords, def.wall_thickness, at, s0);
+  const Vec3 dir = ((chamber_point(coords, def.wall_thickness, at, hub ? 0.1 : 0.9) - x0) * (hub ? 1.0 : -1.0)).normalized();
+  const EndWall& wall = hub ? *out.hub_floor : *out.tip_cap;
+  const EndWall outside(model, in.end, -0.5 * delta);
+  // Along the axis (into the chamber = +dir): from outside the blade to `reach` past the end wall.
+  auto along = [&](const EndWall& w, double target) { return along_line(w, x0, dir, target); };
+  const double reach = std::max(0.5, 0.25 * in.diameter);
+  const double t0 = along(outside, 0.0), t1 = along(wall, reach);
+  const gp_Ax2 ax(pnt(x0 + t0 * dir), gp_Dir(dir.x(), dir.y(), dir.z()));
+  BRepPrimAPI_MakeCylinder cyl(ax, 0.5 * in.diameter, t1 - t0);
+  cyl.Build();
+  if (!cyl.IsDone()) throw FeatureFailure(name + ": cannot make its cylinder");
+  const TopoDS_Shape s = cyl.Shape();
+  // It must open into its chamber: a ring just past the end wall lies inside the chamber's tool
+  // (classified by check_inlet_rims).
+  InletRim rim;
+  rim.system = out.chambers[static_cast<std::size_t>(in.chamber - 1)].system;
+  rim.field = field + ".diameter";
+  rim.message = name + " (diameter " + format_number(in.diameter) + " mm) does not fit into chamber " +
+                std::to_string(in.chamber) + " where it passes the " + (hub ? "hub floor" : "tip cap") +
+                ": its rim leaves the chamber; use a smaller diameter or move it";
+  const double tm = along(wall, 0.5 * reach);
+  const Vec3 e1 = dir.unitOrthogonal(), e2 = dir.cross(e1);
+  for (int k = 0; k < 12; ++k) {
+    const double a = 2 * kPi * k / 12;
+    rim.points.push_back(x0 + tm * dir + 0.5 * in.diameter * (std::cos(a) * e1 + std::sin(a) * e2));
   }
+  out.inlet_rims.push_back(std::move(rim));
+  FeatureTool tool;
+  tool.feature = name;
+  tool.shape.shape = s;
+  for (const TopoDS_Shape& f : faces_of(s)) tool.shape.faces.push_back({TopoDS::Face(f), name});
+  // It removes the material between the flow-path surface and the end wall (beyond the end wall it
+  // opens into the chamber): the integral over its disc of the axial distance between the two surfaces
+  // (Gauss-Legendre in the radius, the trapezoidal rule in the angle, exact for periodic integrands).
+  const EndWall flow_path(model, in.end, 0.0);
+  tool.expected_volume = disc_integral(0.5 * in.diameter, [&](double rho, double phi) {
+    const Vec3 base = x0 + rho * (std::cos(phi) * e1 + std::sin(phi) * e2);
+    return along_line(wall, base, dir, 0.0) - along_line(flow_path, base, dir, 0.0);
+  });
+  out.inlet_volumes.push_back(tool.expected_volume);
+  out.cut_tools.push_back(tool);
+}
+
+}  // namespace
+
+void build_core_cells(const blade::BladeModel& model, const CoreDefinition& def, CoreBuild& out) {
+  Stopwatch sw;
+  const blade::BladeCoordinates coords(model);
+  const double delta = 0.4 * model.options.overbuild * model.span_length;  // cutting ends just outside the blade
+  FaceNames names;
+  const brep::BladeSolid core = build_core_solid(model, def, out, delta, names);
+  out.seconds.emplace_back("core_solid", sw.lap());
+
+  // 2. Ribs and chambers.
+  out.chambers = chambers_of(coords, def);
+  build_rib_tubes(model, def, out, names);
+  out.seconds.emplace_back("ribs", sw.lap());
+
+  const std::vector<TopoDS_Shape> cells = split_core_by_ribs(core.solid, out.ribs, names);
+  // The cells partition the core: their volumes give the core's, the ribs' and (before the fillets)
+  // the chambers'.
+  const std::vector<double> cell_volume = volumes_of(cells);
+  for (double v : cell_volume) out.core_volume += v;
+  const std::vector<int> cell_of = chamber_cells(cells, out.chambers);
+  measure_rib_cells(cells, cell_volume, cell_of, names, def, out);
+  out.seconds.emplace_back("split", sw.lap());
+
+  // 3. + 4. Per coolant cell: fillets, naming split, merge.
+  std::map<int, std::vector<int>> systems;  // cell -> chambers (0-based)
+  for (std::size_t k = 0; k < cell_of.size(); ++k) systems[cell_of[k]].push_back(static_cast<int>(k));
+  for (const auto& [cell_index, members] : systems)
+    build_chamber_system(cells[static_cast<std::size_t>(cell_index)], cell_volume[static_cast<std::size_t>(cell_index)],
+                         members, def, names, out);
+  out.seconds.emplace_back("fillets_and_names", sw.lap());
+
+  mark_fed_chambers(def, out);
+  for (std::size_t m = 0; m < def.inlets.size(); ++m) build_inlet(m, model, coords, def, delta, out);
   out.seconds.emplace_back("inlets", sw.lap());
 }
 

@@ -253,6 +253,77 @@ TopoDS_Face face_of(const BSplineSurface<3>& s) {
   return mk.Face();
 }
 
+// Midway between stations: exact profile points against the skinned pieces (the largest distance).
+double station_error(const TubeBuilder& tb, const std::vector<double>& st, const std::vector<BSplineSurface<3>>& surf) {
+  double worst = 0;
+  for (std::size_t k = 0; k + 1 < st.size(); ++k) {
+    const double am = 0.5 * (st[k] + st[k + 1]);
+    const TubeBuilder::Profile e = tb.profile(am);
+    for (std::size_t p = 0; p < surf.size(); ++p) {
+      SurfaceProjector proj(surf[p]);
+      for (double t : {0.0, 0.25, 0.5, 0.75, 1.0}) {
+        const BSplineCurve<3>& c = e.pieces[p];
+        const double u = c.first_param() + t * (c.last_param() - c.first_param());
+        worst = std::max(worst, proj.project(c.point(u)).distance);
+      }
+    }
+  }
+  return worst;
+}
+
+// The open ends must lie outside the core: farther than t from no wall point, i.e. within the wall.
+// True when an end still lies inside the core (the extent must grow).
+bool ends_inside_core(const TubeBuilder& tb, const std::vector<double>& st, const blade::BladeCoordinates& coords,
+                      const blade::ThicknessField& wall) {
+  bool refine = false;
+  for (double a : {st.front(), st.back()}) {
+    const TubeBuilder::Profile e = tb.profile(a);
+    for (const auto& c : e.pieces)
+      for (double t : {0.0, 0.5}) {
+        const Eigen::Vector3d p = c.point(c.first_param() + t * (c.last_param() - c.first_param()));
+        const blade::BladeLocateResult r = coords.locate(p);
+        if (r.found && r.coordinate.depth > wall.at(r.coordinate.span, r.coordinate.chord) * 0.999) refine = true;
+      }
+  }
+  return refine;
+}
+
+// Faces, sewn into the open tube (out.faces, out.shell).
+void sew_tube(const std::vector<BSplineSurface<3>>& surf, const std::vector<std::string>& names, const std::string& who,
+              RibTube& out) {
+  BRepBuilderAPI_Sewing sew(1e-6);
+  std::vector<TopoDS_Face> faces;
+  for (const auto& s : surf) {
+    faces.push_back(face_of(s));
+    sew.Add(faces.back());
+  }
+  sew.Perform();
+  TopoDS_Shell shell;
+  for (TopExp_Explorer e(sew.SewedShape(), TopAbs_SHELL); e.More(); e.Next()) shell = TopoDS::Shell(e.Current());
+  if (shell.IsNull()) throw AlgorithmFailure(who + ": sewing the rib faces gave no shell");
+  out.faces.clear();
+  for (std::size_t p = 0; p < surf.size(); ++p) {
+    const TopoDS_Shape f = sew.IsModified(faces[p]) ? sew.Modified(faces[p]) : faces[p];
+    out.faces.push_back({TopoDS::Face(f), names[p]});
+  }
+  out.shell = shell;
+}
+
+// Turnaround sheet: the mid-surface from the rounded end's junction to past the end wall.
+TopoDS_Face turnaround_sheet(const RibMidSurface& mid, const RibDefinition& rib, const RibEnds& ends,
+                             const std::vector<double>& st, const std::vector<TubeBuilder::Profile>& prof) {
+  const bool at_tip = rib.turnaround->end == SpanEnd::Tip;
+  const double far = at_tip ? ends.tip_through_span : ends.hub_through_span;
+  std::vector<BSplineCurve<3>> cs;
+  for (std::size_t k = 0; k < st.size(); ++k) {
+    const double s0 = at_tip ? prof[k].st : prof[k].sb;
+    PointList<3> pts;
+    for (int j = 0; j < 9; ++j) pts.push_back(mid.point(st[k], s0 + (far - s0) * j / 8.0));
+    cs.push_back(interpolate<3>(pts, 3, ParamMethod::Uniform));
+  }
+  return face_of(skin_stations(cs, st));
+}
+
 }  // namespace
 
 RibTube build_rib_tube(const blade::BladeCoordinates& coords, const blade::ThicknessField& wall,
@@ -305,54 +376,19 @@ RibTube build_rib_tube(const blade::BladeCoordinates& coords, const blade::Thick
         surf.push_back(skin_stations(cs, st));
       }
       // Midway between stations: exact profile points against the skinned pieces.
-      double worst = 0;
-      for (std::size_t k = 0; k + 1 < st.size(); ++k) {
-        const double am = 0.5 * (st[k] + st[k + 1]);
-        const TubeBuilder::Profile e = tb.profile(am);
-        for (std::size_t p = 0; p < np; ++p) {
-          SurfaceProjector proj(surf[p]);
-          for (double t : {0.0, 0.25, 0.5, 0.75, 1.0}) {
-            const BSplineCurve<3>& c = e.pieces[p];
-            const double u = c.first_param() + t * (c.last_param() - c.first_param());
-            worst = std::max(worst, proj.project(c.point(u)).distance);
-          }
-        }
-      }
+      const double worst = station_error(tb, st, surf);
       out.max_station_error = worst;
       if (worst > tolerance && n < 49) continue;
       if (worst > tolerance)
         throw AlgorithmFailure(who + ": the skinned rib surfaces stay " + format_number(worst) + " mm from the exact rib (tolerance " +
                                format_number(tolerance) + " mm)");
       // The open ends must lie outside the core: farther than t from no wall point, i.e. within the wall.
-      for (double a : {st.front(), st.back()}) {
-        const TubeBuilder::Profile e = tb.profile(a);
-        for (const auto& c : e.pieces)
-          for (double t : {0.0, 0.5}) {
-            const Eigen::Vector3d p = c.point(c.first_param() + t * (c.last_param() - c.first_param()));
-            const blade::BladeLocateResult r = coords.locate(p);
-            if (r.found && r.coordinate.depth > wall.at(r.coordinate.span, r.coordinate.chord) * 0.999) refine = true;
-          }
-      }
+      refine = ends_inside_core(tb, st, coords, wall);
       if (refine) break;
       // Faces, sewn into the open tube.
       const std::vector<std::string> names = tb.piece_names();
       require(names.size() == np, who + ": internal piece count mismatch");
-      BRepBuilderAPI_Sewing sew(1e-6);
-      std::vector<TopoDS_Face> faces;
-      for (const auto& s : surf) {
-        faces.push_back(face_of(s));
-        sew.Add(faces.back());
-      }
-      sew.Perform();
-      TopoDS_Shell shell;
-      for (TopExp_Explorer e(sew.SewedShape(), TopAbs_SHELL); e.More(); e.Next()) shell = TopoDS::Shell(e.Current());
-      if (shell.IsNull()) throw AlgorithmFailure(who + ": sewing the rib faces gave no shell");
-      out.faces.clear();
-      for (std::size_t p = 0; p < np; ++p) {
-        const TopoDS_Shape f = sew.IsModified(faces[p]) ? sew.Modified(faces[p]) : faces[p];
-        out.faces.push_back({TopoDS::Face(f), names[p]});
-      }
-      out.shell = shell;
+      sew_tube(surf, names, who, out);
       out.a_min = st.front();
       out.a_max = st.back();
       out.stations = st;
@@ -360,19 +396,7 @@ RibTube build_rib_tube(const blade::BladeCoordinates& coords, const blade::Thick
         out.hub_junction.push_back(pr.sb);
         out.tip_junction.push_back(pr.st);
       }
-      // Turnaround sheet: the mid-surface from the rounded end's junction to past the end wall.
-      if (rib.turnaround) {
-        const bool at_tip = rib.turnaround->end == SpanEnd::Tip;
-        const double far = at_tip ? ends.tip_through_span : ends.hub_through_span;
-        std::vector<BSplineCurve<3>> cs;
-        for (std::size_t k = 0; k < st.size(); ++k) {
-          const double s0 = at_tip ? prof[k].st : prof[k].sb;
-          PointList<3> pts;
-          for (int j = 0; j < 9; ++j) pts.push_back(mid.point(st[k], s0 + (far - s0) * j / 8.0));
-          cs.push_back(interpolate<3>(pts, 3, ParamMethod::Uniform));
-        }
-        out.turnaround_sheet = face_of(skin_stations(cs, st));
-      }
+      if (rib.turnaround) out.turnaround_sheet = turnaround_sheet(mid, rib, ends, st, prof);
       return out;
     }
     if (!refine || attempt >= 4)

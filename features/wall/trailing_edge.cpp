@@ -291,6 +291,264 @@ void check_trailing_edge_placement(const blade::BladeModel& model, const CoreDef
   for (double s : layout.spans) check_lip(*def.trailing_edge, te_frame(coords, def, s), s);
 }
 
+namespace {
+
+// Where slot `info` sits across the blade at span s: under the lip (cutback: the lip checked, and the
+// suction-side wall left under its floor) or on the centreline (the wall on both sides); sets its
+// x_lip and floor_y.
+void place_slot(const TrailingEdgeDefinition& te, bool cutback, WallLines& lines, const TeFrame& f, double s, SlotInfo& info) {
+  const std::string& name = info.name;
+  if (cutback) {
+    info.x_lip = f.te_x - te.cutback_length;
+    check_lip(te, f, s);
+    const Across b = across(lines, f, info.x_lip, 0.0, true);
+    if (!b.ok) throw FeatureFailure(name + ": cannot find the blade's pressure side at the lip");
+    info.floor_y = b.hi - te.lip_thickness - te.slot_height;
+    // Suction-side wall left under the floor, from the lip to 1 mm before the TE.
+    for (int k = 0; k <= 8; ++k) {
+      const double x = info.x_lip + (f.te_x - 1.0 - info.x_lip) * k / 8.0;
+      const Across c = across(lines, f, x, 0.0, true);
+      if (!c.ok || info.floor_y - c.lo < 0.1)
+        throw PassageInputError(field("slot_height"),
+                                name + ": slot_height + lip_thickness leave " + format_number(c.ok ? info.floor_y - c.lo : 0.0) +
+                                    " mm of suction-side wall under the cutback at span " + format_number(s) +
+                                    " (at least 0.1 mm); must be <= " + format_number(b.hi - b.lo - 0.1) + " mm together here");
+    }
+  } else {
+    info.x_lip = f.te_x;
+    info.floor_y = -0.5 * te.slot_height;
+    // At least 0.1 mm of wall on both sides of the slot over the first half of the way from the crease
+    // to the TE (the blade's flanks; the second half holds the TE's rounding, through which the slot
+    // leaves the blade).
+    double h_max = HUGE_VAL;
+    for (int k = 0; k <= 4; ++k) {
+      const double x = f.crease_x + 0.5 * (f.te_x - f.crease_x) * k / 4.0;
+      const Across c = across(lines, f, x, 0.0, true);
+      if (!c.ok) throw FeatureFailure(name + ": cannot find the blade's walls across the slot");
+      h_max = std::min(h_max, 2 * (std::min(-c.lo, c.hi) - 0.1));
+    }
+    if (!(te.slot_height <= h_max))
+      throw PassageInputError(field("slot_height"), name + ": the slot leaves less than 0.1 mm of wall on a side between "
+                                                           "the chamber's end and the TE at span " + format_number(s) +
+                                                           "; must be <= " + format_number(std::max(h_max, 0.0)) +
+                                                           " mm here, got " + format_number(te.slot_height));
+  }
+}
+
+// The cutback of slot `info`, joined to its channel's `tool`; adds its share to `expected` (the
+// material it removes) and `tool_volume` (its construction volume).
+void add_cutback(const TrailingEdgeDefinition& te, WallLines& lines, const TeFrame& f, const SlotInfo& info, double taper,
+                 brep::NamedShape& tool, double& expected, double& tool_volume) {
+  const std::string& name = info.name;
+  const double w = te.slot_width, y0 = info.floor_y;
+  // Everything above the floor from the lip to past the TE, between the tapered lands. Lines run from
+  // the block's end face past the TE (outside) back to the lip: each enters the blade once through
+  // the pressure side or the TE, so its length in the material is smooth in (y, z) up to the height
+  // of the pressure surface at the lip, where it drops to zero (a kink: a break of the quadrature).
+  // (Lines across the floor would graze the TE's rounding, a square-root singularity.)
+  const double we = w - 2 * (info.x_end - info.x_lip) * taper;
+  // The block's top at each side z = -+w/2 lies so that the pressure surface at the lip is at the
+  // same fraction kLip of its height on both sides: the kink is then (to the surface's curvature
+  // across the slot) on one parameter line, a break of the quadrature.
+  constexpr double kLip = 0.75;
+  double top[2];
+  for (int k = 0; k < 2; ++k) {
+    const Across a = across(lines, f, info.x_lip, (k ? 0.5 : -0.5) * w, true);
+    if (!a.ok) throw FeatureFailure(name + ": cannot find the blade's pressure side at the lip");
+    top[k] = y0 + (a.hi - y0) / kLip;
+  }
+  const RuledBlock cut{bilinear_patch(f.at(info.x_end, y0, -0.5 * we), f.at(info.x_end, top[0], -0.5 * we),
+                                      f.at(info.x_end, y0, 0.5 * we), f.at(info.x_end, top[1], 0.5 * we)),
+                       bilinear_patch(f.at(info.x_lip, y0, -0.5 * w), f.at(info.x_lip, top[0], -0.5 * w),
+                                      f.at(info.x_lip, y0, 0.5 * w), f.at(info.x_lip, top[1], 0.5 * w))};
+  const double a_lip = kLip;
+  const BlockIntegral vb = integrate_block(cut, lines, Region::Outside, Region::Material, Region::Any,
+                                           {kCellsCutback, 2, {a_lip}, false});
+  const brep::NamedShape cut_solid = ruled_block_solid(cut, name);
+  BRepAlgoAPI_Fuse fuse(tool.shape, cut_solid.shape);
+  if (!fuse.IsDone() || fuse.HasErrors()) throw FeatureFailure(name + ": joining the channel and the cutback failed");
+  ShapeUpgrade_UnifySameDomain unify(fuse.Shape(), true, true, false);
+  unify.Build();
+  const std::vector<TopoDS_Shape> solids = solids_of(unify.Shape());
+  if (solids.size() != 1) throw FeatureFailure(name + ": channel and cutback do not form one solid");
+  tool.shape = solids.front();
+  tool.faces.clear();
+  for (const TopoDS_Shape& face : faces_of(tool.shape)) tool.faces.push_back({TopoDS::Face(face), name});
+  expected += vb.in_region;
+  tool_volume += vb.volume;
+}
+
+// Slot `name` at span s: its placement, its channel from the chamber (and its cutback), its tool and
+// its info in `out`; its inlet station lowers inlet_x_min, its construction volume is appended.
+void build_slot(const std::string& name, double s, const TrailingEdgeDefinition& te, const blade::BladeCoordinates& coords,
+                const CoreDefinition& def, const SlotLayout& layout, WallLines& lines, TrailingEdgeBuild& out,
+                double& inlet_x_min, std::vector<double>& construction_volumes) {
+  const bool cutback = te.type == TrailingEdgeType::PressureSideCutback;
+  const double taper = std::tan(te.land_taper_deg * kPi / 180);
+  const TeFrame f = te_frame(coords, def, s);
+  SlotInfo info;
+  info.name = name;
+  info.span = s;
+  info.origin = f.o;
+  info.x = f.x;
+  info.y = f.y;
+  info.z = f.z;
+  info.height = te.slot_height;
+  info.width = te.slot_width;
+  info.x_end = f.te_x + 1.0;
+  const double w = te.slot_width;
+  place_slot(te, cutback, lines, f, s, info);
+  const double y0 = info.floor_y, y1 = y0 + te.slot_height, h = te.slot_height;
+  // Centreline: each land side turns by land_taper_deg from the crease (x = 0, slot width w) on, so
+  // the slot narrows towards the TE (and widens upstream, inside the chamber).
+  const double slot_taper = cutback ? 0.0 : taper;
+  const Inlet in = inlet_station(lines, f, f.crease_x, y0, h, w, slot_taper, cutback);
+  if (std::isnan(in.x))
+    throw PassageInputError(field("slot_height"), name + " does not fit into the last chamber at span " + format_number(s) +
+                                                       ": no station where the chamber holds its inlet (" + format_number(h) +
+                                                       " x " + format_number(w) + " mm, 0.05 mm clear)");
+  info.x_inlet = in.x;
+  inlet_x_min = std::min(inlet_x_min, in.x);
+  // Channel: from the inlet face in the chamber (centred in it for a cutback) straight to the slot's
+  // exit face under the lip (cutback) or past the TE (centreline).
+  const double xc = cutback ? info.x_lip : info.x_end;
+  const double w_in = w - 2 * in.x * slot_taper, w_out = w - 2 * xc * slot_taper;
+  if (!cutback)
+    check_centreline_widths(te, name, s, layout.pitch, static_cast<int>(layout.spans.size()), in.x, xc, w_in, w_out);
+  const RuledBlock channel{bilinear_patch(f.at(in.x, in.y, -0.5 * w_in), f.at(in.x, in.y + h, -0.5 * w_in),
+                                          f.at(in.x, in.y, 0.5 * w_in), f.at(in.x, in.y + h, 0.5 * w_in)),
+                           bilinear_patch(f.at(xc, y0, -0.5 * w_out), f.at(xc, y1, -0.5 * w_out),
+                                          f.at(xc, y0, 0.5 * w_out), f.at(xc, y1, 0.5 * w_out))};
+  // The line of the channel through the crease (the inner wall's C0 edge) is a kink of the integrand.
+  const double lc = (f.crease_x - in.x) / (xc - in.x);
+  const double y_crease = (blade::inner_wall_crease(coords, def.wall_thickness, s).crease - f.o).dot(f.y);
+  const double a_crease = (y_crease - in.y - lc * (y0 - in.y)) / h;
+  const BlockIntegral vc = integrate_block(channel, lines, Region::Chamber, Region::Material,
+                                           cutback ? Region::Material : Region::Outside,
+                                           {kCellsChannel, kCellsChannel, {a_crease}, true});
+  if (!vc.ok)
+    throw PassageInputError(field("slot_height"), name + " at span " + format_number(s) + " does not run from the chamber through "
+                                                       "the wall as placed (a line of it leaves the blade early)");
+  brep::NamedShape tool = ruled_block_solid(channel, name);
+  double expected = vc.in_region, tool_volume = vc.volume;
+  if (cutback) add_cutback(te, lines, f, info, taper, tool, expected, tool_volume);
+  construction_volumes.push_back(tool_volume);  // checked below, all slots at once on both cores
+  info.removed_volume = expected;
+  FeatureTool ft;
+  ft.feature = name;
+  ft.shape = tool;
+  ft.expected_volume = expected;
+  out.slot_tools.push_back(ft);
+  out.slots.push_back(info);
+}
+
+// Each slot tool's B-rep volume against its construction (volume_of, accurate to 1e-7, against the volume
+// checks' 1e-6 tolerance; independent per slot).
+void check_slot_volumes(const TrailingEdgeBuild& out, const std::vector<double>& construction_volumes) {
+  std::vector<char> volume_ok(out.slot_tools.size(), 1);
+  OSD_Parallel::For(0, static_cast<int>(out.slot_tools.size()), [&](int k) {
+    const double v = construction_volumes[static_cast<std::size_t>(k)];
+    volume_ok[static_cast<std::size_t>(k)] =
+        std::abs(volume_of(out.slot_tools[static_cast<std::size_t>(k)].shape.shape) - v) <= 1e-6 * v + 1e-9;
+  });
+  for (std::size_t k = 0; k < volume_ok.size(); ++k)
+    if (!volume_ok[k]) throw FeatureFailure(out.slot_tools[k].feature + ": the tool solid's volume differs from its construction");
+}
+
+// Pin fin `name` of row `row` at span s, station x (upstream of the slots): clear of the last rib,
+// across the chamber, its tool and its info in `out`.
+void build_pin_fin(const std::string& name, int row, double s, double x, const PinFinDefinition& pf,
+                   const blade::BladeCoordinates& coords, const CoreDefinition& def, WallLines& lines, TrailingEdgeBuild& out) {
+  const RibDefinition* last_rib = def.ribs.empty() ? nullptr : &def.ribs.back();
+  const double r = 0.5 * pf.diameter;
+  const TeFrame f = te_frame(coords, def, s);
+  if (last_rib) {
+    // Clear of the last rib and its fillets: the pin's line (across the blade at x) against the rib's
+    // mid-line between its wall points at this span.
+    const Vec3 ra = blade::inner_wall_point(coords, def.wall_thickness, s, last_rib->suction_chord);
+    const Vec3 rb = blade::inner_wall_point(coords, def.wall_thickness, s, last_rib->pressure_chord);
+    const double need = r + 0.5 * last_rib->thickness + last_rib->fillet_radius + 0.1;
+    if (segment_distance(f.at(x, -20.0, 0.0), f.at(x, 20.0, 0.0), ra, rb) < need)
+      throw PassageInputError(field("pin_fins.rows"),
+                              name + " (row " + std::to_string(row + 1) + ") reaches rib " +
+                                  std::to_string(def.ribs.size()) + " and its fillet at span " + format_number(s) +
+                                  ": fewer rows, a smaller streamwise_pitch or slot_gap");
+  }
+  const Across c = across(lines, f, x, 0.0, false);
+  if (!c.ok) throw PassageInputError(field("pin_fins.rows"), name + ": no chamber across its axis at span " + format_number(s));
+  // Axis: across the chamber, the bisector of the two walls' normals (the walls of the TE chamber
+  // converge, so a pin along y would meet the pressure-side wall obliquely).
+  const Vec3 mid = f.at(x, 0.5 * (c.lo + c.hi), 0.0);
+  Vec3 n1 = lines.inner_normal(mid, f.at(x, -8.0, 0.0)), n2 = lines.inner_normal(mid, f.at(x, 8.0, 0.0));
+  if (n1.dot(f.y) < 0) n1 = -n1;
+  if (n2.dot(f.y) < 0) n2 = -n2;
+  const Vec3 axis = (n1 + n2).normalized();
+  const std::vector<double> hits = lines.inner_crossings(mid - 8.0 * axis, mid + 8.0 * axis);
+  if (hits.size() != 2) throw PassageInputError(field("pin_fins.rows"), name + ": no chamber across its axis at span " + format_number(s));
+  const double lo_a = -8.0 + 16.0 * hits[0], hi_a = -8.0 + 16.0 * hits[1];
+  const double t = def.wall_thickness.min_value();
+  const Vec3 base = mid + (lo_a - 0.5 * t) * axis;
+  const double length = hi_a - lo_a + t;
+  const Vec3 e1 = f.z.cross(axis).normalized(), e2 = axis.cross(e1);
+  const double added = disc_integral(r, [&](double rho, double phi_) {
+    const Vec3 off = rho * (std::cos(phi_) * e1 + std::sin(phi_) * e2);
+    Region end;
+    const double frac = total(lines.intervals(base + off, base + off + length * axis, Region::Material,
+                                              Region::Chamber, &end));
+    if (end != Region::Material)
+      throw PassageInputError(field("pin_fins.diameter"), name + " at span " + format_number(s) + " does not end inside "
+                                                                 "both walls (diameter too large for the chamber "
+                                                                 "there)");
+    return frac * length;
+  });
+  BRepPrimAPI_MakeCylinder cyl(gp_Ax2(gp_Pnt(base.x(), base.y(), base.z()), gp_Dir(axis.x(), axis.y(), axis.z())), r,
+                               length);
+  cyl.Build();
+  if (!cyl.IsDone()) throw FeatureFailure(name + ": cannot make its cylinder");
+  FeatureTool ft;
+  ft.feature = name;
+  ft.shape.shape = cyl.Shape();
+  for (const TopoDS_Shape& face : faces_of(cyl.Shape())) ft.shape.faces.push_back({TopoDS::Face(face), name});
+  ft.expected_volume = added;
+  PinInfo info;
+  info.name = name;
+  info.span = s;
+  info.row = row;
+  info.base = base;
+  info.axis = axis;
+  info.length = length;
+  info.diameter = pf.diameter;
+  info.chamber_length = hi_a - lo_a;
+  info.added_volume = added;
+  out.pin_tools.push_back(ft);
+  out.pins.push_back(info);
+}
+
+// Pin fins: staggered rows upstream of the slots' inlets (the most upstream one, inlet_x_min).
+void build_pin_fins(const PinFinDefinition& pf, const blade::BladeCoordinates& coords, const CoreDefinition& def,
+                    const SpanLine& line, WallLines& lines, double inlet_x_min, TrailingEdgeBuild& out) {
+  const double r = 0.5 * pf.diameter;
+  const double plo = r, phi = line.length() - r;
+  int number = 0;
+  const int n_even = static_cast<int>(std::floor((phi - plo) / pf.spanwise_pitch + 1e-9)) + 1;
+  const std::vector<double> even = centred(plo, phi, pf.spanwise_pitch, n_even);
+  for (int row = 0; row < pf.rows; ++row) {
+    std::vector<double> at;  // odd rows: shifted by half the pitch (staggered), as many as fit
+    for (double y : even)
+      if (!(row % 2)) at.push_back(y);
+      else if (y + 0.5 * pf.spanwise_pitch <= phi) at.push_back(y + 0.5 * pf.spanwise_pitch);
+    for (double yc : at) {
+      const double s = line.span_at(yc);
+      const std::string name = "pin_fin_" + numbered(++number, 3);
+      // Row station: upstream of the slots' inlets (the most upstream one, in this frame).
+      const double x = inlet_x_min - pf.slot_gap - r - row * pf.streamwise_pitch;
+      build_pin_fin(name, row, s, x, pf, coords, def, lines, out);
+    }
+  }
+}
+
+}  // namespace
+
 TrailingEdgeBuild build_trailing_edge(const blade::BladeModel& model, const CoreDefinition& def, const CoreBuild& core,
                                       WallLines& lines) {
   check_trailing_edge_definition(def);
@@ -304,235 +562,14 @@ TrailingEdgeBuild build_trailing_edge(const blade::BladeModel& model, const Core
   const blade::BladeCoordinates coords(model);
   const SlotLayout layout = slot_layout(model, coords, def, core.hub_floor ? &*core.hub_floor : nullptr,
                                         core.tip_cap ? &*core.tip_cap : nullptr);
-  const double pitch = layout.pitch;
-  const int count = static_cast<int>(layout.spans.size());
-  const SpanLine& line = layout.line;
-  const double taper = std::tan(te.land_taper_deg * kPi / 180);
   int slot_number = 0;
   double inlet_x_min = HUGE_VAL;
   std::vector<double> construction_volumes;
-  for (double s : layout.spans) {
-    const TeFrame f = te_frame(coords, def, s);
-    const std::string name = "te_slot_" + numbered(++slot_number, 2);
-    SlotInfo info;
-    info.name = name;
-    info.span = s;
-    info.origin = f.o;
-    info.x = f.x;
-    info.y = f.y;
-    info.z = f.z;
-    info.height = te.slot_height;
-    info.width = te.slot_width;
-    info.x_end = f.te_x + 1.0;
-    const double w = te.slot_width;
-    if (cutback) {
-      info.x_lip = f.te_x - te.cutback_length;
-      check_lip(te, f, s);
-      const Across b = across(lines, f, info.x_lip, 0.0, true);
-      if (!b.ok) throw FeatureFailure(name + ": cannot find the blade's pressure side at the lip");
-      info.floor_y = b.hi - te.lip_thickness - te.slot_height;
-      // Suction-side wall left under the floor, from the lip to 1 mm before the TE.
-      for (int k = 0; k <= 8; ++k) {
-        const double x = info.x_lip + (f.te_x - 1.0 - info.x_lip) * k / 8.0;
-        const Across c = across(lines, f, x, 0.0, true);
-        if (!c.ok || info.floor_y - c.lo < 0.1)
-          throw PassageInputError(field("slot_height"),
-                                  name + ": slot_height + lip_thickness leave " + format_number(c.ok ? info.floor_y - c.lo : 0.0) +
-                                      " mm of suction-side wall under the cutback at span " + format_number(s) +
-                                      " (at least 0.1 mm); must be <= " + format_number(b.hi - b.lo - 0.1) + " mm together here");
-      }
-    } else {
-      info.x_lip = f.te_x;
-      info.floor_y = -0.5 * te.slot_height;
-      // At least 0.1 mm of wall on both sides of the slot over the first half of the way from the crease
-      // to the TE (the blade's flanks; the second half holds the TE's rounding, through which the slot
-      // leaves the blade).
-      double h_max = HUGE_VAL;
-      for (int k = 0; k <= 4; ++k) {
-        const double x = f.crease_x + 0.5 * (f.te_x - f.crease_x) * k / 4.0;
-        const Across c = across(lines, f, x, 0.0, true);
-        if (!c.ok) throw FeatureFailure(name + ": cannot find the blade's walls across the slot");
-        h_max = std::min(h_max, 2 * (std::min(-c.lo, c.hi) - 0.1));
-      }
-      if (!(te.slot_height <= h_max))
-        throw PassageInputError(field("slot_height"), name + ": the slot leaves less than 0.1 mm of wall on a side between "
-                                                             "the chamber's end and the TE at span " + format_number(s) +
-                                                             "; must be <= " + format_number(std::max(h_max, 0.0)) +
-                                                             " mm here, got " + format_number(te.slot_height));
-    }
-    const double y0 = info.floor_y, y1 = y0 + te.slot_height, h = te.slot_height;
-    // Centreline: each land side turns by land_taper_deg from the crease (x = 0, slot width w) on, so
-    // the slot narrows towards the TE (and widens upstream, inside the chamber).
-    const double slot_taper = cutback ? 0.0 : taper;
-    const Inlet in = inlet_station(lines, f, f.crease_x, y0, h, w, slot_taper, cutback);
-    if (std::isnan(in.x))
-      throw PassageInputError(field("slot_height"), name + " does not fit into the last chamber at span " + format_number(s) +
-                                                         ": no station where the chamber holds its inlet (" + format_number(h) +
-                                                         " x " + format_number(w) + " mm, 0.05 mm clear)");
-    info.x_inlet = in.x;
-    inlet_x_min = std::min(inlet_x_min, in.x);
-    // Channel: from the inlet face in the chamber (centred in it for a cutback) straight to the slot's
-    // exit face under the lip (cutback) or past the TE (centreline).
-    const double xc = cutback ? info.x_lip : info.x_end;
-    const double w_in = w - 2 * in.x * slot_taper, w_out = w - 2 * xc * slot_taper;
-    if (!cutback) check_centreline_widths(te, name, s, pitch, count, in.x, xc, w_in, w_out);
-    const RuledBlock channel{bilinear_patch(f.at(in.x, in.y, -0.5 * w_in), f.at(in.x, in.y + h, -0.5 * w_in),
-                                            f.at(in.x, in.y, 0.5 * w_in), f.at(in.x, in.y + h, 0.5 * w_in)),
-                             bilinear_patch(f.at(xc, y0, -0.5 * w_out), f.at(xc, y1, -0.5 * w_out),
-                                            f.at(xc, y0, 0.5 * w_out), f.at(xc, y1, 0.5 * w_out))};
-    // The line of the channel through the crease (the inner wall's C0 edge) is a kink of the integrand.
-    const double lc = (f.crease_x - in.x) / (xc - in.x);
-    const double y_crease = (blade::inner_wall_crease(coords, def.wall_thickness, s).crease - f.o).dot(f.y);
-    const double a_crease = (y_crease - in.y - lc * (y0 - in.y)) / h;
-    const BlockIntegral vc = integrate_block(channel, lines, Region::Chamber, Region::Material,
-                                             cutback ? Region::Material : Region::Outside,
-                                             {kCellsChannel, kCellsChannel, {a_crease}, true});
-    if (!vc.ok)
-      throw PassageInputError(field("slot_height"), name + " at span " + format_number(s) + " does not run from the chamber through "
-                                                         "the wall as placed (a line of it leaves the blade early)");
-    brep::NamedShape tool = ruled_block_solid(channel, name);
-    double expected = vc.in_region, tool_volume = vc.volume;
-    if (cutback) {
-      // Everything above the floor from the lip to past the TE, between the tapered lands. Lines run from
-      // the block's end face past the TE (outside) back to the lip: each enters the blade once through
-      // the pressure side or the TE, so its length in the material is smooth in (y, z) up to the height
-      // of the pressure surface at the lip, where it drops to zero (a kink: a break of the quadrature).
-      // (Lines across the floor would graze the TE's rounding, a square-root singularity.)
-      const double we = w - 2 * (info.x_end - info.x_lip) * taper;
-      // The block's top at each side z = -+w/2 lies so that the pressure surface at the lip is at the
-      // same fraction kLip of its height on both sides: the kink is then (to the surface's curvature
-      // across the slot) on one parameter line, a break of the quadrature.
-      constexpr double kLip = 0.75;
-      double top[2];
-      for (int k = 0; k < 2; ++k) {
-        const Across a = across(lines, f, info.x_lip, (k ? 0.5 : -0.5) * w, true);
-        if (!a.ok) throw FeatureFailure(name + ": cannot find the blade's pressure side at the lip");
-        top[k] = y0 + (a.hi - y0) / kLip;
-      }
-      const RuledBlock cut{bilinear_patch(f.at(info.x_end, y0, -0.5 * we), f.at(info.x_end, top[0], -0.5 * we),
-                                          f.at(info.x_end, y0, 0.5 * we), f.at(info.x_end, top[1], 0.5 * we)),
-                           bilinear_patch(f.at(info.x_lip, y0, -0.5 * w), f.at(info.x_lip, top[0], -0.5 * w),
-                                          f.at(info.x_lip, y0, 0.5 * w), f.at(info.x_lip, top[1], 0.5 * w))};
-      const double a_lip = kLip;
-      const BlockIntegral vb = integrate_block(cut, lines, Region::Outside, Region::Material, Region::Any,
-                                               {kCellsCutback, 2, {a_lip}, false});
-      const brep::NamedShape cut_solid = ruled_block_solid(cut, name);
-      BRepAlgoAPI_Fuse fuse(tool.shape, cut_solid.shape);
-      if (!fuse.IsDone() || fuse.HasErrors()) throw FeatureFailure(name + ": joining the channel and the cutback failed");
-      ShapeUpgrade_UnifySameDomain unify(fuse.Shape(), true, true, false);
-      unify.Build();
-      const std::vector<TopoDS_Shape> solids = solids_of(unify.Shape());
-      if (solids.size() != 1) throw FeatureFailure(name + ": channel and cutback do not form one solid");
-      tool.shape = solids.front();
-      tool.faces.clear();
-      for (const TopoDS_Shape& face : faces_of(tool.shape)) tool.faces.push_back({TopoDS::Face(face), name});
-      expected += vb.in_region;
-      tool_volume += vb.volume;
-    }
-    construction_volumes.push_back(tool_volume);  // checked below, all slots at once on both cores
-    info.removed_volume = expected;
-    FeatureTool ft;
-    ft.feature = name;
-    ft.shape = tool;
-    ft.expected_volume = expected;
-    out.slot_tools.push_back(ft);
-    out.slots.push_back(info);
-  }
-
-  // Each slot tool's B-rep volume against its construction (volume_of, accurate to 1e-7, against the volume
-  // checks' 1e-6 tolerance; independent per slot).
-  std::vector<char> volume_ok(out.slot_tools.size(), 1);
-  OSD_Parallel::For(0, static_cast<int>(out.slot_tools.size()), [&](int k) {
-    const double v = construction_volumes[static_cast<std::size_t>(k)];
-    volume_ok[static_cast<std::size_t>(k)] =
-        std::abs(volume_of(out.slot_tools[static_cast<std::size_t>(k)].shape.shape) - v) <= 1e-6 * v + 1e-9;
-  });
-  for (std::size_t k = 0; k < volume_ok.size(); ++k)
-    if (!volume_ok[k]) throw FeatureFailure(out.slot_tools[k].feature + ": the tool solid's volume differs from its construction");
-
-  // Pin fins: staggered rows upstream of the slots' inlets.
-  if (te.pin_fins) {
-    const PinFinDefinition& pf = *te.pin_fins;
-    const RibDefinition* last_rib = def.ribs.empty() ? nullptr : &def.ribs.back();
-    const double r = 0.5 * pf.diameter;
-    const double plo = r, phi = line.length() - r;
-    int number = 0;
-    const int n_even = static_cast<int>(std::floor((phi - plo) / pf.spanwise_pitch + 1e-9)) + 1;
-    const std::vector<double> even = centred(plo, phi, pf.spanwise_pitch, n_even);
-    for (int row = 0; row < pf.rows; ++row) {
-      std::vector<double> at;  // odd rows: shifted by half the pitch (staggered), as many as fit
-      for (double y : even)
-        if (!(row % 2)) at.push_back(y);
-        else if (y + 0.5 * pf.spanwise_pitch <= phi) at.push_back(y + 0.5 * pf.spanwise_pitch);
-      for (double yc : at) {
-        const double s = line.span_at(yc);
-        const TeFrame f = te_frame(coords, def, s);
-        const std::string name = "pin_fin_" + numbered(++number, 3);
-        // Row station: upstream of the slots' inlets (the most upstream one, in this frame).
-        const double x = inlet_x_min - pf.slot_gap - r - row * pf.streamwise_pitch;
-        if (last_rib) {
-          // Clear of the last rib and its fillets: the pin's line (across the blade at x) against the rib's
-          // mid-line between its wall points at this span.
-          const Vec3 ra = blade::inner_wall_point(coords, def.wall_thickness, s, last_rib->suction_chord);
-          const Vec3 rb = blade::inner_wall_point(coords, def.wall_thickness, s, last_rib->pressure_chord);
-          const double need = r + 0.5 * last_rib->thickness + last_rib->fillet_radius + 0.1;
-          if (segment_distance(f.at(x, -20.0, 0.0), f.at(x, 20.0, 0.0), ra, rb) < need)
-            throw PassageInputError(field("pin_fins.rows"),
-                                    name + " (row " + std::to_string(row + 1) + ") reaches rib " +
-                                        std::to_string(def.ribs.size()) + " and its fillet at span " + format_number(s) +
-                                        ": fewer rows, a smaller streamwise_pitch or slot_gap");
-        }
-        const Across c = across(lines, f, x, 0.0, false);
-        if (!c.ok) throw PassageInputError(field("pin_fins.rows"), name + ": no chamber across its axis at span " + format_number(s));
-        // Axis: across the chamber, the bisector of the two walls' normals (the walls of the TE chamber
-        // converge, so a pin along y would meet the pressure-side wall obliquely).
-        const Vec3 mid = f.at(x, 0.5 * (c.lo + c.hi), 0.0);
-        Vec3 n1 = lines.inner_normal(mid, f.at(x, -8.0, 0.0)), n2 = lines.inner_normal(mid, f.at(x, 8.0, 0.0));
-        if (n1.dot(f.y) < 0) n1 = -n1;
-        if (n2.dot(f.y) < 0) n2 = -n2;
-        const Vec3 axis = (n1 + n2).normalized();
-        const std::vector<double> hits = lines.inner_crossings(mid - 8.0 * axis, mid + 8.0 * axis);
-        if (hits.size() != 2) throw PassageInputError(field("pin_fins.rows"), name + ": no chamber across its axis at span " + format_number(s));
-        const double lo_a = -8.0 + 16.0 * hits[0], hi_a = -8.0 + 16.0 * hits[1];
-        const double t = def.wall_thickness.min_value();
-        const Vec3 base = mid + (lo_a - 0.5 * t) * axis;
-        const double length = hi_a - lo_a + t;
-        const Vec3 e1 = f.z.cross(axis).normalized(), e2 = axis.cross(e1);
-        const double added = disc_integral(r, [&](double rho, double phi_) {
-          const Vec3 off = rho * (std::cos(phi_) * e1 + std::sin(phi_) * e2);
-          Region end;
-          const double frac = total(lines.intervals(base + off, base + off + length * axis, Region::Material,
-                                                    Region::Chamber, &end));
-          if (end != Region::Material)
-            throw PassageInputError(field("pin_fins.diameter"), name + " at span " + format_number(s) + " does not end inside "
-                                                                       "both walls (diameter too large for the chamber "
-                                                                       "there)");
-          return frac * length;
-        });
-        BRepPrimAPI_MakeCylinder cyl(gp_Ax2(gp_Pnt(base.x(), base.y(), base.z()), gp_Dir(axis.x(), axis.y(), axis.z())), r,
-                                     length);
-        cyl.Build();
-        if (!cyl.IsDone()) throw FeatureFailure(name + ": cannot make its cylinder");
-        FeatureTool ft;
-        ft.feature = name;
-        ft.shape.shape = cyl.Shape();
-        for (const TopoDS_Shape& face : faces_of(cyl.Shape())) ft.shape.faces.push_back({TopoDS::Face(face), name});
-        ft.expected_volume = added;
-        PinInfo info;
-        info.name = name;
-        info.span = s;
-        info.row = row;
-        info.base = base;
-        info.axis = axis;
-        info.length = length;
-        info.diameter = pf.diameter;
-        info.chamber_length = hi_a - lo_a;
-        info.added_volume = added;
-        out.pin_tools.push_back(ft);
-        out.pins.push_back(info);
-      }
-    }
-  }
+  for (double s : layout.spans)
+    build_slot("te_slot_" + numbered(++slot_number, 2), s, te, coords, def, layout, lines, out, inlet_x_min,
+               construction_volumes);
+  check_slot_volumes(out, construction_volumes);
+  if (te.pin_fins) build_pin_fins(*te.pin_fins, coords, def, layout.line, lines, inlet_x_min, out);
   return out;
 }
 

@@ -99,6 +99,218 @@ void check_turbulator_definitions(const CoreDefinition& def) {
   }
 }
 
+namespace {
+
+// The spans of one definition's turbulators on the inline and on the shifted (staggered) wall.
+struct RowSpans {
+  std::vector<double> inline_spans, shifted_spans;
+};
+
+// Span range of the chamber's straight part on the first wall's mid line (iso-chord line), and the
+// turbulators spread along it at their pitch.
+RowSpans turbulator_spans(std::size_t i, const TurbulatorDefinition& td, const WallSide& first, const RibDefinition& ra,
+                          const RibDefinition& rb, const blade::BladeCoordinates& coords, const CoreDefinition& def,
+                          const EndWall& hub, const EndWall& tip) {
+  const double sin_a = std::sin(td.angle_deg * kPi / 180), cot_a = std::cos(td.angle_deg * kPi / 180) / sin_a;
+  const double cm = first.chord_mid();
+  auto mid_point = [&](double s) { return blade::inner_wall_point(coords, def.wall_thickness, s, cm); };
+  auto end_clearance = [&](SpanEnd end) {
+    double d = td.span_margin;
+    for (const RibDefinition* r : {first.rib_from, first.rib_to})
+      if (r->turnaround && r->turnaround->end == end)
+        d = std::max(d, td.span_margin + r->turnaround->gap + 0.5 * r->thickness + r->fillet_radius);
+    return d;
+  };
+  const double d_hub = end_clearance(SpanEnd::Hub), d_tip = end_clearance(SpanEnd::Tip);
+  const double s_lo = bisect([&](double s) { return hub.signed_distance(mid_point(s)) - d_hub; }, 0.0, 1.0, 30);
+  const double s_hi = bisect([&](double s) { return tip.signed_distance(mid_point(s)) - d_tip; }, 0.0, 1.0, 30);
+  // Arc length along the mid line (polygon of 48 chords: the line is nearly straight).
+  const int ns = 48;
+  std::vector<double> sv(ns + 1), len(ns + 1, 0.0);
+  Vec3 prev;
+  for (int j = 0; j <= ns; ++j) {
+    sv[j] = s_lo + (s_hi - s_lo) * j / ns;
+    const Vec3 p = mid_point(sv[j]);
+    if (j > 0) len[j] = len[j - 1] + (p - prev).norm();
+    prev = p;
+  }
+  auto span_at = [&](double y) {
+    int j = 0;
+    while (j < ns - 1 && len[j + 1] < y) ++j;
+    return sv[j] + (sv[j + 1] - sv[j]) * (y - len[j]) / (len[j + 1] - len[j]);
+  };
+  // Turbulator length across the wall at mid-span (for its extent along the axis).
+  const double s_mid = 0.5 * (s_lo + s_hi);
+  const double wall_width = (blade::inner_wall_point(coords, def.wall_thickness, s_mid, first.chord_to) -
+                             blade::inner_wall_point(coords, def.wall_thickness, s_mid, first.chord_from)).norm();
+  const double clear_a = 0.5 * ra.thickness + ra.fillet_radius + td.end_gap;
+  const double clear_b = 0.5 * rb.thickness + rb.fillet_radius + td.end_gap;
+  const double length_mid = wall_width - clear_a - clear_b;
+  if (!(length_mid > td.width))
+    throw PassageInputError(field(i, "end_gap"), "no turbulator fits across chamber " + std::to_string(td.chamber) +
+                                                     ": the wall between the rib fillets is " +
+                                                     format_number(wall_width - clear_a - clear_b + 2 * td.end_gap) +
+                                                     " mm wide at mid-span");
+  const double half_extent = 0.5 * length_mid * std::abs(cot_a) + 0.5 * td.width / sin_a;
+  const double available = len[ns] - 2 * half_extent;
+  if (available < 0)
+    throw PassageInputError(field(i, "span_margin"),
+                            "no turbulator fits in chamber " + std::to_string(td.chamber) + " between the end walls: " +
+                                format_number(len[ns]) + " mm of straight passage, one turbulator needs " + format_number(2 * half_extent) + " mm");
+  const int n = static_cast<int>(std::floor(available / td.pitch + 1e-9)) + 1;
+  const double y0 = half_extent + 0.5 * (available - (n - 1) * td.pitch);
+  RowSpans out;
+  for (int j = 0; j < n; ++j) out.inline_spans.push_back(span_at(y0 + j * td.pitch));
+  for (int j = 0; j + 1 < n; ++j) out.shifted_spans.push_back(span_at(y0 + (j + 0.5) * td.pitch));
+  return out;
+}
+
+// Local development of the inner wall at the centre: x chordwise (LE side -> TE side), y along the
+// passage axis (hub -> tip), mm -> outer-surface parameters (u, v) by the inverse metric.
+struct WallDevelopment {
+  blade::BladeFrame fc;
+  double t = 0;  // wall thickness at the centre
+  Vec3 ra_pt, rb_pt, centre, nrm, e1, e2;
+  Eigen::Matrix<double, 3, 2> J;
+  Eigen::Matrix2d G;
+  Eigen::Vector2d params(double x, double y) const {
+    return Eigen::Vector2d(fc.u, fc.v) + G.ldlt().solve(J.transpose() * (x * e1 + y * e2));
+  }
+};
+
+WallDevelopment develop_wall(const blade::BladeCoordinates& coords, const CoreDefinition& def, const OffsetWall& wall,
+                             const WallSide& side, double s) {
+  WallDevelopment d;
+  d.fc = coords.frame(s, side.chord_mid());
+  const blade::BladeFrame& fc = d.fc;
+  const double t = d.t = def.wall_thickness.at(s, side.chord_mid());
+  d.ra_pt = blade::inner_wall_point(coords, def.wall_thickness, s, side.chord_from);
+  d.rb_pt = blade::inner_wall_point(coords, def.wall_thickness, s, side.chord_to);
+  const double h = 1e-5;
+  const Vec3 Iu = (wall.point(fc.u + h, fc.v, t) - wall.point(fc.u - h, fc.v, t)) / (2 * h);
+  const Vec3 Iv = (wall.point(fc.u, fc.v + h, t) - wall.point(fc.u, fc.v - h, t)) / (2 * h);
+  d.centre = wall.point(fc.u, fc.v, t);
+  Vec3 e1 = (d.rb_pt - d.ra_pt);
+  d.nrm = wall.normal(fc.u, fc.v);
+  e1 = (e1 - e1.dot(d.nrm) * d.nrm).normalized();
+  Vec3 e2 = d.nrm.cross(e1);
+  if (e2.dot(Iv) < 0) e2 = -e2;
+  d.e1 = e1;
+  d.e2 = e2;
+  d.J << Iu, Iv;
+  d.G = d.J.transpose() * d.J;
+  return d;
+}
+
+// Each end lies `clearance` from the rib's mid-surface (distance normal to it, measured on the
+// wall point of the centre line): an inclined rib's foot and its fillet reach further on the acute
+// side, (thickness / 2) / sin(b) + r cot(b / 2) + end_gap, b the acute rib/wall angle. The end's x
+// next to rib r (foot: its wall point), NaN without room.
+double turbulator_end(const WallDevelopment& wd, const RibDefinition& r, const Vec3& foot, double s, double cot_a,
+                      const TurbulatorDefinition& td, const blade::BladeCoordinates& coords, const CoreDefinition& def,
+                      const OffsetWall& wall) {
+  const double xm0 = 0.0;
+  const Vec3 across = (blade::inner_wall_point(coords, def.wall_thickness, s, r.suction_chord) -
+                       blade::inner_wall_point(coords, def.wall_thickness, s, r.pressure_chord)).normalized();
+  const double beta = 0.5 * kPi - std::acos(std::min(1.0, std::abs(across.dot(wd.nrm))));
+  const double clear = 0.5 * r.thickness / std::sin(beta) + r.fillet_radius / std::tan(0.5 * beta) + td.end_gap;
+  const Vec3 plane_n = across.cross(wd.e2).normalized();
+  auto gap = [&](double x) {
+    const Eigen::Vector2d uv = wd.params(x, (x - xm0) * cot_a);
+    return std::abs((wall.point(uv.x(), uv.y(), wd.t) - foot).dot(plane_n)) - clear;
+  };
+  const double x_foot = (foot - wd.centre).dot(wd.e1);
+  if (gap(0.0) <= 0) return std::nan("");
+  return bisect(gap, x_foot, 0.0, 40);
+}
+
+// 13 x 3 grid between the ends xa, xb (centre xm): top at depth t + e, bottom at depth t / 2.
+RuledBlock turbulator_block(const WallDevelopment& wd, double xa, double xb, double xm, double cot_a, double sin_a,
+                            const TurbulatorDefinition& td, const OffsetWall& wall) {
+  const double t = wd.t;
+  const int nx = 13, ny = 3;
+  std::vector<double> px(nx), py{0.0, 0.5, 1.0};
+  for (int a = 0; a < nx; ++a) px[a] = static_cast<double>(a) / (nx - 1);
+  std::vector<BSplineCurve<3>> top_rows, bottom_rows;
+  for (int b = 0; b < ny; ++b) {
+    PointList<3> top, bottom;
+    for (int a = 0; a < nx; ++a) {
+      const double x = xa + (xb - xa) * px[a];
+      const double y = (x - xm) * cot_a + (py[b] - 0.5) * td.width / sin_a;
+      const Eigen::Vector2d uv = wd.params(x, y);
+      top.push_back(wall.point(uv.x(), uv.y(), t + td.height));
+      bottom.push_back(wall.point(uv.x(), uv.y(), 0.5 * t));
+    }
+    const std::vector<double> knots = averaged_knots(px, 3);
+    top_rows.push_back(interpolate<3>(top, 3, px, knots));
+    bottom_rows.push_back(interpolate<3>(bottom, 3, px, knots));
+  }
+  SkinOptions so;
+  so.degree_v = 2;
+  so.v_params = py;
+  return RuledBlock{skin(bottom_rows, so).surface, skin(top_rows, so).surface};
+}
+
+// One turbulator `name` of definition i on `side` at span s (other_height: that of the opposite
+// wall's turbulators, 0 without): its ends, block, height check, tool and info in `out`.
+void build_turbulator(const std::string& name, std::size_t i, const TurbulatorDefinition& td, const WallSide& side, double s,
+                      double other_height, const blade::BladeCoordinates& coords, const CoreDefinition& def,
+                      const OffsetWall& wall, WallLines& lines, TurbulatorBuild& out) {
+  const std::size_t k = static_cast<std::size_t>(td.chamber);  // ribs k-2 (LE side) and k-1 (TE side)
+  const RibDefinition& ra = def.ribs[k - 2];
+  const RibDefinition& rb = def.ribs[k - 1];
+  const double sin_a = std::sin(td.angle_deg * kPi / 180), cot_a = std::cos(td.angle_deg * kPi / 180) / sin_a;
+  const WallDevelopment wd = develop_wall(coords, def, wall, side, s);
+  const double t = wd.t;
+  const double xa = turbulator_end(wd, ra, wd.ra_pt, s, cot_a, td, coords, def, wall);
+  const double xb = turbulator_end(wd, rb, wd.rb_pt, s, cot_a, td, coords, def, wall);
+  if (std::isnan(xa) || std::isnan(xb))
+    throw PassageInputError(field(i, "end_gap"), name + ": no room between the rib fillets at span " + format_number(s));
+  if (!(xb - xa > td.width))
+    throw PassageInputError(field(i, "end_gap"), name + ": no room between the rib fillets at span " + format_number(s));
+  const double xm = 0.5 * (xa + xb);
+  RuledBlock block = turbulator_block(wd, xa, xb, xm, cot_a, sin_a, td, wall);
+  // Taller than the chamber: the clear height above the top, from its centre line, must leave room
+  // for the opposite wall's turbulators and 0.1 mm.
+  for (double x : {xa, xm, xb}) {
+    const Eigen::Vector2d uv = wd.params(x, (x - xm) * cot_a);
+    const Vec3 top = wall.point(uv.x(), uv.y(), t + td.height);
+    const Vec3 far = top - 50.0 * wall.normal(uv.x(), uv.y());
+    const std::vector<double> hits = lines.inner_crossings(top, far);
+    const double clear = hits.empty() ? 0.0 : 50.0 * hits.front();
+    if (hits.empty() || clear < other_height + 0.1)
+      throw PassageInputError(field(i, "height"),
+                              name + " is taller than its chamber at span " + format_number(s) + ": " + format_number(clear + td.height) +
+                                  " mm from the wall to the opposite wall, the turbulators need " +
+                                  format_number(td.height + other_height) + " mm and 0.1 mm clear; height must be < " +
+                                  format_number(0.5 * (clear + td.height - 0.1)) + " mm here");
+  }
+  const BlockIntegral vi = integrate_block(block, lines, Region::Material, Region::Chamber, Region::Chamber);
+  if (!vi.ok)
+    throw PassageInputError(field(i, "height"), name + " does not stand on the chamber wall as placed (its top "
+                                                       "leaves the chamber); reduce the height or move it");
+  FeatureTool tool;
+  tool.feature = name;
+  tool.shape = ruled_block_solid(block, name);
+  tool.expected_volume = vi.in_region;
+  TurbulatorInfo info;
+  info.name = name;
+  info.chamber = td.chamber;
+  info.definition = static_cast<int>(i);
+  info.suction = side.suction;
+  info.span = s;
+  info.centre = wall.point(wd.fc.u, wd.fc.v, t + td.height);
+  info.normal = wd.nrm;
+  info.height = td.height;
+  info.width = td.width;
+  info.length = (xb - xa) / sin_a;
+  info.added_volume = vi.in_region;
+  out.turbulators.push_back(info);
+  out.tools.push_back(std::move(tool));
+}
+
+}  // namespace
+
 TurbulatorBuild build_turbulators(const blade::BladeModel& model, const CoreDefinition& def, const CoreBuild& core,
                                   WallLines& lines) {
   check_turbulator_definitions(def);
@@ -117,172 +329,14 @@ TurbulatorBuild build_turbulators(const blade::BladeModel& model, const CoreDefi
     std::vector<WallSide> sides;
     if (td.walls != TurbulatorWalls::Pressure) sides.push_back({true, ra.suction_chord, rb.suction_chord, &ra, &rb});
     if (td.walls != TurbulatorWalls::Suction) sides.push_back({false, ra.pressure_chord, rb.pressure_chord, &ra, &rb});
-    const double sin_a = std::sin(td.angle_deg * kPi / 180), cot_a = std::cos(td.angle_deg * kPi / 180) / sin_a;
-
-    // Span range of the chamber's straight part on the first wall's mid line (iso-chord line).
-    const WallSide& first = sides.front();
-    const double cm = first.chord_mid();
-    auto mid_point = [&](double s) { return blade::inner_wall_point(coords, def.wall_thickness, s, cm); };
-    auto end_clearance = [&](SpanEnd end) {
-      double d = td.span_margin;
-      for (const RibDefinition* r : {first.rib_from, first.rib_to})
-        if (r->turnaround && r->turnaround->end == end)
-          d = std::max(d, td.span_margin + r->turnaround->gap + 0.5 * r->thickness + r->fillet_radius);
-      return d;
-    };
-    const double d_hub = end_clearance(SpanEnd::Hub), d_tip = end_clearance(SpanEnd::Tip);
-    const double s_lo = bisect([&](double s) { return hub.signed_distance(mid_point(s)) - d_hub; }, 0.0, 1.0, 30);
-    const double s_hi = bisect([&](double s) { return tip.signed_distance(mid_point(s)) - d_tip; }, 0.0, 1.0, 30);
-    // Arc length along the mid line (polygon of 48 chords: the line is nearly straight).
-    const int ns = 48;
-    std::vector<double> sv(ns + 1), len(ns + 1, 0.0);
-    Vec3 prev;
-    for (int j = 0; j <= ns; ++j) {
-      sv[j] = s_lo + (s_hi - s_lo) * j / ns;
-      const Vec3 p = mid_point(sv[j]);
-      if (j > 0) len[j] = len[j - 1] + (p - prev).norm();
-      prev = p;
-    }
-    auto span_at = [&](double y) {
-      int j = 0;
-      while (j < ns - 1 && len[j + 1] < y) ++j;
-      return sv[j] + (sv[j + 1] - sv[j]) * (y - len[j]) / (len[j + 1] - len[j]);
-    };
-    // Turbulator length across the wall at mid-span (for its extent along the axis).
-    const double s_mid = 0.5 * (s_lo + s_hi);
-    const double wall_width = (blade::inner_wall_point(coords, def.wall_thickness, s_mid, first.chord_to) -
-                               blade::inner_wall_point(coords, def.wall_thickness, s_mid, first.chord_from)).norm();
-    const double clear_a = 0.5 * ra.thickness + ra.fillet_radius + td.end_gap;
-    const double clear_b = 0.5 * rb.thickness + rb.fillet_radius + td.end_gap;
-    const double length_mid = wall_width - clear_a - clear_b;
-    if (!(length_mid > td.width))
-      throw PassageInputError(field(i, "end_gap"), "no turbulator fits across chamber " + std::to_string(td.chamber) +
-                                                       ": the wall between the rib fillets is " +
-                                                       format_number(wall_width - clear_a - clear_b + 2 * td.end_gap) +
-                                                       " mm wide at mid-span");
-    const double half_extent = 0.5 * length_mid * std::abs(cot_a) + 0.5 * td.width / sin_a;
-    const double available = len[ns] - 2 * half_extent;
-    if (available < 0)
-      throw PassageInputError(field(i, "span_margin"),
-                              "no turbulator fits in chamber " + std::to_string(td.chamber) + " between the end walls: " +
-                                  format_number(len[ns]) + " mm of straight passage, one turbulator needs " + format_number(2 * half_extent) + " mm");
-    const int n = static_cast<int>(std::floor(available / td.pitch + 1e-9)) + 1;
-    const double y0 = half_extent + 0.5 * (available - (n - 1) * td.pitch);
-    std::vector<double> spans_inline, spans_shifted;
-    for (int j = 0; j < n; ++j) spans_inline.push_back(span_at(y0 + j * td.pitch));
-    for (int j = 0; j + 1 < n; ++j) spans_shifted.push_back(span_at(y0 + (j + 0.5) * td.pitch));
-
+    const RowSpans spans = turbulator_spans(i, td, sides.front(), ra, rb, coords, def, hub, tip);
     int number = 0;
     for (const WallSide& side : sides) {
       const bool shifted = td.staggered && !side.suction && sides.size() == 2;
       const double other_height = sides.size() == 2 ? td.height : 0.0;
-      for (double s : shifted ? spans_shifted : spans_inline) {
-        const std::string name = "turbulator_" + std::to_string(td.chamber) + "_" + number3(++number);
-        // Local development of the inner wall at the centre: x chordwise (LE side -> TE side), y along the
-        // passage axis (hub -> tip), mm -> outer-surface parameters (u, v) by the inverse metric.
-        const blade::BladeFrame fc = coords.frame(s, side.chord_mid());
-        const double t = def.wall_thickness.at(s, side.chord_mid());
-        const Vec3 ra_pt = blade::inner_wall_point(coords, def.wall_thickness, s, side.chord_from);
-        const Vec3 rb_pt = blade::inner_wall_point(coords, def.wall_thickness, s, side.chord_to);
-        const double h = 1e-5;
-        const Vec3 Iu = (wall.point(fc.u + h, fc.v, t) - wall.point(fc.u - h, fc.v, t)) / (2 * h);
-        const Vec3 Iv = (wall.point(fc.u, fc.v + h, t) - wall.point(fc.u, fc.v - h, t)) / (2 * h);
-        const Vec3 centre = wall.point(fc.u, fc.v, t);
-        Vec3 e1 = (rb_pt - ra_pt);
-        const Vec3 nrm = wall.normal(fc.u, fc.v);
-        e1 = (e1 - e1.dot(nrm) * nrm).normalized();
-        Vec3 e2 = nrm.cross(e1);
-        if (e2.dot(Iv) < 0) e2 = -e2;
-        Eigen::Matrix<double, 3, 2> J;
-        J << Iu, Iv;
-        const Eigen::Matrix2d G = J.transpose() * J;
-        auto params = [&](double x, double y) -> Eigen::Vector2d {
-          return Eigen::Vector2d(fc.u, fc.v) + G.ldlt().solve(J.transpose() * (x * e1 + y * e2));
-        };
-        // Each end lies `clearance` from the rib's mid-surface (distance normal to it, measured on the
-        // wall point of the centre line): an inclined rib's foot and its fillet reach further on the acute
-        // side, (thickness / 2) / sin(b) + r cot(b / 2) + end_gap, b the acute rib/wall angle.
-        const double xm0 = 0.0;
-        auto end_at = [&](const RibDefinition& r, const Vec3& foot) {
-          const Vec3 across = (blade::inner_wall_point(coords, def.wall_thickness, s, r.suction_chord) -
-                               blade::inner_wall_point(coords, def.wall_thickness, s, r.pressure_chord)).normalized();
-          const double beta = 0.5 * kPi - std::acos(std::min(1.0, std::abs(across.dot(nrm))));
-          const double clear = 0.5 * r.thickness / std::sin(beta) + r.fillet_radius / std::tan(0.5 * beta) + td.end_gap;
-          const Vec3 plane_n = across.cross(e2).normalized();
-          auto gap = [&](double x) {
-            const Eigen::Vector2d uv = params(x, (x - xm0) * cot_a);
-            return std::abs((wall.point(uv.x(), uv.y(), t) - foot).dot(plane_n)) - clear;
-          };
-          const double x_foot = (foot - centre).dot(e1);
-          if (gap(0.0) <= 0) return std::nan("");
-          return bisect(gap, x_foot, 0.0, 40);
-        };
-        const double xa = end_at(ra, ra_pt), xb = end_at(rb, rb_pt);
-        if (std::isnan(xa) || std::isnan(xb))
-          throw PassageInputError(field(i, "end_gap"), name + ": no room between the rib fillets at span " + format_number(s));
-        if (!(xb - xa > td.width))
-          throw PassageInputError(field(i, "end_gap"), name + ": no room between the rib fillets at span " + format_number(s));
-        const double xm = 0.5 * (xa + xb);
-        // 13 x 3 grid: top at depth t + e, bottom at depth t / 2.
-        const int nx = 13, ny = 3;
-        std::vector<double> px(nx), py{0.0, 0.5, 1.0};
-        for (int a = 0; a < nx; ++a) px[a] = static_cast<double>(a) / (nx - 1);
-        std::vector<BSplineCurve<3>> top_rows, bottom_rows;
-        for (int b = 0; b < ny; ++b) {
-          PointList<3> top, bottom;
-          for (int a = 0; a < nx; ++a) {
-            const double x = xa + (xb - xa) * px[a];
-            const double y = (x - xm) * cot_a + (py[b] - 0.5) * td.width / sin_a;
-            const Eigen::Vector2d uv = params(x, y);
-            top.push_back(wall.point(uv.x(), uv.y(), t + td.height));
-            bottom.push_back(wall.point(uv.x(), uv.y(), 0.5 * t));
-          }
-          const std::vector<double> knots = averaged_knots(px, 3);
-          top_rows.push_back(interpolate<3>(top, 3, px, knots));
-          bottom_rows.push_back(interpolate<3>(bottom, 3, px, knots));
-        }
-        SkinOptions so;
-        so.degree_v = 2;
-        so.v_params = py;
-        RuledBlock block{skin(bottom_rows, so).surface, skin(top_rows, so).surface};
-        // Taller than the chamber: the clear height above the top, from its centre line, must leave room
-        // for the opposite wall's turbulators and 0.1 mm.
-        for (double x : {xa, xm, xb}) {
-          const Eigen::Vector2d uv = params(x, (x - xm) * cot_a);
-          const Vec3 top = wall.point(uv.x(), uv.y(), t + td.height);
-          const Vec3 far = top - 50.0 * wall.normal(uv.x(), uv.y());
-          const std::vector<double> hits = lines.inner_crossings(top, far);
-          const double clear = hits.empty() ? 0.0 : 50.0 * hits.front();
-          if (hits.empty() || clear < other_height + 0.1)
-            throw PassageInputError(field(i, "height"),
-                                    name + " is taller than its chamber at span " + format_number(s) + ": " + format_number(clear + td.height) +
-                                        " mm from the wall to the opposite wall, the turbulators need " +
-                                        format_number(td.height + other_height) + " mm and 0.1 mm clear; height must be < " +
-                                        format_number(0.5 * (clear + td.height - 0.1)) + " mm here");
-        }
-        const BlockIntegral vi = integrate_block(block, lines, Region::Material, Region::Chamber, Region::Chamber);
-        if (!vi.ok)
-          throw PassageInputError(field(i, "height"), name + " does not stand on the chamber wall as placed (its top "
-                                                             "leaves the chamber); reduce the height or move it");
-        FeatureTool tool;
-        tool.feature = name;
-        tool.shape = ruled_block_solid(block, name);
-        tool.expected_volume = vi.in_region;
-        TurbulatorInfo info;
-        info.name = name;
-        info.chamber = td.chamber;
-        info.definition = static_cast<int>(i);
-        info.suction = side.suction;
-        info.span = s;
-        info.centre = wall.point(fc.u, fc.v, t + td.height);
-        info.normal = nrm;
-        info.height = td.height;
-        info.width = td.width;
-        info.length = (xb - xa) / sin_a;
-        info.added_volume = vi.in_region;
-        out.turbulators.push_back(info);
-        out.tools.push_back(std::move(tool));
-      }
+      for (double s : shifted ? spans.shifted_spans : spans.inline_spans)
+        build_turbulator("turbulator_" + std::to_string(td.chamber) + "_" + number3(++number), i, td, side, s, other_height,
+                         coords, def, wall, lines, out);
     }
   }
   return out;

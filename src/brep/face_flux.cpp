@@ -363,22 +363,21 @@ void split_at_breaks(BoundaryEdge& e, const std::vector<double>& ub, const std::
   e.panels = std::move(kept);
 }
 
-}  // namespace
-
-FaceFlux face_volume_flux(const TopoDS_Face& face, const gp_Pnt& cp, double eps, StripDirection direction) {
-  if (face.NbChildren() == 0) return occt_flux(face, cp, eps);
-  const TopoDS_Face fwd = TopoDS::Face(face.Oriented(TopAbs_FORWARD));
-  const Handle(Geom_Surface) surface = BRep_Tool::Surface(fwd);
-  if (surface.IsNull()) return occt_flux(face, cp, eps);
-
-  // The boundary: pcurves in the forward face (material on the left), grouped by wire.
+// The boundary: pcurves in the forward face (material on the left), grouped by wire.
+struct FaceBoundary {
   std::vector<BoundaryEdge> edges;
   std::vector<bool> closed;  // per wire: its pcurves return to their start (not around a period)
   double range[2][2] = {{1e300, -1e300}, {1e300, -1e300}};
   std::vector<std::array<double, 4>> wire_box;  // per wire: x range in u and in v
+};
+
+// The boundary of the forward face `fwd`; false when this integration does not take it (a child that
+// is not a wire, an edge without a pcurve or not FORWARD / REVERSED, no edges): BRepGProp then.
+bool face_boundary(const TopoDS_Face& fwd, FaceBoundary& fb) {
+  std::vector<BoundaryEdge>& edges = fb.edges;
   int wire = 0;
   for (TopoDS_Iterator w(fwd); w.More(); w.Next(), ++wire) {
-    if (w.Value().ShapeType() != TopAbs_WIRE) return occt_flux(face, cp, eps);
+    if (w.Value().ShapeType() != TopAbs_WIRE) return false;
     Eigen::Vector2d sum(0, 0), extent(0, 0);
     bool wire_closed = true;
     std::array<double, 4> box{1e300, -1e300, 1e300, -1e300};
@@ -386,9 +385,9 @@ FaceFlux face_volume_flux(const TopoDS_Face& face, const gp_Pnt& cp, double eps,
       const TopoDS_Edge& edge = TopoDS::Edge(e.Current());
       BoundaryEdge be;
       be.curve = BRep_Tool::CurveOnSurface(edge, fwd, be.a, be.b);
-      if (be.curve.IsNull() || !(be.b > be.a)) return occt_flux(face, cp, eps);
+      if (be.curve.IsNull() || !(be.b > be.a)) return false;
       const TopAbs_Orientation o = edge.Orientation();
-      if (o != TopAbs_FORWARD && o != TopAbs_REVERSED) return occt_flux(face, cp, eps);
+      if (o != TopAbs_FORWARD && o != TopAbs_REVERSED) return false;
       be.sign = o == TopAbs_REVERSED ? -1 : 1;
       be.group = wire;
       if (BRep_Tool::Degenerated(edge) || BRep_Tool::IsClosed(edge, fwd)) wire_closed = false;
@@ -415,16 +414,19 @@ FaceFlux face_volume_flux(const TopoDS_Face& face, const gp_Pnt& cp, double eps,
       extent = extent.cwiseMax(step.cwiseAbs());
       edges.push_back(std::move(be));
     }
-    closed.push_back(wire_closed && sum.norm() <= 1e-6 * (1 + extent.norm()));
-    wire_box.push_back(box);
-    range[0][0] = std::min(range[0][0], box[0]);
-    range[0][1] = std::max(range[0][1], box[1]);
-    range[1][0] = std::min(range[1][0], box[2]);
-    range[1][1] = std::max(range[1][1], box[3]);
+    fb.closed.push_back(wire_closed && sum.norm() <= 1e-6 * (1 + extent.norm()));
+    fb.wire_box.push_back(box);
+    fb.range[0][0] = std::min(fb.range[0][0], box[0]);
+    fb.range[0][1] = std::max(fb.range[0][1], box[1]);
+    fb.range[1][0] = std::min(fb.range[1][0], box[2]);
+    fb.range[1][1] = std::max(fb.range[1][1], box[3]);
   }
-  if (edges.empty()) return occt_flux(face, cp, eps);
-  // Close every wire: each pcurve's end joins the nearest start of its wire (the wire's order is not
-  // needed; every start is some edge's successor).
+  return !edges.empty();
+}
+
+// Close every wire: each pcurve's end joins the nearest start of its wire (the wire's order is not
+// needed; every start is some edge's successor).
+std::vector<Gap> closing_gaps(const std::vector<BoundaryEdge>& edges) {
   std::vector<Gap> gaps;
   for (std::size_t i = 0; i < edges.size(); ++i) {
     std::size_t best = i;
@@ -439,9 +441,134 @@ FaceFlux face_volume_flux(const TopoDS_Face& face, const gp_Pnt& cp, double eps,
     }
     if (dmin > 0) gaps.push_back({edges[i].end, edges[best].start, edges[i].group});
   }
+  return gaps;
+}
+
+// Strip start per wire: its own middle if it is closed in the parameter plane, else the middle of
+// all the other wires together (their integrals only add up to the face's as a whole).
+std::vector<double> strip_starts(const FaceBoundary& fb, int d) {
+  const std::vector<bool>& closed = fb.closed;
+  std::vector<double> x0(closed.size());
+  double open_lo = 1e300, open_hi = -1e300;
+  for (std::size_t k = 0; k < closed.size(); ++k)
+    if (!closed[k]) {
+      open_lo = std::min(open_lo, fb.wire_box[k][2 * d]);
+      open_hi = std::max(open_hi, fb.wire_box[k][2 * d + 1]);
+    }
+  for (std::size_t k = 0; k < closed.size(); ++k)
+    x0[k] = closed[k] ? 0.5 * (fb.wire_box[k][2 * d] + fb.wire_box[k][2 * d + 1]) : 0.5 * (open_lo + open_hi);
+  return x0;
+}
+
+// f(t) = G(x(t), y(t)) y'(t) along an edge, by the 10-point rule on [t0, t1]. A face that needs more
+// than kMaxPanels panels (an integrand the rule cannot resolve) goes to BRepGProp instead.
+struct BoundaryPanels {
+  FaceSurface& S;
+  int d;  // strips in u (0) or in v (1)
+  const std::vector<double>& x0;
+  const Vec3& c;
+  const GaussRule& r;
+  int panels = 0;
+
+  double operator()(const BoundaryEdge& e, double t0, double t1, double* abs_sum) {
+    const double h = 0.5 * (t1 - t0), m = 0.5 * (t0 + t1);
+    if (++panels > kMaxPanels) throw std::runtime_error("face flux: panel budget exhausted");
+    double s = 0, sa = 0;
+    gp_Pnt2d q;
+    gp_Vec2d dq;
+    for (int j = 0; j < r.n; ++j) {
+      e.curve->D1(m + h * r.x[j], q, dq);
+      const double x = d == 0 ? q.X() : q.Y(), y = d == 0 ? q.Y() : q.X();
+      const double dy = d == 0 ? dq.Y() : dq.X();
+      if (dy == 0) continue;
+      double size = 0;
+      s += r.w[j] * S.strip(d, x0[static_cast<std::size_t>(e.group)], x, y, c, abs_sum ? &size : nullptr) * dy;
+      sa += r.w[j] * size * std::abs(dy);
+    }
+    if (abs_sum) *abs_sum = h * sa;
+    return h * s;
+  }
+};
+
+// The boundary integral over the edges (relative accuracy eps), its error estimate into out.error.
+double integrate_edges(BoundaryPanels& panel, const std::vector<BoundaryEdge>& edges, double eps, FaceFlux& out) {
+  // First pass: every initial panel, and the scale of the integral (the boundary integral of the
+  // strips' sizes: a face whose flux cancels to ~0, e.g. a plane through c, still has a finite target
+  // above the rounding level).
+  std::vector<std::vector<double>> whole(edges.size());
+  double scale = 0;
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    const BoundaryEdge& e = edges[i];
+    for (std::size_t k = 0; k + 1 < e.panels.size(); ++k) {
+      double a = 0;
+      whole[i].push_back(panel(e, e.panels[k], e.panels[k + 1], &a));
+      scale += a;
+    }
+  }
+  const double tol = eps * scale;
+  double total = 0;
+  // Adaptive: a panel is accepted when its halves agree with it to its share of the tolerance.
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    const BoundaryEdge& e = edges[i];
+    const double width = e.b - e.a, share = tol / static_cast<double>(edges.size());
+    struct Item {
+      double t0, t1, value;
+      int depth;
+    };
+    std::vector<Item> stack;
+    for (std::size_t k = 0; k + 1 < e.panels.size(); ++k) stack.push_back({e.panels[k], e.panels[k + 1], whole[i][k], 0});
+    double edge_sum = 0;
+    while (!stack.empty()) {
+      const Item it = stack.back();
+      stack.pop_back();
+      const double tm = 0.5 * (it.t0 + it.t1);
+      const double left = panel(e, it.t0, tm, nullptr), right = panel(e, tm, it.t1, nullptr);
+      const double diff = std::abs(left + right - it.value);
+      if (diff <= share * (it.t1 - it.t0) / width || it.depth >= kMaxDepth) {
+        edge_sum += left + right;
+        out.error += diff;
+      } else {
+        stack.push_back({tm, it.t1, right, it.depth + 1});
+        stack.push_back({it.t0, tm, left, it.depth + 1});
+      }
+    }
+    total += e.sign * edge_sum;
+  }
+  return total;
+}
+
+// The straight gaps' share of the boundary integral, added to `total`.
+void add_gaps(BoundaryPanels& panel, const std::vector<Gap>& gaps, double& total) {
+  const GaussRule& r = panel.r;
+  const int d = panel.d;
+  for (const Gap& g : gaps) {
+    const double dx = g.to.X() - g.from.X(), dy = g.to.Y() - g.from.Y();
+    const double w = d == 0 ? dy : dx;
+    double s = 0;
+    for (int j = 0; j < r.n; ++j) {
+      const double t = 0.5 + 0.5 * r.x[j];
+      const double u = g.from.X() + t * dx, v = g.from.Y() + t * dy;
+      s += r.w[j] * panel.S.strip(d, panel.x0[static_cast<std::size_t>(g.group)], d == 0 ? u : v, d == 0 ? v : u, panel.c);
+    }
+    total += 0.5 * s * w;
+  }
+}
+
+}  // namespace
+
+FaceFlux face_volume_flux(const TopoDS_Face& face, const gp_Pnt& cp, double eps, StripDirection direction) {
+  if (face.NbChildren() == 0) return occt_flux(face, cp, eps);
+  const TopoDS_Face fwd = TopoDS::Face(face.Oriented(TopAbs_FORWARD));
+  const Handle(Geom_Surface) surface = BRep_Tool::Surface(fwd);
+  if (surface.IsNull()) return occt_flux(face, cp, eps);
+
+  // The boundary: pcurves in the forward face (material on the left), grouped by wire.
+  FaceBoundary fb;
+  if (!face_boundary(fwd, fb)) return occt_flux(face, cp, eps);
+  const std::vector<Gap> gaps = closing_gaps(fb.edges);
 
   try {
-    FaceSurface S(surface, range);
+    FaceSurface S(surface, fb.range);
     const Vec3 c(cp.X(), cp.Y(), cp.Z());
     S.refine(c, 0.01 * eps);
     // Strips in the cheaper direction: d = 0 integrates in u (boundary integral of G dv), d = 1 in v
@@ -450,95 +577,12 @@ FaceFlux face_volume_flux(const TopoDS_Face& face, const gp_Pnt& cp, double eps,
     const double dir_sign = d == 0 ? 1.0 : -1.0;
     // The boundary integrand G(x, y) y' is only as smooth as the surface across its knot lines: panels
     // also end where a pcurve crosses one (found between samples of the panel, by Illinois regula falsi).
-    for (BoundaryEdge& e : edges) split_at_breaks(e, S.breaks(0), S.breaks(1));
-    // Strip start per wire: its own middle if it is closed in the parameter plane, else the middle of
-    // all the other wires together (their integrals only add up to the face's as a whole).
-    std::vector<double> x0(closed.size());
-    double open_lo = 1e300, open_hi = -1e300;
-    for (std::size_t k = 0; k < closed.size(); ++k)
-      if (!closed[k]) {
-        open_lo = std::min(open_lo, wire_box[k][2 * d]);
-        open_hi = std::max(open_hi, wire_box[k][2 * d + 1]);
-      }
-    for (std::size_t k = 0; k < closed.size(); ++k)
-      x0[k] = closed[k] ? 0.5 * (wire_box[k][2 * d] + wire_box[k][2 * d + 1]) : 0.5 * (open_lo + open_hi);
-
-    // f(t) = G(x(t), y(t)) y'(t) along an edge, by the 10-point rule on [t0, t1]. A face that needs more
-    // than kMaxPanels panels (an integrand the rule cannot resolve) goes to BRepGProp instead.
-    const GaussRule& r = gauss(kRule);
-    int panels = 0;
-    auto panel = [&](const BoundaryEdge& e, double t0, double t1, double* abs_sum) {
-      const double h = 0.5 * (t1 - t0), m = 0.5 * (t0 + t1);
-      if (++panels > kMaxPanels) throw std::runtime_error("face flux: panel budget exhausted");
-      double s = 0, sa = 0;
-      gp_Pnt2d q;
-      gp_Vec2d dq;
-      for (int j = 0; j < r.n; ++j) {
-        e.curve->D1(m + h * r.x[j], q, dq);
-        const double x = d == 0 ? q.X() : q.Y(), y = d == 0 ? q.Y() : q.X();
-        const double dy = d == 0 ? dq.Y() : dq.X();
-        if (dy == 0) continue;
-        double size = 0;
-        s += r.w[j] * S.strip(d, x0[static_cast<std::size_t>(e.group)], x, y, c, abs_sum ? &size : nullptr) * dy;
-        sa += r.w[j] * size * std::abs(dy);
-      }
-      if (abs_sum) *abs_sum = h * sa;
-      return h * s;
-    };
-    // First pass: every initial panel, and the scale of the integral (the boundary integral of the
-    // strips' sizes: a face whose flux cancels to ~0, e.g. a plane through c, still has a finite target
-    // above the rounding level).
-    std::vector<std::vector<double>> whole(edges.size());
-    double scale = 0;
-    for (std::size_t i = 0; i < edges.size(); ++i) {
-      const BoundaryEdge& e = edges[i];
-      for (std::size_t k = 0; k + 1 < e.panels.size(); ++k) {
-        double a = 0;
-        whole[i].push_back(panel(e, e.panels[k], e.panels[k + 1], &a));
-        scale += a;
-      }
-    }
-    const double tol = eps * scale;
+    for (BoundaryEdge& e : fb.edges) split_at_breaks(e, S.breaks(0), S.breaks(1));
+    const std::vector<double> x0 = strip_starts(fb, d);
+    BoundaryPanels panel{S, d, x0, c, gauss(kRule)};
     FaceFlux out;
-    double total = 0;
-    // Adaptive: a panel is accepted when its halves agree with it to its share of the tolerance.
-    for (std::size_t i = 0; i < edges.size(); ++i) {
-      const BoundaryEdge& e = edges[i];
-      const double width = e.b - e.a, share = tol / static_cast<double>(edges.size());
-      struct Item {
-        double t0, t1, value;
-        int depth;
-      };
-      std::vector<Item> stack;
-      for (std::size_t k = 0; k + 1 < e.panels.size(); ++k) stack.push_back({e.panels[k], e.panels[k + 1], whole[i][k], 0});
-      double edge_sum = 0;
-      while (!stack.empty()) {
-        const Item it = stack.back();
-        stack.pop_back();
-        const double tm = 0.5 * (it.t0 + it.t1);
-        const double left = panel(e, it.t0, tm, nullptr), right = panel(e, tm, it.t1, nullptr);
-        const double diff = std::abs(left + right - it.value);
-        if (diff <= share * (it.t1 - it.t0) / width || it.depth >= kMaxDepth) {
-          edge_sum += left + right;
-          out.error += diff;
-        } else {
-          stack.push_back({tm, it.t1, right, it.depth + 1});
-          stack.push_back({it.t0, tm, left, it.depth + 1});
-        }
-      }
-      total += e.sign * edge_sum;
-    }
-    for (const Gap& g : gaps) {
-      const double dx = g.to.X() - g.from.X(), dy = g.to.Y() - g.from.Y();
-      const double w = d == 0 ? dy : dx;
-      double s = 0;
-      for (int j = 0; j < r.n; ++j) {
-        const double t = 0.5 + 0.5 * r.x[j];
-        const double u = g.from.X() + t * dx, v = g.from.Y() + t * dy;
-        s += r.w[j] * S.strip(d, x0[static_cast<std::size_t>(g.group)], d == 0 ? u : v, d == 0 ? v : u, c);
-      }
-      total += 0.5 * s * w;
-    }
+    double total = integrate_edges(panel, fb.edges, eps, out);
+    add_gaps(panel, gaps, total);
     const double face_sign = face.Orientation() == TopAbs_REVERSED ? -1.0 : 1.0;
     out.value = face_sign * dir_sign * total / 3;
     out.error /= 3;

@@ -67,24 +67,32 @@ std::pair<double, double> axial_range(const blade::SectionProfile& section) {
   return {lo, hi};
 }
 
-BuiltGrid build_cascade_grid(const blade::SectionProfile& section, const WallPatches& patches,
-                             const SectionGridOptions& o, int wall_layers) {
+namespace {
+
+// The passage's axial stations: the O-grid's interfaces and the inlet and outlet planes.
+struct Stations {
+  double a_in = 0, a_out = 0, a_inlet = 0, a_outlet = 0;
+};
+
+// The periodic lines: the mid-line moved by +-pitch / 2 along b (`which` = +-1); `up` (+-1) is the one
+// facing the suction side.
+struct PeriodicLines {
+  const MidLine& mid;
+  double pitch = 0, up = 1;
+  double y(double a, double which) const { return mid.y(a) + which * 0.5 * pitch; }
+};
+
+// The periodic lines must clear the section with room for the wall layers on both sides of the
+// passage: pitch/2 >= (largest distance of the section from its mid-line along b) + 2 thickness; the
+// interfaces and the inlet and outlet planes.
+Stations passage_stations(const blade::SectionProfile& section, const MidLine& mid, const SectionGridOptions& o, double a_min,
+                          double a_max) {
   const CascadeOptions& cas = *o.cascade;
   const double pitch = cas.pitch;
-  const int n_in = cas.inlet_cells_pitchwise, n_out = cas.outlet_cells_pitchwise;
-  const int n_per = (o.cells_around - n_in - n_out) / 2;
-  const int ni = o.cells_around, nj = o.cells_normal;
-
-  const auto [a_min, a_max] = axial_range(section);
   const double c_ax = a_max - a_min;
   std::vector<Eigen::Vector2d> wall_sample;
   for (int k = 0; k < 2000; ++k)
     wall_sample.push_back(section.curve.point(section.curve.first_param() + section.curve.period() * k / 2000));
-  if (!(section.le.x() < section.te.x()))
-    throw InvalidGeometry("cascade: the section's LE must lie upstream (smaller a) of its TE");
-  const MidLine mid(section.curve, a_min, a_max);
-  // The periodic lines must clear the section with room for the wall layers on both sides of the
-  // passage: pitch/2 >= (largest distance of the section from its mid-line along b) + 2 thickness.
   double reach = 0, reach_a = 0;
   for (const Eigen::Vector2d& p : wall_sample) {
     const double off = std::abs(p.y() - mid.y(p.x()));
@@ -100,26 +108,25 @@ BuiltGrid build_cascade_grid(const blade::SectionProfile& section, const WallPat
                           mm(2 * o.thickness) + " more on each side; need pitch >= " + mm(need));
   const double gap_in = std::max(kInletGap * c_ax, kInterfaceGapLayers * o.thickness);
   const double gap_out = std::max(kOutletGap * c_ax, kInterfaceGapLayers * o.thickness);
-  const double a_in = a_min - gap_in, a_out = a_max + gap_out;
-  const double a_inlet = a_min - cas.inlet_distance, a_outlet = a_max + cas.outlet_distance;
-  if (!(a_inlet < a_in - 1e-9 * c_ax))
+  Stations st;
+  st.a_in = a_min - gap_in, st.a_out = a_max + gap_out;
+  st.a_inlet = a_min - cas.inlet_distance, st.a_outlet = a_max + cas.outlet_distance;
+  if (!(st.a_inlet < st.a_in - 1e-9 * c_ax))
     throw InvalidGeometry("cascade.inlet_distance: must exceed " + mm(gap_in) +
                           " (the O-grid reaches that far upstream of the section)");
-  if (!(a_outlet > a_out + 1e-9 * c_ax))
+  if (!(st.a_outlet > st.a_out + 1e-9 * c_ax))
     throw InvalidGeometry("cascade.outlet_distance: must exceed " + mm(gap_out) +
                           " (the O-grid reaches that far downstream of the section)");
+  return st;
+}
 
-  // Which periodic line faces the suction side (+1: the one at +b).
-  const WallArc arc(section);
-  const double S = arc.suction_length(), P = arc.perimeter();
-  const Eigen::Vector2d mid_suction = section.curve.point(arc.params({0.5 * S}).front());
-  const double up = mid_suction.y() > mid.y(mid_suction.x()) ? 1.0 : -1.0;
-  auto line_y = [&](double a, double which) { return mid.y(a) + which * 0.5 * pitch; };
-
-  // Outer loop, in the wall's rotational order: the inlet interface from the pressure-facing corner to the
-  // suction-facing one, the suction-facing periodic line (a_in -> a_out), the outlet interface, the
-  // pressure-facing line (a_out -> a_in). Interfaces uniform; the periodic lines uniform in arc length,
-  // the same a values on both, so their nodes match by the pitch translation.
+// Outer loop, in the wall's rotational order: the inlet interface from the pressure-facing corner to the
+// suction-facing one, the suction-facing periodic line (a_in -> a_out), the outlet interface, the
+// pressure-facing line (a_out -> a_in). Interfaces uniform; the periodic lines uniform in arc length,
+// the same a values on both, so their nodes match by the pitch translation.
+std::vector<Eigen::Vector2d> outer_nodes(const PeriodicLines& lines, const Stations& st, int n_in, int n_per, int n_out) {
+  const double a_in = st.a_in, a_out = st.a_out, pitch = lines.pitch, up = lines.up;
+  const MidLine& mid = lines.mid;
   std::vector<double> a_per(static_cast<std::size_t>(n_per) + 1);
   {
     const int dense = 40 * n_per;
@@ -142,26 +149,33 @@ BuiltGrid build_cascade_grid(const blade::SectionProfile& section, const WallPat
     a_per.back() = a_out;
   }
   std::vector<Eigen::Vector2d> outer;
-  for (int k = 0; k < n_in; ++k) outer.emplace_back(a_in, line_y(a_in, -up) + up * pitch * k / n_in);
-  for (int k = 0; k < n_per; ++k) outer.emplace_back(a_per[static_cast<std::size_t>(k)], line_y(a_per[static_cast<std::size_t>(k)], up));
-  for (int k = 0; k < n_out; ++k) outer.emplace_back(a_out, line_y(a_out, up) - up * pitch * k / n_out);
+  for (int k = 0; k < n_in; ++k) outer.emplace_back(a_in, lines.y(a_in, -up) + up * pitch * k / n_in);
+  for (int k = 0; k < n_per; ++k) outer.emplace_back(a_per[static_cast<std::size_t>(k)], lines.y(a_per[static_cast<std::size_t>(k)], up));
+  for (int k = 0; k < n_out; ++k) outer.emplace_back(a_out, lines.y(a_out, up) - up * pitch * k / n_out);
   for (int k = 0; k < n_per; ++k)
-    outer.emplace_back(a_per[static_cast<std::size_t>(n_per - k)], line_y(a_per[static_cast<std::size_t>(n_per - k)], -up));
+    outer.emplace_back(a_per[static_cast<std::size_t>(n_per - k)], lines.y(a_per[static_cast<std::size_t>(n_per - k)], -up));
+  return outer;
+}
 
-  // Wall nodes from the outer ones through the wall normals: the normal ray from the last wall layer at
-  // wall position s first hits the outer loop at loop arc length tau(s) (exact line-polyline
-  // intersections, src/algo/ray_curve.hpp). tau, made monotone, is the natural correspondence: the wall
-  // node of outer node k sits at s = tau^-1(tau_k), so every grid line leaves the wall layers about
-  // towards its outer node, and where the normals fan out (LE, TE) the wall nodes crowd.
+// The outer loop as a dense closed polyline (100 points per piece), its arc lengths and its curve.
+struct OuterLoop {
+  std::vector<Eigen::Vector2d> loop;
+  std::vector<double> loop_len;
+  double L = 0;
+  BSplineCurve<2> curve;
+};
+
+OuterLoop outer_loop(const PeriodicLines& lines, const Stations& st) {
+  const double a_in = st.a_in, a_out = st.a_out, pitch = lines.pitch, up = lines.up;
   std::vector<Eigen::Vector2d> loop;  // dense closed polyline of the outer loop
   {
     auto add_piece = [&](const std::function<Eigen::Vector2d(double)>& f) {
       for (int k = 0; k < 100; ++k) loop.push_back(f(k / 100.0));
     };
-    add_piece([&](double t) { return Eigen::Vector2d(a_in, line_y(a_in, -up) + up * pitch * t); });
-    add_piece([&](double t) { const double a = a_in + (a_out - a_in) * t; return Eigen::Vector2d(a, line_y(a, up)); });
-    add_piece([&](double t) { return Eigen::Vector2d(a_out, line_y(a_out, up) - up * pitch * t); });
-    add_piece([&](double t) { const double a = a_out - (a_out - a_in) * t; return Eigen::Vector2d(a, line_y(a, -up)); });
+    add_piece([&](double t) { return Eigen::Vector2d(a_in, lines.y(a_in, -up) + up * pitch * t); });
+    add_piece([&](double t) { const double a = a_in + (a_out - a_in) * t; return Eigen::Vector2d(a, lines.y(a, up)); });
+    add_piece([&](double t) { return Eigen::Vector2d(a_out, lines.y(a_out, up) - up * pitch * t); });
+    add_piece([&](double t) { const double a = a_out - (a_out - a_in) * t; return Eigen::Vector2d(a, lines.y(a, -up)); });
     loop.push_back(loop.front());
   }
   std::vector<double> loop_len(loop.size(), 0.0);
@@ -170,28 +184,46 @@ BuiltGrid build_cascade_grid(const blade::SectionProfile& section, const WallPat
   std::vector<double> knots{0.0};
   for (double x : loop_len) knots.push_back(x);
   knots.push_back(L);
-  const BSplineCurve<2> loop_curve(1, knots, loop);
+  BSplineCurve<2> curve(1, knots, loop);
+  return OuterLoop{std::move(loop), std::move(loop_len), L, std::move(curve)};
+}
+
+// Loop arc length of each outer node (they lie on the polyline's pieces).
+std::vector<double> outer_node_positions(const OuterLoop& ol, const std::vector<Eigen::Vector2d>& outer, int n_in, int n_per,
+                                         int n_out) {
+  const std::vector<Eigen::Vector2d>& loop = ol.loop;
+  const std::vector<double>& loop_len = ol.loop_len;
   std::vector<double> tau_outer(outer.size());
-  {
-    // Loop arc length of each outer node (they lie on the polyline's pieces).
-    const int pieces[4] = {n_in, n_per, n_out, n_per};
-    std::size_t k = 0;
-    for (int piece = 0; piece < 4; ++piece)
-      for (int c = 0; c < pieces[piece]; ++c, ++k) {
-        // Nearest polyline vertex within this piece, then the projection onto its neighbouring edges.
-        double best = HUGE_VAL, tau = 0;
-        for (int v = piece * 100; v < (piece + 1) * 100; ++v) {
-          const Eigen::Vector2d e = loop[static_cast<std::size_t>(v) + 1] - loop[static_cast<std::size_t>(v)];
-          const double f = std::clamp((outer[k] - loop[static_cast<std::size_t>(v)]).dot(e) / e.squaredNorm(), 0.0, 1.0);
-          const double d = (loop[static_cast<std::size_t>(v)] + f * e - outer[k]).squaredNorm();
-          if (d < best) {
-            best = d;
-            tau = loop_len[static_cast<std::size_t>(v)] + f * e.norm();
-          }
+  const int pieces[4] = {n_in, n_per, n_out, n_per};
+  std::size_t k = 0;
+  for (int piece = 0; piece < 4; ++piece)
+    for (int c = 0; c < pieces[piece]; ++c, ++k) {
+      // Nearest polyline vertex within this piece, then the projection onto its neighbouring edges.
+      double best = HUGE_VAL, tau = 0;
+      for (int v = piece * 100; v < (piece + 1) * 100; ++v) {
+        const Eigen::Vector2d e = loop[static_cast<std::size_t>(v) + 1] - loop[static_cast<std::size_t>(v)];
+        const double f = std::clamp((outer[k] - loop[static_cast<std::size_t>(v)]).dot(e) / e.squaredNorm(), 0.0, 1.0);
+        const double d = (loop[static_cast<std::size_t>(v)] + f * e - outer[k]).squaredNorm();
+        if (d < best) {
+          best = d;
+          tau = loop_len[static_cast<std::size_t>(v)] + f * e.norm();
         }
-        tau_outer[k] = tau;
       }
-  }
+      tau_outer[k] = tau;
+    }
+  return tau_outer;
+}
+
+// Wall nodes from the outer ones through the wall normals: the normal ray from the last wall layer at
+// wall position s first hits the outer loop at loop arc length tau(s) (exact line-polyline
+// intersections, src/algo/ray_curve.hpp). tau, made monotone, is the natural correspondence: the wall
+// node of outer node k sits at s = tau^-1(tau_k), so every grid line leaves the wall layers about
+// towards its outer node, and where the normals fan out (LE, TE) the wall nodes crowd.
+// The wall positions s of the outer nodes (ni + 1, the last one round).
+std::vector<double> wall_positions(const WallArc& arc, const WallPatches& patches, const SectionGridOptions& o,
+                                   const OuterLoop& ol, const std::vector<double>& tau_outer) {
+  const int ni = o.cells_around;
+  const double P = arc.perimeter(), L = ol.L;
   const int samples = 16 * ni;
   std::vector<double> s_samples(static_cast<std::size_t>(samples) + 1), tau(static_cast<std::size_t>(samples) + 1);
   for (int j = 0; j <= samples; ++j) s_samples[static_cast<std::size_t>(j)] = P * j / samples;
@@ -199,7 +231,7 @@ BuiltGrid build_cascade_grid(const blade::SectionProfile& section, const WallPat
   for (int j = 0; j <= samples; ++j) {
     const double u = u_samples[static_cast<std::size_t>(j)];
     const Eigen::Vector2d R = patches.point(u, o.thickness), n = patches.outer_normal(u);
-    const auto hits = line_curve_intersections(loop_curve, R, n, 0.0);
+    const auto hits = line_curve_intersections(ol.curve, R, n, 0.0);
     tau[static_cast<std::size_t>(j)] = hits.empty() ? (j > 0 ? tau[static_cast<std::size_t>(j) - 1] : 0.0) : hits.front().curve_param;
   }
   // Unwrap and make non-decreasing, then scale to exactly one loop per wall round.
@@ -241,18 +273,19 @@ BuiltGrid build_cascade_grid(const blade::SectionProfile& section, const WallPat
     s_wall[static_cast<std::size_t>(k)] = wrapped ? sw - P : sw;
   }
   s_wall.back() = s_wall.front() + P;
-  BuiltGrid out;
-  out.wall_params = arc.params(s_wall);
-  out.wall_params.back() = out.wall_params.front() + section.curve.period();
-  outer.push_back(outer.front());
+  return s_wall;
+}
 
-  // Wall layers on the patches, then Hermite curves to the outer boundary.
+// Wall layers on the patches, then Hermite curves to the outer boundary (`outer` closed: ni + 1 nodes).
+Block o_grid_block(const WallPatches& patches, const SectionGridOptions& o, int wall_layers,
+                   const std::vector<double>& wall_params, const std::vector<Eigen::Vector2d>& outer) {
+  const int ni = o.cells_around, nj = o.cells_normal;
   double ratio = 1;
   const std::vector<double> s_layers = geometric_fill(o.first_cell_height, wall_layers, o.thickness, &ratio);
   const double next_cell = (s_layers[static_cast<std::size_t>(wall_layers)] - s_layers[static_cast<std::size_t>(wall_layers) - 1]) * ratio;
   Block og("o_grid", ni, nj);
   for (int i = 0; i < ni; ++i) {
-    const double u = out.wall_params[static_cast<std::size_t>(i)];
+    const double u = wall_params[static_cast<std::size_t>(i)];
     for (int j = 0; j <= wall_layers; ++j) og.at(i, j) = patches.point(u, s_layers[static_cast<std::size_t>(j)]);
     const Eigen::Vector2d R = og.at(i, wall_layers), O = outer[static_cast<std::size_t>(i)];
     const double dist = (O - R).norm();
@@ -263,28 +296,38 @@ BuiltGrid build_cascade_grid(const blade::SectionProfile& section, const WallPat
   for (int j = 0; j <= nj; ++j) og.at(ni, j) = og.at(0, j);
   untangle(og, wall_layers, 50);
   improve_worst_cells(og, wall_layers, 0.3, 50);
-  out.grid.blocks.push_back(std::move(og));
-  out.wall_layers = wall_layers;
+  return og;
+}
 
-  // Inlet and outlet blocks: i streamwise (+a), j across the passage (+b), lines a = const between the
-  // periodic lines, uniform in both directions (pitchwise as the O-grid's interfaces).
+// Inlet and outlet blocks: i streamwise (+a), j across the passage (+b), lines a = const between the
+// periodic lines, uniform in both directions (pitchwise as the O-grid's interfaces).
+void add_inlet_outlet_blocks(BuiltGrid& out, const PeriodicLines& lines, const Stations& st, const SectionGridOptions& o,
+                             int n_in, int n_per, int n_out) {
+  const CascadeOptions& cas = *o.cascade;
+  const int nj = o.cells_normal;
+  const double pitch = lines.pitch, up = lines.up;
   auto h_block = [&](const char* name, double a0, double a1, int ns, int np) {
     Block b(name, ns, np);
     for (int i = 0; i <= ns; ++i) {
       const double a = a0 + (a1 - a0) * i / ns;
-      for (int j = 0; j <= np; ++j) b.at(i, j) = {a, line_y(a, -1) + pitch * j / np};
+      for (int j = 0; j <= np; ++j) b.at(i, j) = {a, lines.y(a, -1) + pitch * j / np};
     }
     return b;
   };
-  out.grid.blocks.push_back(h_block("inlet", a_inlet, a_in, cas.inlet_cells_streamwise, n_in));
-  out.grid.blocks.push_back(h_block("outlet", a_out, a_outlet, cas.outlet_cells_streamwise, n_out));
+  out.grid.blocks.push_back(h_block("inlet", st.a_inlet, st.a_in, cas.inlet_cells_streamwise, n_in));
+  out.grid.blocks.push_back(h_block("outlet", st.a_out, st.a_outlet, cas.outlet_cells_streamwise, n_out));
   // The interface nodes must be bit-identical to the O-grid's: copy them over.
   Block& og_ref = out.grid.blocks[0];
   Block& inlet = out.grid.blocks[1];
   Block& outlet = out.grid.blocks[2];
   for (int k = 0; k <= n_in; ++k) inlet.at(inlet.ni, up > 0 ? k : n_in - k) = og_ref.at(k, nj);
   for (int k = 0; k <= n_out; ++k) outlet.at(0, up > 0 ? n_out - k : k) = og_ref.at(n_in + n_per + k, nj);
+}
 
+// The blocks' connections (the O-grid's cut, the periodic pairs, the interfaces) and boundaries.
+void connect_cascade(BuiltGrid& out, const SectionGridOptions& o, double pitch, double up, int n_in, int n_per, int n_out) {
+  const CascadeOptions& cas = *o.cascade;
+  const int ni = o.cells_around, nj = o.cells_normal;
   const Eigen::Vector2d shift(0, pitch);
   auto& C = out.grid.connections;
   C.push_back({"o_cut", 0, {Face::IMin, 0, nj}, 0, {Face::IMax, 0, nj}, false, Eigen::Vector2d::Zero()});
@@ -310,6 +353,40 @@ BuiltGrid build_cascade_grid(const blade::SectionProfile& section, const WallPat
   B.push_back({"wall", BoundaryKind::Wall, 0, {Face::JMin, 0, ni}});
   B.push_back({"inlet", BoundaryKind::Inlet, 1, {Face::IMin, 0, n_in}});
   B.push_back({"outlet", BoundaryKind::Outlet, 2, {Face::IMax, 0, n_out}});
+}
+
+}  // namespace
+
+BuiltGrid build_cascade_grid(const blade::SectionProfile& section, const WallPatches& patches,
+                             const SectionGridOptions& o, int wall_layers) {
+  const CascadeOptions& cas = *o.cascade;
+  const int n_in = cas.inlet_cells_pitchwise, n_out = cas.outlet_cells_pitchwise;
+  const int n_per = (o.cells_around - n_in - n_out) / 2;
+
+  const auto [a_min, a_max] = axial_range(section);
+  if (!(section.le.x() < section.te.x()))
+    throw InvalidGeometry("cascade: the section's LE must lie upstream (smaller a) of its TE");
+  const MidLine mid(section.curve, a_min, a_max);
+  const Stations st = passage_stations(section, mid, o, a_min, a_max);
+
+  // Which periodic line faces the suction side (+1: the one at +b).
+  const WallArc arc(section);
+  const double S = arc.suction_length();
+  const Eigen::Vector2d mid_suction = section.curve.point(arc.params({0.5 * S}).front());
+  const PeriodicLines lines{mid, cas.pitch, mid_suction.y() > mid.y(mid_suction.x()) ? 1.0 : -1.0};
+
+  std::vector<Eigen::Vector2d> outer = outer_nodes(lines, st, n_in, n_per, n_out);
+  const OuterLoop loop = outer_loop(lines, st);
+  const std::vector<double> s_wall = wall_positions(arc, patches, o, loop, outer_node_positions(loop, outer, n_in, n_per, n_out));
+  BuiltGrid out;
+  out.wall_params = arc.params(s_wall);
+  out.wall_params.back() = out.wall_params.front() + section.curve.period();
+  outer.push_back(outer.front());
+
+  out.grid.blocks.push_back(o_grid_block(patches, o, wall_layers, out.wall_params, outer));
+  out.wall_layers = wall_layers;
+  add_inlet_outlet_blocks(out, lines, st, o, n_in, n_per, n_out);
+  connect_cascade(out, o, cas.pitch, lines.up, n_in, n_per, n_out);
   make_right_handed(out, 0);
   return out;
 }

@@ -75,42 +75,15 @@ Bnd_Box box_of(const TopoDS_Shape& s) {
   return b;
 }
 
-gp_Pnt centre_of(const Bnd_Box& b) {
-  double c[6];
-  b.Get(c[0], c[1], c[2], c[3], c[4], c[5]);
-  return gp_Pnt(0.5 * (c[0] + c[3]), 0.5 * (c[1] + c[4]), 0.5 * (c[2] + c[5]));
-}
-
-double face_flux(const TopoDS_Shape& face, const gp_Pnt& c, double accuracy) {
-  return brep::face_volume_flux(TopoDS::Face(face), c, accuracy).value;
-}
-
-}  // namespace
-
-VolumeMeasure measure_tool_volumes(const BooleanRun& run, const TopoDS_Shape& part, const std::vector<TopoDS_Shape>& tools,
-                                   BooleanOperation op, bool parallel) {
-  VolumeMeasure m;
+// Tool pieces kept in the result, as oriented there (appended to `pieces`, per tool), and each
+// tool's box and oriented box. A piece shared with the part (`part_pieces`) is the part's.
+void kept_tool_pieces(const BooleanRun& run, const std::vector<TopoDS_Shape>& tools, const TopTools_IndexedMapOfShape& result_faces,
+                      const std::vector<TopoDS_Face>& as_in_result, const TopTools_IndexedMapOfShape& part_pieces,
+                      double tool_sign, std::vector<std::vector<OrientedPiece>>& pieces, std::vector<Bnd_Box>& boxes,
+                      std::vector<Bnd_OBB>& obbs) {
   const std::size_t n = tools.size();
-  m.tools.assign(n, {});
-  std::vector<std::vector<OrientedPiece>> pieces(n);
-  const double tool_sign = op == BooleanOperation::Cut ? -1 : 1, part_sign = -tool_sign;
-
-  TopTools_IndexedMapOfShape result_faces;
-  TopExp::MapShapes(run.result, TopAbs_FACE, result_faces);
-  std::vector<TopoDS_Face> as_in_result(static_cast<std::size_t>(result_faces.Extent()));
-  for (TopExp_Explorer e(run.result, TopAbs_FACE); e.More(); e.Next())
-    as_in_result[static_cast<std::size_t>(result_faces.FindIndex(e.Current()) - 1)] = TopoDS::Face(e.Current());
-
-  // Pieces of the part's faces. A piece shared with a tool face (coincident faces) is the part's: if
-  // it is dropped it bounds the tool's region as a part piece; if it is kept the tool only touched
-  // the part there from outside and it bounds nothing of the tool's region.
-  TopTools_IndexedMapOfShape part_pieces;
-  for (TopExp_Explorer e(part, TopAbs_FACE); e.More(); e.Next())
-    for (const TopoDS_Shape& piece : pieces_of(run, e.Current())) part_pieces.Add(piece);
-
-  // Tool pieces kept in the result, as oriented there.
-  std::vector<Bnd_Box> boxes(n);
-  std::vector<Bnd_OBB> obbs(n);
+  boxes.assign(n, Bnd_Box());
+  obbs.assign(n, Bnd_OBB());
   for (std::size_t t = 0; t < n; ++t) {
     boxes[t] = box_of(tools[t]);
     BRepBndLib::AddOBB(tools[t], obbs[t], /*useTriangulation=*/false, /*optimal=*/false, /*useShapeTolerance=*/true);
@@ -123,8 +96,11 @@ VolumeMeasure measure_tool_volumes(const BooleanRun& run, const TopoDS_Shape& pa
           pieces[t].push_back({as_in_result[static_cast<std::size_t>(i - 1)], tool_sign});
       }
   }
+}
 
-  // Dropped part pieces, oriented as in the part, then located in a tool.
+// Dropped part pieces, oriented as in the part.
+std::vector<OrientedPiece> dropped_part_pieces(const BooleanRun& run, const TopoDS_Shape& part,
+                                               const TopTools_IndexedMapOfShape& result_faces, double part_sign) {
   std::vector<OrientedPiece> dropped;
   TopTools_IndexedMapOfShape dropped_seen;
   for (TopExp_Explorer e(part, TopAbs_FACE); e.More(); e.Next()) {
@@ -133,38 +109,50 @@ VolumeMeasure measure_tool_volumes(const BooleanRun& run, const TopoDS_Shape& pa
       if (!result_faces.Contains(piece) && dropped_seen.Add(piece))
         dropped.push_back({orient_like(TopoDS::Face(piece), original), part_sign});
   }
-  // Candidate tools of each dropped piece by box: tools sorted by their lowest x, so a query only
-  // scans the tools whose x range can reach the piece (no scan of every tool per piece).
+  return dropped;
+}
+
+// Candidate tools of each dropped piece by box: tools sorted by their lowest x, so a query only
+// scans the tools whose x range can reach the piece (no scan of every tool per piece).
+std::vector<std::vector<int>> candidate_tools(const std::vector<OrientedPiece>& dropped, const std::vector<Bnd_Box>& boxes,
+                                              const std::vector<Bnd_OBB>& obbs) {
+  const std::size_t n = boxes.size();
   std::vector<std::vector<int>> candidates(dropped.size());
-  {
-    std::vector<std::pair<double, int>> by_x;
-    double widest = 0;
-    for (std::size_t t = 0; t < n; ++t) {
-      double c[6];
-      boxes[t].Get(c[0], c[1], c[2], c[3], c[4], c[5]);
-      by_x.emplace_back(c[0], static_cast<int>(t));
-      widest = std::max(widest, c[3] - c[0]);
-    }
-    std::sort(by_x.begin(), by_x.end());
-    for (std::size_t k = 0; k < dropped.size(); ++k) {
-      const Bnd_Box fb = box_of(dropped[k].face);
-      double c[6];
-      fb.Get(c[0], c[1], c[2], c[3], c[4], c[5]);
-      auto it = std::lower_bound(by_x.begin(), by_x.end(), std::make_pair(c[0] - widest, -1));
-      for (; it != by_x.end() && it->first <= c[3]; ++it)
-        if (!boxes[static_cast<std::size_t>(it->second)].IsOut(fb)) candidates[k].push_back(it->second);
-      if (candidates[k].size() > 1) {  // neighbours' axis-aligned boxes overlap: oriented boxes decide
-        Bnd_OBB fo;
-        BRepBndLib::AddOBB(dropped[k].face, fo, false, false, true);
-        std::vector<int> kept;
-        for (const int t : candidates[k])
-          if (!obbs[static_cast<std::size_t>(t)].IsOut(fo)) kept.push_back(t);
-        candidates[k] = kept;
-      }
+  std::vector<std::pair<double, int>> by_x;
+  double widest = 0;
+  for (std::size_t t = 0; t < n; ++t) {
+    double c[6];
+    boxes[t].Get(c[0], c[1], c[2], c[3], c[4], c[5]);
+    by_x.emplace_back(c[0], static_cast<int>(t));
+    widest = std::max(widest, c[3] - c[0]);
+  }
+  std::sort(by_x.begin(), by_x.end());
+  for (std::size_t k = 0; k < dropped.size(); ++k) {
+    const Bnd_Box fb = box_of(dropped[k].face);
+    double c[6];
+    fb.Get(c[0], c[1], c[2], c[3], c[4], c[5]);
+    auto it = std::lower_bound(by_x.begin(), by_x.end(), std::make_pair(c[0] - widest, -1));
+    for (; it != by_x.end() && it->first <= c[3]; ++it)
+      if (!boxes[static_cast<std::size_t>(it->second)].IsOut(fb)) candidates[k].push_back(it->second);
+    if (candidates[k].size() > 1) {  // neighbours' axis-aligned boxes overlap: oriented boxes decide
+      Bnd_OBB fo;
+      BRepBndLib::AddOBB(dropped[k].face, fo, false, false, true);
+      std::vector<int> kept;
+      for (const int t : candidates[k])
+        if (!obbs[static_cast<std::size_t>(t)].IsOut(fo)) kept.push_back(t);
+      candidates[k] = kept;
     }
   }
-  // A point inside each dropped piece, then per tool one classifier for all the pieces it may hold
-  // (building a classifier explores the solid: once per tool, not once per piece).
+  return candidates;
+}
+
+// A point inside each dropped piece, then per tool one classifier for all the pieces it may hold
+// (building a classifier explores the solid: once per tool, not once per piece). Each piece goes to
+// the first tool holding it (appended to `pieces`); lost and ambiguous pieces are counted in m.
+void assign_dropped_pieces(const std::vector<OrientedPiece>& dropped, const std::vector<std::vector<int>>& candidates,
+                           const std::vector<TopoDS_Shape>& tools, bool parallel,
+                           std::vector<std::vector<OrientedPiece>>& pieces, VolumeMeasure& m) {
+  const std::size_t n = tools.size();
   std::vector<gp_Pnt> point(dropped.size());
   std::vector<char> has_point(dropped.size(), 0);
   OSD_Parallel::For(0, static_cast<int>(dropped.size()), [&](int k) {
@@ -206,6 +194,49 @@ VolumeMeasure measure_tool_volumes(const BooleanRun& run, const TopoDS_Shape& pa
     pieces[static_cast<std::size_t>(owner[k])].push_back(dropped[k]);
     ++m.tools[static_cast<std::size_t>(owner[k])].part_pieces;
   }
+}
+
+gp_Pnt centre_of(const Bnd_Box& b) {
+  double c[6];
+  b.Get(c[0], c[1], c[2], c[3], c[4], c[5]);
+  return gp_Pnt(0.5 * (c[0] + c[3]), 0.5 * (c[1] + c[4]), 0.5 * (c[2] + c[5]));
+}
+
+double face_flux(const TopoDS_Shape& face, const gp_Pnt& c, double accuracy) {
+  return brep::face_volume_flux(TopoDS::Face(face), c, accuracy).value;
+}
+
+}  // namespace
+
+VolumeMeasure measure_tool_volumes(const BooleanRun& run, const TopoDS_Shape& part, const std::vector<TopoDS_Shape>& tools,
+                                   BooleanOperation op, bool parallel) {
+  VolumeMeasure m;
+  const std::size_t n = tools.size();
+  m.tools.assign(n, {});
+  std::vector<std::vector<OrientedPiece>> pieces(n);
+  const double tool_sign = op == BooleanOperation::Cut ? -1 : 1, part_sign = -tool_sign;
+
+  TopTools_IndexedMapOfShape result_faces;
+  TopExp::MapShapes(run.result, TopAbs_FACE, result_faces);
+  std::vector<TopoDS_Face> as_in_result(static_cast<std::size_t>(result_faces.Extent()));
+  for (TopExp_Explorer e(run.result, TopAbs_FACE); e.More(); e.Next())
+    as_in_result[static_cast<std::size_t>(result_faces.FindIndex(e.Current()) - 1)] = TopoDS::Face(e.Current());
+
+  // Pieces of the part's faces. A piece shared with a tool face (coincident faces) is the part's: if
+  // it is dropped it bounds the tool's region as a part piece; if it is kept the tool only touched
+  // the part there from outside and it bounds nothing of the tool's region.
+  TopTools_IndexedMapOfShape part_pieces;
+  for (TopExp_Explorer e(part, TopAbs_FACE); e.More(); e.Next())
+    for (const TopoDS_Shape& piece : pieces_of(run, e.Current())) part_pieces.Add(piece);
+
+  // Tool pieces kept in the result, as oriented there.
+  std::vector<Bnd_Box> boxes;
+  std::vector<Bnd_OBB> obbs;
+  kept_tool_pieces(run, tools, result_faces, as_in_result, part_pieces, tool_sign, pieces, boxes, obbs);
+
+  // Dropped part pieces, oriented as in the part, then located in a tool.
+  const std::vector<OrientedPiece> dropped = dropped_part_pieces(run, part, result_faces, part_sign);
+  assign_dropped_pieces(dropped, candidate_tools(dropped, boxes, obbs), tools, parallel, pieces, m);
 
   OSD_Parallel::For(0, static_cast<int>(n), [&](int t) {
     const Bnd_Box& b = boxes[static_cast<std::size_t>(t)];

@@ -358,6 +358,111 @@ class Engine {
   bool prune_;
 };
 
+// 1. Disjoint tools: fuse clusters of overlapping ones. The engine's units, one per cluster; the
+// cluster of each tool (-1: alone).
+std::vector<int> disjoint_units(const std::vector<FeatureTool>& tools, const BooleanOptions& options,
+                                BooleanStepReport& report, Engine& engine) {
+  ProgressSink* const progress = options.progress;
+  std::vector<TopoDS_Shape> shapes;
+  for (const FeatureTool& ft : tools) shapes.push_back(ft.shape.shape);
+  const OverlapClusters oc = overlap_clusters(shapes, options.overlap_gap, options.parallel);
+  std::vector<int> cluster_of(tools.size(), -1);
+  for (const std::vector<int>& members : oc.clusters) {
+    Unit u;
+    u.members = members;
+    std::vector<const brep::NamedShape*> named;
+    for (int m : members) {
+      u.label += (u.label.empty() ? "" : " + ") + tools[static_cast<std::size_t>(m)].feature;
+      named.push_back(&tools[static_cast<std::size_t>(m)].shape);
+    }
+    if (members.size() == 1) {
+      const FeatureTool& ft = tools[static_cast<std::size_t>(members.front())];
+      u.shape = ft.shape;
+      u.axis = ft.symmetry_axis ? ft.symmetry_axis : detect_symmetry_axis(ft.shape.shape);
+      u.expected = ft.expected_volume;
+      u.expected_source = "given";
+    } else {
+      check_cancel(progress, "fusing overlapping tools");
+      u.shape = fuse_cluster(named, u.label, options.parallel);
+      for (int m : members) cluster_of[static_cast<std::size_t>(m)] = report.cluster_count;
+      ++report.cluster_count;
+    }
+    engine.units.push_back(std::move(u));
+  }
+  return cluster_of;
+}
+
+// 2. Independent expectations where the features gave none (and of every fused cluster).
+void expect_volumes(Engine& engine, const brep::NamedShape& part, BooleanOperation operation, const BooleanOptions& options) {
+  std::vector<int> missing;
+  for (std::size_t k = 0; k < engine.units.size(); ++k)
+    if (std::isnan(engine.units[k].expected) || engine.units[k].members.size() > 1) missing.push_back(static_cast<int>(k));
+  std::vector<std::string> errors(missing.size());
+  OSD_Parallel::For(0, static_cast<int>(missing.size()), [&](int k) {
+    Unit& u = engine.units[static_cast<std::size_t>(missing[static_cast<std::size_t>(k)])];
+    try {
+      u.expected = occt_expected_volume(u.shape.shape, part.shape, operation, u.label);
+      u.expected_source = "occt";
+    } catch (const FeatureFailure& e) {
+      errors[static_cast<std::size_t>(k)] = e.what();
+    }
+  }, !options.parallel);
+  for (const std::string& e : errors)
+    if (!e.empty()) throw FeatureFailure(e);
+}
+
+// 3. Patches, when many tools reach one face: the part the booleans work on.
+brep::NamedShape patched_part(const brep::NamedShape& part, const Engine& engine, const BooleanOptions& options,
+                              BooleanStepReport& report) {
+  ProgressSink* const progress = options.progress;
+  brep::NamedShape base = part;
+  if (options.patch_min_tools > 0 && static_cast<int>(engine.units.size()) >= options.patch_min_tools) {
+    report_progress(progress, 0.15, "patches");
+    check_cancel(progress, "patches");
+    std::vector<TopoDS_Shape> us;
+    for (const Unit& u : engine.units) us.push_back(u.shape.shape);
+    PatchOptions po;
+    po.min_tools = options.patch_min_tools;
+    po.tools_per_patch = options.patch_tools_per_patch;
+    po.parallel = options.parallel;
+    PatchedPart pp = patch_faces(part, us, po);
+    for (const std::string& w : pp.warnings) report.warnings.push_back("patches: " + w);
+    if (pp.cut_lines > 0) {
+      // A patch split is kept only when clean: otherwise the step works on the part as it is.
+      const bool clean = pp.warnings.empty() && count_solids(pp.part.shape) == count_solids(part.shape);
+      if (clean) {
+        base = std::move(pp.part);
+        report.patched_faces = pp.faces_after - pp.faces_before;
+      } else {
+        report.warnings.push_back("patches: the split was not clean, the part is used unsplit");
+      }
+    }
+  }
+  return base;
+}
+
+// 5. Report (also when the step fails), one entry per tool in the order they were added.
+void report_tools(const Engine& engine, const std::vector<FeatureTool>& tools, const std::vector<int>& cluster_of,
+                  BooleanStepReport& report) {
+  report.tools.assign(tools.size(), ToolReport{});
+  for (const Unit& u : engine.units)
+    for (int m : u.members) {
+      ToolReport tr;
+      tr.feature = tools[static_cast<std::size_t>(m)].feature;
+      tr.expected_volume = u.expected;
+      tr.measured_volume = u.measured;
+      tr.closure = u.closure;
+      tr.uncertainty = u.uncertainty;
+      tr.expected_source = u.expected_source;
+      tr.cluster = cluster_of[static_cast<std::size_t>(m)];
+      tr.retries = u.retries;
+      tr.perturbation = u.perturbation;
+      tr.perturbation_changed_geometry = u.perturbation_changed_geometry;
+      tr.passed = u.passed;
+      report.tools[static_cast<std::size_t>(m)] = tr;
+    }
+}
+
 }  // namespace
 
 BooleanStep::BooleanStep(BooleanOperation operation, BooleanOptions options)
@@ -388,82 +493,21 @@ brep::NamedShape BooleanStep::apply(const brep::NamedShape& part) {
   // 1. Disjoint tools: fuse clusters of overlapping ones.
   auto t = Clock::now();
   report_progress(progress, 0.0, "disjoint tools");
-  std::vector<TopoDS_Shape> shapes;
-  for (const FeatureTool& ft : tools_) shapes.push_back(ft.shape.shape);
-  const OverlapClusters oc = overlap_clusters(shapes, options_.overlap_gap, options_.parallel);
-  std::vector<int> cluster_of(tools_.size(), -1);
-  for (const std::vector<int>& members : oc.clusters) {
-    Unit u;
-    u.members = members;
-    std::vector<const brep::NamedShape*> named;
-    for (int m : members) {
-      u.label += (u.label.empty() ? "" : " + ") + tools_[static_cast<std::size_t>(m)].feature;
-      named.push_back(&tools_[static_cast<std::size_t>(m)].shape);
-    }
-    if (members.size() == 1) {
-      const FeatureTool& ft = tools_[static_cast<std::size_t>(members.front())];
-      u.shape = ft.shape;
-      u.axis = ft.symmetry_axis ? ft.symmetry_axis : detect_symmetry_axis(ft.shape.shape);
-      u.expected = ft.expected_volume;
-      u.expected_source = "given";
-    } else {
-      check_cancel(progress, "fusing overlapping tools");
-      u.shape = fuse_cluster(named, u.label, options_.parallel);
-      for (int m : members) cluster_of[static_cast<std::size_t>(m)] = report_.cluster_count;
-      ++report_.cluster_count;
-    }
-    engine.units.push_back(std::move(u));
-  }
+  const std::vector<int> cluster_of = disjoint_units(tools_, options_, report_, engine);
   report_.seconds_disjoint = since(t);
 
   // 2. Independent expectations where the features gave none (and of every fused cluster).
   t = Clock::now();
   report_progress(progress, 0.1, "expected volumes");
   check_cancel(progress, "expected volumes");
-  std::vector<int> missing;
-  for (std::size_t k = 0; k < engine.units.size(); ++k)
-    if (std::isnan(engine.units[k].expected) || engine.units[k].members.size() > 1) missing.push_back(static_cast<int>(k));
-  std::vector<std::string> errors(missing.size());
-  OSD_Parallel::For(0, static_cast<int>(missing.size()), [&](int k) {
-    Unit& u = engine.units[static_cast<std::size_t>(missing[static_cast<std::size_t>(k)])];
-    try {
-      u.expected = occt_expected_volume(u.shape.shape, part.shape, operation_, u.label);
-      u.expected_source = "occt";
-    } catch (const FeatureFailure& e) {
-      errors[static_cast<std::size_t>(k)] = e.what();
-    }
-  }, !options_.parallel);
-  for (const std::string& e : errors)
-    if (!e.empty()) throw FeatureFailure(e);
+  expect_volumes(engine, part, operation_, options_);
   report_.seconds_expected = since(t);
 
   for (Unit& u : engine.units) u.expected_before_retries = u.expected;
 
   // 3. Patches, when many tools reach one face.
   t = Clock::now();
-  brep::NamedShape base = part;
-  if (options_.patch_min_tools > 0 && static_cast<int>(engine.units.size()) >= options_.patch_min_tools) {
-    report_progress(progress, 0.15, "patches");
-    check_cancel(progress, "patches");
-    std::vector<TopoDS_Shape> us;
-    for (const Unit& u : engine.units) us.push_back(u.shape.shape);
-    PatchOptions po;
-    po.min_tools = options_.patch_min_tools;
-    po.tools_per_patch = options_.patch_tools_per_patch;
-    po.parallel = options_.parallel;
-    PatchedPart pp = patch_faces(part, us, po);
-    for (const std::string& w : pp.warnings) report_.warnings.push_back("patches: " + w);
-    if (pp.cut_lines > 0) {
-      // A patch split is kept only when clean: otherwise the step works on the part as it is.
-      const bool clean = pp.warnings.empty() && count_solids(pp.part.shape) == count_solids(part.shape);
-      if (clean) {
-        base = std::move(pp.part);
-        report_.patched_faces = pp.faces_after - pp.faces_before;
-      } else {
-        report_.warnings.push_back("patches: the split was not clean, the part is used unsplit");
-      }
-    }
-  }
+  const brep::NamedShape base = patched_part(part, engine, options_, report_);
   report_.seconds_patches = since(t);
 
   // 4. The boolean(s), checked; guilty tools isolated and retried.
@@ -489,23 +533,7 @@ brep::NamedShape BooleanStep::apply(const brep::NamedShape& part) {
   for (const std::string& f : engine.failures) failure += (failure.empty() ? "" : "; ") + f;
 
   // 5. Report (also when the step fails), one entry per tool in the order they were added.
-  report_.tools.assign(tools_.size(), ToolReport{});
-  for (const Unit& u : engine.units)
-    for (int m : u.members) {
-      ToolReport tr;
-      tr.feature = tools_[static_cast<std::size_t>(m)].feature;
-      tr.expected_volume = u.expected;
-      tr.measured_volume = u.measured;
-      tr.closure = u.closure;
-      tr.uncertainty = u.uncertainty;
-      tr.expected_source = u.expected_source;
-      tr.cluster = cluster_of[static_cast<std::size_t>(m)];
-      tr.retries = u.retries;
-      tr.perturbation = u.perturbation;
-      tr.perturbation_changed_geometry = u.perturbation_changed_geometry;
-      tr.passed = u.passed;
-      report_.tools[static_cast<std::size_t>(m)] = tr;
-    }
+  report_tools(engine, tools_, cluster_of, report_);
   report_.seconds = since(t0);
   if (!failure.empty()) throw FeatureFailure(failure);
   report_progress(progress, 1.0, "done");
