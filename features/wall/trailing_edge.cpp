@@ -293,6 +293,29 @@ void check_trailing_edge_placement(const blade::BladeModel& model, const CoreDef
 
 namespace {
 
+// The cutback's floor leaves the blade through one side of the TE's rounding, at least 0.1 mm from its
+// tip (the last point of the blade along the slot, found by bisection on the frame's y-lines at the
+// slot's middle and sides). A floor through the tip ends on a knife edge at the blade surface's seam:
+// OCCT's boolean then fails (BOPAlgo_AlertFaceBuilderUnusedEdges, data/repro/te_cutback_short.json:
+// floors 0.06-0.07 mm from the tip failed, 0.16-0.17 mm built).
+void check_floor_off_the_tip(const TrailingEdgeDefinition& te, WallLines& lines, const TeFrame& f, double s, const SlotInfo& info) {
+  for (const double z : {-0.5 * te.slot_width, 0.0, 0.5 * te.slot_width}) {
+    double in = info.x_lip, out = f.te_x + 1.0;  // across() finds the blade at `in`, not at `out`
+    if (!across(lines, f, in, z, true).ok || across(lines, f, out, z, true).ok) continue;
+    for (int it = 0; it < 40; ++it) {  // (1 mm + cutback) / 2^40: far below a micrometre
+      const double mid = 0.5 * (in + out);
+      (across(lines, f, mid, z, true).ok ? in : out) = mid;
+    }
+    const Across tip = across(lines, f, in, z, true);
+    const double gap = std::abs(info.floor_y - 0.5 * (tip.lo + tip.hi));
+    if (gap < 0.1)
+      throw PassageInputError(field("cutback_length"),
+                              info.name + ": the cutback's floor passes " + format_number(gap) + " mm from the trailing edge's tip at span " +
+                                  format_number(s) + " (at least 0.1 mm: a floor through the tip leaves a knife edge that cannot be cut); "
+                                  "change cutback_length, slot_height or lip_thickness");
+  }
+}
+
 // Where slot `info` sits across the blade at span s: under the lip (cutback: the lip checked, and the
 // suction-side wall left under its floor) or on the centreline (the wall on both sides); sets its
 // x_lip and floor_y.
@@ -314,6 +337,7 @@ void place_slot(const TrailingEdgeDefinition& te, bool cutback, WallLines& lines
                                     " mm of suction-side wall under the cutback at span " + format_number(s) +
                                     " (at least 0.1 mm); must be <= " + format_number(b.hi - b.lo - 0.1) + " mm together here");
     }
+    check_floor_off_the_tip(te, lines, f, s, info);
   } else {
     info.x_lip = f.te_x;
     info.floor_y = -0.5 * te.slot_height;

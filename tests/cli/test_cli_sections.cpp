@@ -52,7 +52,9 @@ BOOST_AUTO_TEST_CASE(repro_designs_are_refused_naming_a_field) {
       {"section_loop_serpentine.json", "cooling.showerhead.stagnation_arc_length"},
       // The fuse of two turbulators misses its volume check after the retries (issue 21, exit 3 before):
       // refused naming the turbulator definition.
-      {"turbulator_volume_mismatch.json", "cooling.core.turbulators[0]: "}};
+      {"turbulator_volume_mismatch.json", "cooling.core.turbulators[0]: "},
+      // A cutback floor 0.08 mm from the TE's tip failed its boolean after the retries (exit 3 before).
+      {"te_cutback_short.json", "cooling.core.trailing_edge.cutback_length: "}};
   for (const auto& [file, field] : cases) {
     test::TempDir dir("cli_repro");
     const test::Run r = test::run_cli("build " + test::q(kRepro / file) + " -o " + test::q(dir.path / "out"), dir.path);
