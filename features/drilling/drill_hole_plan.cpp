@@ -23,13 +23,12 @@
 #include <tuple>
 
 #include "adaptors/occt_convert.hpp"
+#include "src/core/constants.hpp"
 #include "src/core/error.hpp"
 #include "src/algo/segment_distance.hpp"
 
 namespace cg::features::drill_detail {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 gp_Pnt pnt(const Eigen::Vector3d& p) { return gp_Pnt(p.x(), p.y(), p.z()); }
 

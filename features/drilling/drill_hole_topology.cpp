@@ -17,11 +17,11 @@
 #include <cmath>
 
 #include "adaptors/occt_convert.hpp"
+#include "src/core/constants.hpp"
 
 namespace cg::features {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kMinTolerance = 1e-7;  // Precision::Confusion(): OCCT's floor for any tolerance
 
 gp_Pnt pnt(const Eigen::Vector3d& p) { return gp_Pnt(p.x(), p.y(), p.z()); }

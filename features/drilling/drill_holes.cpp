@@ -28,6 +28,7 @@
 #include "features/drilling/drill_hole_geometry.hpp"
 #include "features/drilling/drill_hole_plan.hpp"
 #include "features/drilling/drill_hole_topology.hpp"
+#include "src/core/constants.hpp"
 #include "src/core/error.hpp"
 #include "src/core/format.hpp"
 
@@ -37,7 +38,6 @@ using namespace drill_detail;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 

@@ -23,12 +23,11 @@
 #include <cmath>
 #include <vector>
 
+#include "src/core/constants.hpp"
 #include "src/core/error.hpp"
 
 namespace cg::features {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 gp_Pnt pnt(const Eigen::Vector3d& p) { return gp_Pnt(p.x(), p.y(), p.z()); }
 gp_Dir dir(const Eigen::Vector3d& v) { return gp_Dir(v.x(), v.y(), v.z()); }

@@ -22,12 +22,11 @@
 #include "features/film/hole_tool.hpp"
 #include "src/blade/blade_coordinates.hpp"
 #include "src/brep/occt_progress.hpp"
+#include "src/core/constants.hpp"
 #include "src/core/format.hpp"
 
 namespace cg::features {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 
 

@@ -26,6 +26,7 @@
 #include <sstream>
 
 #include "src/brep/naming/face_names.hpp"
+#include "src/core/constants.hpp"
 #include "src/core/format.hpp"
 #include "src/brep/blade_solid.hpp"
 #include "src/core/newton.hpp"
@@ -75,8 +76,6 @@ std::string alerts(const Message_Report& r, Message_Gravity g) {
   for (const Handle(Message_Alert)& a : r.GetAlerts(g)) s += (s.empty() ? "" : ", ") + std::string(a->GetMessageKey());
   return s;
 }
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Parameter t along x0 + t dir (|t| <= 50 mm) where the end wall's signed distance reaches `target`
 // (the distance grows along dir, which points into the flow path; Illinois regula falsi to 1e-12 mm).

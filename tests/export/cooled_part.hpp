@@ -28,6 +28,7 @@
 #include "src/brep/blade_solid.hpp"
 #include "src/config/builtin_example.hpp"
 #include "src/config/config.hpp"
+#include "src/core/constants.hpp"
 
 namespace cg::test {
 
@@ -51,7 +52,7 @@ struct CooledPartOptions {
   double chamber_top = 0.85;///< span fraction where the chambers end (they open at the hub)
 };
 
-constexpr double kPi = 3.14159265358979323846;
+using cg::kPi;
 
 inline double volume_of(const TopoDS_Shape& s) {
   GProp_GProps g;

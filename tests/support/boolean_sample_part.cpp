@@ -15,6 +15,7 @@
 #include "src/algo/ray_surface.hpp"
 #include "src/blade/blade_coordinates.hpp"
 #include "src/brep/blade_solid.hpp"
+#include "src/core/constants.hpp"
 #include "src/core/error.hpp"
 #include "src/fit/interpolate.hpp"
 #include "src/fit/skin.hpp"
@@ -23,7 +24,7 @@
 namespace cg::features {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using cg::kPi;
 
 // Blade thickness |S_ss - S_ps| at chordwise fraction x and span v.
 double blade_thickness(const blade::BladeCoordinates& bc, double v, double x) {
