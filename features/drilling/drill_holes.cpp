@@ -23,6 +23,7 @@
 #include <functional>
 #include <map>
 
+#include "adaptors/occt_convert.hpp"
 #include "src/brep/boolean/boolean_patches.hpp"
 #include "src/brep/boolean/boolean_volume.hpp"
 #include "features/drilling/drill_hole_geometry.hpp"
@@ -41,7 +42,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-gp_Pnt pnt(const Eigen::Vector3d& p) { return gp_Pnt(p.x(), p.y(), p.z()); }
 
 // 1/3 * integral over the face of (x - c) . n dA with BRepGProp's fixed Gauss rule (orders from the
 // surface's and the edges' degrees and spans; no adaptive refinement: the faces here are small and
@@ -152,7 +152,7 @@ brep::NamedShape apply_fallback(const brep::NamedShape& part, const std::vector<
 
 FeatureTool hole_tool(const CylindricalHole& hole) {
   const HoleCylinder c = HoleCylinder::from_axis(hole.origin, hole.axis, 0.5 * hole.diameter, hole.length);
-  const gp_Ax2 ax(pnt(c.o), gp_Dir(c.d.x(), c.d.y(), c.d.z()), gp_Dir(c.e1.x(), c.e1.y(), c.e1.z()));
+  const gp_Ax2 ax(occt::to_pnt(c.o), gp_Dir(c.d.x(), c.d.y(), c.d.z()), gp_Dir(c.e1.x(), c.e1.y(), c.e1.z()));
   FeatureTool tool;
   tool.feature = hole.name;
   tool.shape.shape = BRepPrimAPI_MakeCylinder(ax, c.radius, c.length).Shape();
@@ -176,7 +176,7 @@ DrillResult drill_holes(const brep::NamedShape& input, const std::vector<Cylindr
   if (o.patch_min_holes > 0 && static_cast<int>(holes.size()) >= o.patch_min_holes) {
     std::vector<TopoDS_Shape> tools;
     for (const HolePlan& p : plans)
-      tools.push_back(BRepPrimAPI_MakeCylinder(gp_Ax2(pnt(p.cyl.o), gp_Dir(p.cyl.d.x(), p.cyl.d.y(), p.cyl.d.z())),
+      tools.push_back(BRepPrimAPI_MakeCylinder(gp_Ax2(occt::to_pnt(p.cyl.o), gp_Dir(p.cyl.d.x(), p.cyl.d.y(), p.cyl.d.z())),
                                                p.cyl.radius, p.cyl.length)
                           .Shape());
     PatchOptions po;
@@ -280,8 +280,8 @@ DrillResult drill_holes(const brep::NamedShape& input, const std::vector<Cylindr
         double v2 = 0;
         dh.volume = 0;
         for (const TopoDS_Face& face : {cap_a, cap_b, s.face}) {
-          dh.volume += adaptive ? face_flux(face, pnt(mid)) : hole_face_flux(face, pnt(mid));
-          v2 += adaptive ? face_flux(face, pnt(mid2)) : hole_face_flux(face, pnt(mid2));
+          dh.volume += adaptive ? face_flux(face, occt::to_pnt(mid)) : hole_face_flux(face, occt::to_pnt(mid));
+          v2 += adaptive ? face_flux(face, occt::to_pnt(mid2)) : hole_face_flux(face, occt::to_pnt(mid2));
         }
         dh.closure = std::abs(dh.volume - v2);
       };
@@ -324,7 +324,7 @@ DrillResult drill_holes(const brep::NamedShape& input, const std::vector<Cylindr
       return;
     }
     // Integral after = before - the caps of its holes (all about one point near the face).
-    const gp_Pnt c = pnt(0.5 * (Eigen::Vector3d(fi.box.CornerMin().X(), fi.box.CornerMin().Y(), fi.box.CornerMin().Z()) +
+    const gp_Pnt c = occt::to_pnt(0.5 * (Eigen::Vector3d(fi.box.CornerMin().X(), fi.box.CornerMin().Y(), fi.box.CornerMin().Z()) +
                                 Eigen::Vector3d(fi.box.CornerMax().X(), fi.box.CornerMax().Y(), fi.box.CornerMax().Z())));
     double caps = 0, cap_sum_abs = 0;
     for (const auto& [hole, e] : on_face.at(face)) {

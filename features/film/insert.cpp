@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "adaptors/occt_convert.hpp"
 #include "features/film/hole_analysis.hpp"
 #include "features/film/hole_rays.hpp"
 #include "features/film/hole_target.hpp"
@@ -36,7 +37,6 @@ double volume_of(const TopoDS_Shape& s) {
   return p.Mass();
 }
 
-gp_Pnt pnt(const Eigen::Vector3d& p) { return gp_Pnt(p.x(), p.y(), p.z()); }
 
 // The solid between the ends, split by the rib walls (grown by `grow`); the piece holding `reference` kept.
 TopoDS_Shape chamber_solid(const BSplineSurface<3>& surface, const brep::EndTrim& hub, const brep::EndTrim& tip,
@@ -54,7 +54,7 @@ TopoDS_Shape chamber_solid(const BSplineSurface<3>& surface, const brep::EndTrim
   split.Build();
   if (!split.IsDone() || split.HasErrors()) throw FeatureFailure(what + ": splitting by the rib walls failed");
   for (TopExp_Explorer e(split.Shape(), TopAbs_SOLID); e.More(); e.Next()) {
-    BRepClass3d_SolidClassifier in(e.Current(), pnt(chamber.reference), 1e-7);
+    BRepClass3d_SolidClassifier in(e.Current(), occt::to_pnt(chamber.reference), 1e-7);
     if (in.State() == TopAbs_IN) return e.Current();
   }
   throw FeatureFailure(what + ": no piece between the ribs holds the chamber's reference point");
@@ -281,7 +281,7 @@ InsertBuild build_insert(const blade::BladeModel& model, const InsertChamber& ch
     t.feature = jn;
     t.shape = named_all_faces(make_hole_solid(hf, cyl, ext), jn);
     t.expected_volume = volume;
-    t.symmetry_axis = gp_Ax1(pnt(base), gp_Dir(d.x(), d.y(), d.z()));
+    t.symmetry_axis = gp_Ax1(occt::to_pnt(base), gp_Dir(d.x(), d.y(), d.z()));
     holes.add(t);
     jet_area += kPi * r * r;
   }
@@ -334,13 +334,13 @@ void measure_insert(const blade::BladeModel& model, const brep::NamedShape& blad
       const double c = c_lo + (c_hi - c_lo) * (i - 0.5 + 0.37) / 8.0;  // off the jet lines' even spacing
       const blade::BladeFrame f = coords.frame(s, c);
       const Eigen::Vector3d p = f.point - off * f.normal, n = f.normal;
-      const gp_Lin out_line(pnt(p), gp_Dir(n.x(), n.y(), n.z()));
+      const gp_Lin out_line(occt::to_pnt(p), gp_Dir(n.x(), n.y(), n.z()));
       on_blade.Perform(out_line, 0, 10 * def.gap + 1);
       double g = HUGE_VAL;
       for (int k = 1; k <= on_blade.NbPnt(); ++k) g = std::min(g, on_blade.WParameter(k));
       gap_normal_min = std::min(gap_normal_min, g);
       const Eigen::Vector3d q = p + 1e-3 * n;
-      const gp_Lin in_line(pnt(q), gp_Dir(-n.x(), -n.y(), -n.z()));
+      const gp_Lin in_line(occt::to_pnt(q), gp_Dir(-n.x(), -n.y(), -n.z()));
       on_insert.Perform(in_line, 0, 10 * def.sheet_thickness + 1);
       std::vector<double> w;
       for (int k = 1; k <= on_insert.NbPnt(); ++k) w.push_back(on_insert.WParameter(k));

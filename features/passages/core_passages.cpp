@@ -25,6 +25,7 @@
 #include <set>
 #include <sstream>
 
+#include "adaptors/occt_convert.hpp"
 #include "src/brep/naming/face_names.hpp"
 #include "src/core/constants.hpp"
 #include "src/core/format.hpp"
@@ -56,14 +57,13 @@ class Stopwatch {
   std::chrono::steady_clock::time_point t0_ = std::chrono::steady_clock::now();
 };
 
-gp_Pnt pnt(const Vec3& p) { return gp_Pnt(p.x(), p.y(), p.z()); }
 
 // Point-in-solid tests against one solid (the classifier's face explorer is built once).
 class Inside {
  public:
   explicit Inside(const TopoDS_Shape& solid) { c_.Load(solid); }
   bool operator()(const Vec3& p) {
-    c_.Perform(pnt(p), 1e-7);
+    c_.Perform(occt::to_pnt(p), 1e-7);
     return c_.State() == TopAbs_IN;
   }
 
@@ -458,7 +458,7 @@ void build_core_cells(const blade::BladeModel& model, const CoreDefinition& def,
   for (std::size_t c = 0; c < cells.size(); ++c) BRepBndLib::Add(cells[c], cell_box[c]);
   for (std::size_t k = 0; k < out.chambers.size(); ++k) {
     for (std::size_t c = 0; c < cells.size() && cell_of[k] < 0; ++c) {
-      if (cell_box[c].IsOut(pnt(out.chambers[k].reference))) continue;
+      if (cell_box[c].IsOut(occt::to_pnt(out.chambers[k].reference))) continue;
       if (!in_cell[c]) in_cell[c] = std::make_unique<Inside>(cells[c]);
       if ((*in_cell[c])(out.chambers[k].reference)) cell_of[k] = static_cast<int>(c);
     }
@@ -556,7 +556,7 @@ void build_core_cells(const blade::BladeModel& model, const CoreDefinition& def,
       std::optional<Inside> in_piece;
       for (int k : members) {
         const Vec3& ref = out.chambers[static_cast<std::size_t>(k)].reference;
-        if (box.IsOut(pnt(ref))) continue;
+        if (box.IsOut(occt::to_pnt(ref))) continue;
         if (!in_piece) in_piece.emplace(piece);
         if ((*in_piece)(ref)) owner = k;
       }
@@ -627,7 +627,7 @@ void build_core_cells(const blade::BladeModel& model, const CoreDefinition& def,
     auto along = [&](const EndWall& w, double target) { return along_line(w, x0, dir, target); };
     const double reach = std::max(0.5, 0.25 * in.diameter);
     const double t0 = along(outside, 0.0), t1 = along(wall, reach);
-    const gp_Ax2 ax(pnt(x0 + t0 * dir), gp_Dir(dir.x(), dir.y(), dir.z()));
+    const gp_Ax2 ax(occt::to_pnt(x0 + t0 * dir), gp_Dir(dir.x(), dir.y(), dir.z()));
     BRepPrimAPI_MakeCylinder cyl(ax, 0.5 * in.diameter, t1 - t0);
     cyl.Build();
     if (!cyl.IsDone()) throw FeatureFailure(name + ": cannot make its cylinder");

@@ -25,6 +25,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "adaptors/occt_convert.hpp"
 #include "src/brep/blade_solid.hpp"
 #include "src/config/builtin_example.hpp"
 #include "src/config/config.hpp"
@@ -60,7 +61,7 @@ inline double volume_of(const TopoDS_Shape& s) {
   return g.Mass();
 }
 
-inline gp_Pnt to_pnt(const Eigen::Vector3d& p) { return gp_Pnt(p.x(), p.y(), p.z()); }
+using occt::to_pnt;
 
 /// Solid cylinder from a to b with every face named `side` (lateral) / `ends` (caps).
 inline brep::NamedShape named_cylinder(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double radius,
