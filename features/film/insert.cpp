@@ -4,8 +4,6 @@
 #include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepClass3d_SolidClassifier.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
-#include <BRepGProp.hxx>
-#include <GProp_GProps.hxx>
 #include <IntCurvesFace_ShapeIntersector.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
@@ -23,6 +21,7 @@
 #include "features/film/hole_tool.hpp"
 #include "src/blade/blade_coordinates.hpp"
 #include "src/brep/occt_progress.hpp"
+#include "src/brep/solid_integrals.hpp"
 #include "src/core/constants.hpp"
 #include "src/core/format.hpp"
 
@@ -30,12 +29,6 @@ namespace cg::features {
 namespace {
 
 
-
-double volume_of(const TopoDS_Shape& s) {
-  GProp_GProps p;
-  BRepGProp::VolumeProperties(s, p, 1e-9, true);
-  return p.Mass();
-}
 
 
 // The solid between the ends, split by the rib walls (grown by `grow`); the piece holding `reference` kept.
@@ -151,7 +144,7 @@ InsertBuild build_insert(const blade::BladeModel& model, const InsertChamber& ch
   FeatureTool core;
   core.feature = name;
   core.shape = named_all_faces(inner, name);
-  if (!def.hub_open && !def.tip_open) core.expected_volume = volume_of(inner);  // inside the outer solid
+  if (!def.hub_open && !def.tip_open) core.expected_volume = brep::volume_of(inner);  // inside the outer solid
   shell.add(core);
   brep::NamedShape body = shell.apply(named_all_faces(outer, name));
   lap("shell");
@@ -305,7 +298,7 @@ InsertBuild build_insert(const blade::BladeModel& model, const InsertChamber& ch
   m.volume = holes.report().check.volume;
   double removed = 0;
   for (const ToolReport& t : holes.report().tools) removed += t.expected_volume;
-  m.expected_volume = volume_of(outer) - shell.report().tools.front().expected_volume - removed;
+  m.expected_volume = brep::volume_of(outer) - shell.report().tools.front().expected_volume - removed;
   return out;
 }
 

@@ -55,7 +55,7 @@ struct CooledPartOptions {
 
 using cg::kPi;
 
-inline double volume_of(const TopoDS_Shape& s) {
+inline double occt_volume(const TopoDS_Shape& s) {
   GProp_GProps g;
   BRepGProp::VolumeProperties(s, g, 1e-7, /*OnlyClosed=*/true);  // relative accuracy 1e-7 (as brep::verify_solid)
   return g.Mass();
@@ -179,9 +179,9 @@ inline CooledPart make_cooled_part(const config::Config& c, const CooledPartOpti
   brep::NamedShape blade{solid.solid, solid.faces};
   cp.uncooled = solid.solid;
   cp.uncooled_faces = solid.faces;
-  cp.uncooled_volume = volume_of(solid.solid);
+  cp.uncooled_volume = occt_volume(solid.solid);
   cp.part.push_back({"blade", tools.empty() ? blade : cut_named(blade, tools)});
-  cp.removed_volume = cp.uncooled_volume - volume_of(cp.part[0].geometry.shape);
+  cp.removed_volume = cp.uncooled_volume - occt_volume(cp.part[0].geometry.shape);
   if (o.insert && o.chambers > 0) {
     // A tube in the last chamber, clear of its wall, from 25 % to 70 % of the chamber's length (inside
     // the blade: the chamber starts below the hub).

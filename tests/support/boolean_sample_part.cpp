@@ -116,10 +116,10 @@ HollowBlade make_hollow_blade(const blade::BladeModel& model, const HollowBladeO
   FeatureTool core_tool;
   core_tool.feature = "chamber_1";
   core_tool.shape = tool;
-  core_tool.expected_volume = solid_volume(core.solid);  // the core lies inside the blade
+  core_tool.expected_volume = occt_volume(core.solid);  // the core lies inside the blade
   step.add(core_tool);
   hb.part = step.apply(part);
-  hb.volume = o.verify ? step.report().check.volume : solid_volume(hb.part.shape);
+  hb.volume = o.verify ? step.report().check.volume : occt_volume(hb.part.shape);
   return hb;
 }
 
