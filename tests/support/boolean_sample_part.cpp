@@ -111,7 +111,7 @@ HollowBlade make_hollow_blade(const blade::BladeModel& model, const HollowBladeO
 
   BooleanOptions bo;
   bo.parallel = true;
-  bo.verify_result = o.verify;
+  bo.verification = o.verify ? Verification::EachStep : Verification::None;
   BooleanStep step(BooleanOperation::Cut, bo);
   FeatureTool core_tool;
   core_tool.feature = "chamber_1";
