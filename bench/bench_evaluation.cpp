@@ -74,7 +74,6 @@ double checksum(const Vec3* P, std::size_t n) {
   return (a + b).sum();
 }
 
-Vec3 to_vec(const gp_XYZ& p) { return Vec3(p.X(), p.Y(), p.Z()); }
 
 // When set, chunked() also appends every output to these (the checking run; null while timing).
 struct Capture {
@@ -150,7 +149,7 @@ double occt_d0(const Curve& c, const std::vector<double>& u) {
     gp_Pnt Q;
     for (std::size_t k = 0; k < m; ++k) {
       c.D0(u[i + k], Q);
-      P[k] = to_vec(Q.XYZ());
+      P[k] = cg::occt::to_eigen(Q.XYZ());
     }
   });
 }
@@ -162,9 +161,9 @@ double occt_d2(const Curve& c, const std::vector<double>& u) {
     gp_Vec V1, V2;
     for (std::size_t k = 0; k < m; ++k) {
       c.D2(u[i + k], Q, V1, V2);
-      P[k] = to_vec(Q.XYZ());
-      D1[k] = to_vec(V1.XYZ());
-      D2[k] = to_vec(V2.XYZ());
+      P[k] = cg::occt::to_eigen(Q.XYZ());
+      D1[k] = cg::occt::to_eigen(V1.XYZ());
+      D2[k] = cg::occt::to_eigen(V2.XYZ());
     }
   });
 }
@@ -181,7 +180,7 @@ double occt_surface(const Surface& s, const std::vector<double>& uv) {
     gp_Pnt Q;
     for (std::size_t k = 0; k < m; ++k) {
       s.D0(uv[2 * (i + k)], uv[2 * (i + k) + 1], Q);
-      P[k] = to_vec(Q.XYZ());
+      P[k] = cg::occt::to_eigen(Q.XYZ());
     }
   });
 }

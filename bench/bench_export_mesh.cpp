@@ -63,7 +63,7 @@ double step_volume(const fs::path& file) {
   STEPControl_Reader r;
   if (r.ReadFile(file.string().c_str()) != IFSelect_RetDone) return -1;
   r.TransferRoots();
-  return test::volume_of(r.OneShape());
+  return test::occt_volume(r.OneShape());
 }
 
 // The goal of issue 20 for `coolinggen mesh` of the built-in example with the default sizes on 2 cores.

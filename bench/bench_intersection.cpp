@@ -27,13 +27,14 @@
 #include "adaptors/occt_convert.hpp"
 #include "bench_check.hpp"
 #include "src/algo/intersect_curves.hpp"
+#include "src/core/constants.hpp"
 #include "src/core/knots.hpp"
 
 namespace {
 
 using cg::BSplineCurve;
 using V2 = Eigen::Vector2d;
-constexpr double kPi = 3.14159265358979323846;
+using cg::kPi;
 constexpr double kTol = 1e-9;
 
 struct Pair {

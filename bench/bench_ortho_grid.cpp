@@ -19,6 +19,7 @@
 
 #include "src/config/builtin_example.hpp"
 #include "src/config/config.hpp"
+#include "src/core/constants.hpp"
 #include "src/grid/section_grid.hpp"
 #include "src/ortho/angle_least_squares.hpp"
 #include "src/ortho/monte_carlo.hpp"
@@ -51,7 +52,7 @@ double best_seconds(int reps, Run run) {
 }
 
 BezierCurve<2> example_cubic() { return BezierCurve<2>({{0, 0}, {1, 2}, {3, 2.5}, {4, 0.5}}, {1, 2.0, 0.6, 1}); }
-double wavy_eta(double u) { return 0.3 * std::sin(M_PI * u) - 0.1; }
+double wavy_eta(double u) { return 0.3 * std::sin(kPi * u) - 0.1; }
 
 void bench_exact(int curves, int reps) {
   std::mt19937_64 gen(12);
@@ -77,7 +78,7 @@ void bench_exact(int curves, int reps) {
     for (const auto& k : ks) {
       const OrthogonalContinuation c = continue_orthogonally(k, f, kind);
       degree = c.degree;
-      worst_cos = std::max(worst_cos, std::sin(measure_edge_angles(c.patch, orthogonal_map, 101).max_deviation_deg * M_PI / 180));
+      worst_cos = std::max(worst_cos, std::sin(measure_edge_angles(c.patch, orthogonal_map, 101).max_deviation_deg * kPi / 180));
     }
     const double t = best_seconds(reps, [&] {
       for (const auto& k : ks) g_sink = g_sink + continue_orthogonally(k, f, kind).patch.weight(0, 0);

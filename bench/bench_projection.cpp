@@ -38,7 +38,6 @@ volatile double g_sink = 0.0;
 
 bench::Checker g_check;
 
-gp_Pnt to_gp(const Vec3& p) { return gp_Pnt(p.x(), p.y(), p.z()); }
 
 void bench_curve(int npoints, int reps) {
   std::mt19937_64 gen(7);
@@ -67,14 +66,14 @@ void bench_curve(int npoints, int reps) {
   });
   const double t_occt_init = bench::best_seconds(reps, [&](int) {
     for (std::size_t i = 0; i < pts.size(); ++i) {
-      api.Perform(to_gp(pts[i]));
+      api.Perform(cg::occt::to_pnt(pts[i]));
       occt[i] = api.NbPoints() > 0 ? api.LowerDistance() : 1e300;
     }
   });
   const double t_occt_ctor = bench::best_seconds(std::max(1, reps / 2), [&](int) {
     double s = 0;
     for (const auto& P : pts) {
-      GeomAPI_ProjectPointOnCurve a(to_gp(P), oc);
+      GeomAPI_ProjectPointOnCurve a(cg::occt::to_pnt(P), oc);
       if (a.NbPoints() > 0) s += a.LowerDistance();
     }
     g_sink = g_sink + s;
@@ -126,7 +125,7 @@ void bench_surface(int npoints, int reps) {
   });
   const double t_occt = bench::best_seconds(reps, [&](int) {
     for (std::size_t i = 0; i < pts.size(); ++i) {
-      api.Perform(to_gp(pts[i]));
+      api.Perform(cg::occt::to_pnt(pts[i]));
       occt[i] = api.NbPoints() > 0 ? api.LowerDistance() : 1e300;  // none: the foot is on the boundary
     }
   });

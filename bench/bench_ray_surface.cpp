@@ -25,6 +25,7 @@
 #include "adaptors/occt_convert.hpp"
 #include "bench_check.hpp"
 #include "src/algo/ray_surface.hpp"
+#include "src/core/constants.hpp"
 #include "src/core/knots.hpp"
 
 namespace {
@@ -52,7 +53,7 @@ BSplineSurface<3> blade() {
   for (int j = 0; j < sections; ++j) {
     const double twist = 0.15 * j, z = 10.0 * j;
     for (int i = 0; i < du; ++i) {
-      const double th = 2 * M_PI * i / du, x = 20 * std::cos(th);
+      const double th = 2 * cg::kPi * i / du, x = 20 * std::cos(th);
       const double y = 1.5 * std::sin(th) * (1 + 0.4 * std::cos(th)) + 3 * (1 - x * x / 400);
       P[i][j] = V3(std::cos(twist) * x - std::sin(twist) * y, std::sin(twist) * x + std::cos(twist) * y, z);
     }

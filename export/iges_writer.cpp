@@ -47,6 +47,7 @@
 
 #include "adaptors/occt_convert.hpp"
 #include "export/atomic_file.hpp"
+#include "src/core/constants.hpp"
 #include "src/fit/approximate.hpp"
 #include "export/part_document.hpp"
 #include "export/version.hpp"
@@ -73,7 +74,7 @@ void set_param(const char* name, int value) {
 // three equal spans [a, a + D] (D = 2 pi / 3, knots at the angles a) are rational quadratic arcs, on
 // which tan((phi - m) / 2) = tan(D / 4) (2 (u - a) / D - 1), m the span's middle angle.
 double converted_angle_parameter(double phi) {
-  const double period = 2 * M_PI, span = period / 3;
+  const double period = 2 * kPi, span = period / 3;
   const double turns = std::floor(phi / period), local = phi - turns * period;
   const double a = std::min(2.0, std::floor(local / span)) * span, m = a + span / 2;
   return turns * period + m + span / 2 * std::tan((local - m) / 2) / std::tan(span / 4);
@@ -94,7 +95,7 @@ struct PcurveMap {
 // jumps; found by bisection between 16 samples per span), plus knots so that no span sweeps more than
 // pi / 16 of angle (c2's own spans are often one per loop piece).
 std::vector<double> mapped_pcurve_knots(const PcurveMap& c2, double first, double last, std::vector<double> knots, int p) {
-  const double third = 2 * M_PI / 3;
+  const double third = 2 * kPi / 3;
   auto sector = [&](double t) { return std::floor(c2.Value(t).X() / third); };
   const int samples = 16 * (static_cast<int>(knots.size()) - 2 * p - 1);
   for (int i = 0; i < samples; ++i) {
@@ -110,7 +111,7 @@ std::vector<double> mapped_pcurve_knots(const PcurveMap& c2, double first, doubl
   for (std::size_t k = static_cast<std::size_t>(p); k + static_cast<std::size_t>(p) + 1 < knots.size(); ++k) {
     const double a = knots[k], z = knots[k + 1];
     if (!(z > a)) continue;
-    const int n = static_cast<int>(std::ceil(std::abs(c2.Value(z).X() - c2.Value(a).X()) / (M_PI / 16)));
+    const int n = static_cast<int>(std::ceil(std::abs(c2.Value(z).X() - c2.Value(a).X()) / (kPi / 16)));
     for (int i = 1; i < n; ++i) refined.push_back(a + (z - a) * i / n);
   }
   for (double t : refined) knots.insert(std::upper_bound(knots.begin(), knots.end(), t), t);
@@ -276,7 +277,7 @@ class KeepBSplineFaces : public BRepTools_NurbsConvertModification {
       if (t <= fn) return f3;
       if (t >= ln) return l3;
       const double guess = f3 + (l3 - f3) * (t - fn) / (ln - fn), raw = ElCLib::Parameter(circ, cn->Value(t));
-      return raw + 2 * M_PI * std::round((guess - raw) / (2 * M_PI));
+      return raw + 2 * kPi * std::round((guess - raw) / (2 * kPi));
     };
     // C's distinct knots in (fn, ln) as simple knots of a cubic.
     const int p = 3;

@@ -28,7 +28,7 @@ void validate_passages(const blade::BladeModel& model, const PassagesDefinition&
 }
 
 PassagesResult build_passages(const blade::BladeModel& model, const brep::NamedShape& blade,
-                              const PassagesDefinition& def, bool verify_solid_after_steps) {
+                              const PassagesDefinition& def, Verification verification) {
   PassagesResult out;
   out.blade = blade;
   if (def.empty()) return out;
@@ -78,7 +78,7 @@ PassagesResult build_passages(const blade::BladeModel& model, const brep::NamedS
   if (core) rims = start_in_background([&core] { check_inlet_rims(*core); });
   PassageBooleanReport br;
   try {
-    out.blade = apply_passage_tools(blade, interior, cuts, br, verify_solid_after_steps, def.retries);
+    out.blade = apply_passage_tools(blade, interior, cuts, br, verification, def.retries);
   } catch (...) {
     if (rims.valid()) rims.get();
     throw;
@@ -86,7 +86,7 @@ PassagesResult build_passages(const blade::BladeModel& model, const brep::NamedS
   if (rims.valid()) rims.get();
   lap("boolean");
   out.check = br.cut.check;
-  out.checked = verify_solid_after_steps;
+  out.checked = verification == Verification::EachStep;
   out.report.min_clearance = br.min_clearance;
   out.report.wall_clearance = br.wall_clearance;
   for (const auto& v : br.voids) out.report.tools.push_back({v.feature, v.expected_volume, v.measured_volume, v.passed, "void"});
@@ -104,7 +104,7 @@ PassagesResult build_passages(const blade::BladeModel& model, const brep::NamedS
   std::exception_ptr wall_error;
   if (core) {
     try {
-      cooled = apply_wall_feature_tools(out.blade, out.wall_features, wall_report, verify_solid_after_steps, def.retries);
+      cooled = apply_wall_feature_tools(out.blade, out.wall_features, wall_report, verification, def.retries);
       // The last step verified the final solid.
       if (!out.wall_features.steps.empty()) out.check = out.wall_features.steps.back().check;
     } catch (...) {

@@ -8,6 +8,7 @@
 #include "features/passages/passage_report.hpp"
 #include "features/wall/wall_features.hpp"
 #include "src/blade/blade_surface.hpp"
+#include "src/brep/boolean/feature_options.hpp"
 #include "src/brep/named_shape.hpp"
 #include "src/brep/verify.hpp"
 
@@ -33,10 +34,10 @@ void validate_passages(const blade::BladeModel& model, const PassagesDefinition&
 /// Builds `def` into `blade` (the solid of `model`). Throws PassageInputError for input that cannot be
 /// built (field below "cooling" + where), FeatureFailure when a boolean or a design check fails (the
 /// thickness minimums: measured on the built solid, must reach the configured values).
-/// `verify_solid_after_steps` false: the boolean steps run their cheap checks and per-tool volume checks
+/// `verification` FinalOnly (or None): the boolean steps run their cheap checks and per-tool volume checks
 /// but no verify_solid (BRepCheck, free edges, closed mesh: ~1 s each on the blade); the caller then
 /// verifies the final solid once and, if that fails, builds again with it on to name the culprit.
 PassagesResult build_passages(const blade::BladeModel& model, const brep::NamedShape& blade,
-                              const PassagesDefinition& def, bool verify_solid_after_steps = true);
+                              const PassagesDefinition& def, Verification verification = Verification::EachStep);
 
 }  // namespace cg::features

@@ -4,13 +4,13 @@
 #include <cmath>
 
 #include "src/blade/curve_integral.hpp"
+#include "src/core/constants.hpp"
 #include "src/core/newton.hpp"
 #include "src/fit/interpolate.hpp"
 
 namespace cg::features {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kResidual = 1e-10;  // mm: a line/surface hit counts as exact below this
 constexpr int kDegree = 5;          // quintic interpolants: error O(h^6), a third of the nodes of cubics at 1e-7 mm
 

@@ -23,15 +23,13 @@
 #include <tuple>
 
 #include "adaptors/occt_convert.hpp"
+#include "src/core/constants.hpp"
 #include "src/core/error.hpp"
 #include "src/algo/segment_distance.hpp"
 
 namespace cg::features::drill_detail {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
-gp_Pnt pnt(const Eigen::Vector3d& p) { return gp_Pnt(p.x(), p.y(), p.z()); }
 
 }  // namespace
 
@@ -109,7 +107,7 @@ struct Workspace {
   bool meets(int f, const Eigen::Vector3d& p, const Eigen::Vector3d& d, double length) {
     auto& x = intersectors[static_cast<std::size_t>(f)];
     if (!x) x = std::make_unique<IntCurvesFace_Intersector>(part->faces[static_cast<std::size_t>(f)].face, 1e-7);
-    x->Perform(gp_Lin(pnt(p), gp_Dir(d.x(), d.y(), d.z())), 0, length);
+    x->Perform(gp_Lin(occt::to_pnt(p), gp_Dir(d.x(), d.y(), d.z())), 0, length);
     return x->IsDone() ? x->NbPnt() > 0 : true;
   }
   // IN or ON the face (a point on the boundary counts as reaching it).
@@ -272,8 +270,8 @@ std::vector<HolePlan> initial_plans(const std::vector<CylindricalHole>& holes, c
             "drill_holes: hole '" + h.name + "': diameter and length must be > 0");
     plans[i].cyl = HoleCylinder::from_axis(h.origin, h.axis, 0.5 * h.diameter, h.length);
     const HoleCylinder& c = plans[i].cyl;
-    plans[i].box.Add(pnt(c.o));
-    plans[i].box.Add(pnt(c.o + c.length * c.d));
+    plans[i].box.Add(occt::to_pnt(c.o));
+    plans[i].box.Add(occt::to_pnt(c.o + c.length * c.d));
     plans[i].box.Enlarge(c.radius + o.margin);
   }
   return plans;

@@ -17,14 +17,13 @@
 #include <cmath>
 
 #include "adaptors/occt_convert.hpp"
+#include "src/core/constants.hpp"
 
 namespace cg::features {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kMinTolerance = 1e-7;  // Precision::Confusion(): OCCT's floor for any tolerance
 
-gp_Pnt pnt(const Eigen::Vector3d& p) { return gp_Pnt(p.x(), p.y(), p.z()); }
 
 // The cylinder pcurve (theta(s), t(s)) = (2 pi s, t(s)) as a clamped B-spline on [0, 1]: the periodic
 // interpolant of t made non-periodic, and x set to 2 pi times the Greville abscissae (a B-spline with
@@ -83,13 +82,13 @@ HoleShape build_hole_shape(const HoleCylinder& h, const HoleLoop& entry, const W
                            const HoleLoop& exit, const WallFaceGeometry& exit_wall) {
   BRep_Builder b;
   const Handle(Geom_Surface) cylinder =
-      new Geom_CylindricalSurface(gp_Ax3(pnt(h.o), gp_Dir(h.d.x(), h.d.y(), h.d.z()), gp_Dir(h.e1.x(), h.e1.y(), h.e1.z())),
+      new Geom_CylindricalSurface(gp_Ax3(occt::to_pnt(h.o), gp_Dir(h.d.x(), h.d.y(), h.d.z()), gp_Dir(h.e1.x(), h.e1.y(), h.e1.z())),
                                   h.radius);
   HoleShape s;
   TopoDS_Vertex va, vb;
   const double tol_a = std::max(kMinTolerance, 1.5 * entry.deviation), tol_b = std::max(kMinTolerance, 1.5 * exit.deviation);
-  b.MakeVertex(va, pnt(entry.start), tol_a);
-  b.MakeVertex(vb, pnt(exit.start), tol_b);
+  b.MakeVertex(va, occt::to_pnt(entry.start), tol_a);
+  b.MakeVertex(vb, occt::to_pnt(exit.start), tol_b);
   s.entry = loop_edge(entry, entry_wall, cylinder, va);
   s.exit = loop_edge(exit, exit_wall, cylinder, vb);
 
@@ -97,7 +96,7 @@ HoleShape build_hole_shape(const HoleCylinder& h, const HoleLoop& entry, const W
   // up the right side of the (theta, t) rectangle) and theta = 0 (REVERSED, down its left side).
   const double t0 = entry.cylinder_pcurve.point(0)[1], t1 = exit.cylinder_pcurve.point(0)[1];
   TopoDS_Edge seam;
-  b.MakeEdge(seam, new Geom_Line(pnt(h.ruling(0, h.radius)), gp_Dir(h.d.x(), h.d.y(), h.d.z())), kMinTolerance);
+  b.MakeEdge(seam, new Geom_Line(occt::to_pnt(h.ruling(0, h.radius)), gp_Dir(h.d.x(), h.d.y(), h.d.z())), kMinTolerance);
   b.Add(seam, va.Oriented(TopAbs_FORWARD));
   b.Add(seam, vb.Oriented(TopAbs_REVERSED));
   b.UpdateEdge(seam, new Geom2d_Line(gp_Pnt2d(2 * kPi, 0), gp_Dir2d(0, 1)), new Geom2d_Line(gp_Pnt2d(0, 0), gp_Dir2d(0, 1)),

@@ -23,11 +23,13 @@
 #include <functional>
 #include <map>
 
+#include "adaptors/occt_convert.hpp"
 #include "src/brep/face_flux.hpp"
 #include "src/brep/face_patches.hpp"
 #include "features/drilling/drill_hole_geometry.hpp"
 #include "features/drilling/drill_hole_plan.hpp"
 #include "features/drilling/drill_hole_topology.hpp"
+#include "src/core/constants.hpp"
 #include "src/core/error.hpp"
 #include "src/core/format.hpp"
 
@@ -37,11 +39,9 @@ using namespace drill_detail;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-gp_Pnt pnt(const Eigen::Vector3d& p) { return gp_Pnt(p.x(), p.y(), p.z()); }
 
 // 1/3 * integral over the face of (x - c) . n dA with BRepGProp's fixed Gauss rule (orders from the
 // surface's and the edges' degrees and spans; no adaptive refinement: the faces here are small and
@@ -155,7 +155,7 @@ brep::NamedShape apply_fallback(const brep::NamedShape& part, const std::vector<
 
 FeatureTool hole_tool(const CylindricalHole& hole) {
   const HoleCylinder c = HoleCylinder::from_axis(hole.origin, hole.axis, 0.5 * hole.diameter, hole.length);
-  const gp_Ax2 ax(pnt(c.o), gp_Dir(c.d.x(), c.d.y(), c.d.z()), gp_Dir(c.e1.x(), c.e1.y(), c.e1.z()));
+  const gp_Ax2 ax(occt::to_pnt(c.o), gp_Dir(c.d.x(), c.d.y(), c.d.z()), gp_Dir(c.e1.x(), c.e1.y(), c.e1.z()));
   FeatureTool tool;
   tool.feature = hole.name;
   tool.shape.shape = BRepPrimAPI_MakeCylinder(ax, c.radius, c.length).Shape();
@@ -175,7 +175,7 @@ brep::NamedShape patch_walls(const brep::NamedShape& input, const std::vector<Ho
   if (o.patch_min_holes > 0 && static_cast<int>(hole_count) >= o.patch_min_holes) {
     std::vector<TopoDS_Shape> tools;
     for (const HolePlan& p : plans)
-      tools.push_back(BRepPrimAPI_MakeCylinder(gp_Ax2(pnt(p.cyl.o), gp_Dir(p.cyl.d.x(), p.cyl.d.y(), p.cyl.d.z())),
+      tools.push_back(BRepPrimAPI_MakeCylinder(gp_Ax2(occt::to_pnt(p.cyl.o), gp_Dir(p.cyl.d.x(), p.cyl.d.y(), p.cyl.d.z())),
                                                p.cyl.radius, p.cyl.length)
                           .Shape());
     PatchOptions po;
@@ -281,8 +281,8 @@ void check_drilled_hole(DrilledHole& dh, const HolePlan& p, const HoleShape& s, 
     double v2 = 0;
     dh.volume = 0;
     for (const TopoDS_Face& face : {cap_a, cap_b, s.face}) {
-      dh.volume += adaptive ? face_flux(face, pnt(mid)) : hole_face_flux(face, pnt(mid));
-      v2 += adaptive ? face_flux(face, pnt(mid2)) : hole_face_flux(face, pnt(mid2));
+      dh.volume += adaptive ? face_flux(face, occt::to_pnt(mid)) : hole_face_flux(face, occt::to_pnt(mid));
+      v2 += adaptive ? face_flux(face, occt::to_pnt(mid2)) : hole_face_flux(face, occt::to_pnt(mid2));
     }
     dh.closure = std::abs(dh.volume - v2);
   };
@@ -325,7 +325,7 @@ void check_rebuilt_wall(int face, const Part& part, const Topology& topo, const 
     return;
   }
   // Integral after = before - the caps of its holes (all about one point near the face).
-  const gp_Pnt c = pnt(0.5 * (Eigen::Vector3d(fi.box.CornerMin().X(), fi.box.CornerMin().Y(), fi.box.CornerMin().Z()) +
+  const gp_Pnt c = occt::to_pnt(0.5 * (Eigen::Vector3d(fi.box.CornerMin().X(), fi.box.CornerMin().Y(), fi.box.CornerMin().Z()) +
                               Eigen::Vector3d(fi.box.CornerMax().X(), fi.box.CornerMax().Y(), fi.box.CornerMax().Z())));
   double caps = 0, cap_sum_abs = 0;
   for (const auto& [hole, e] : topo.on_face.at(face)) {

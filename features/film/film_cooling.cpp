@@ -10,7 +10,8 @@
 namespace cg::features {
 
 FilmCoolingResult build_film_cooling(const blade::BladeModel& model, const brep::NamedShape& blade, FilmCavity cavity,
-                                     const FilmCoolingDefinition& def, ProgressSink* progress, bool verify_solid_after_steps) {
+                                     const FilmCoolingDefinition& def, const FeatureOptions& stage) {
+  ProgressSink* const progress = stage.progress;
   require(cavity.target.model == &model, "film cooling: the cavity belongs to another blade model");
   FilmCoolingResult out;
   out.blade = blade;
@@ -66,7 +67,7 @@ FilmCoolingResult build_film_cooling(const blade::BladeModel& model, const brep:
   if (def.has_holes()) {
     poll("the film hole cut");
     BooleanOptions options = film_boolean_options(progress);
-    options.verify_result = verify_solid_after_steps;
+    options.verification = stage.verification;
     options.perturbed_retries = def.retries;
     FilmCutResult cut = cut_film_holes(blade, cavity.target, tools, options);
     out.blade = std::move(cut.blade);

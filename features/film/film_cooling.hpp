@@ -12,9 +12,9 @@
 #include "features/film/film_report.hpp"
 #include "features/film/hole_target.hpp"
 #include "features/film/insert.hpp"
+#include "src/brep/boolean/feature_options.hpp"
 #include "src/brep/named_shape.hpp"
 #include "src/brep/verify.hpp"
-#include "src/core/progress.hpp"
 
 namespace cg::features {
 
@@ -37,9 +37,9 @@ struct FilmCoolingResult {
 
 /// Throws FilmInputError (field below "cooling") for input the blade cannot take, FeatureFailure when a
 /// boolean or a check fails. `cavity.target.model` must be `model`.
-/// `verify_solid_after_steps` false: the holes' boolean step skips verify_solid (as build_passages).
+/// `options.verification` FinalOnly, None: the holes' boolean step skips verify_solid (as build_passages);
+/// `options.progress`: progress and cancellation.
 FilmCoolingResult build_film_cooling(const blade::BladeModel& model, const brep::NamedShape& blade, FilmCavity cavity,
-                                     const FilmCoolingDefinition& def, ProgressSink* progress = nullptr,
-                                     bool verify_solid_after_steps = true);
+                                     const FilmCoolingDefinition& def, const FeatureOptions& options = {});
 
 }  // namespace cg::features

@@ -143,7 +143,7 @@ FilmCutResult cut_film_holes(const brep::NamedShape& blade, const HoleTarget& ta
     out.blade = step.apply(out.blade);
     const BooleanStepReport& br = step.report();
     out.check = br.check;
-    out.checked = options.verify_result;
+    out.checked = options.verification == Verification::EachStep;
     rep.tool_clusters = br.cluster_count;
     rep.boolean_runs += br.boolean_runs;
     for (const ToolReport& t : br.tools) measured[t.feature] = {t.cluster < 0 ? t.measured_volume : 0.0, t.passed};

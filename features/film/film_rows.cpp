@@ -1,4 +1,5 @@
 #include "features/film/film_rows.hpp"
+#include "src/core/constants.hpp"
 #include "src/core/format.hpp"
 
 #include <algorithm>
@@ -8,7 +9,6 @@
 namespace cg::features {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr int kRowSegments = 64;
 
 // Cumulative polyline length at the even nodes of `pts`, extrapolated (Richardson, polyline error h^2).

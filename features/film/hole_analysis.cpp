@@ -9,12 +9,11 @@
 #include "src/algo/ray_surface.hpp"
 #include "src/analyze/gauss_legendre.hpp"
 #include "src/blade/blade_coordinates.hpp"
+#include "src/core/constants.hpp"
 #include "src/core/format.hpp"
 
 namespace cg::features {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 
 // A reference point of a diffuser piece: its position (x, y) in the section at t is linear in t.

@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "src/core/constants.hpp"
 #include "src/core/error.hpp"
 #include "src/core/format.hpp"
 
 namespace cg::features {
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 double tan_deg(double a) { return std::tan(a * kPi / 180); }
 }  // namespace
 

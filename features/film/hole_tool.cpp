@@ -23,25 +23,23 @@
 #include <cmath>
 #include <vector>
 
+#include "adaptors/occt_convert.hpp"
+#include "src/core/constants.hpp"
 #include "src/core/error.hpp"
 
 namespace cg::features {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
-gp_Pnt pnt(const Eigen::Vector3d& p) { return gp_Pnt(p.x(), p.y(), p.z()); }
-gp_Dir dir(const Eigen::Vector3d& v) { return gp_Dir(v.x(), v.y(), v.z()); }
 
 // Points and arcs of the hole frame: P(s, x, y) = E + s d + x e_l + y e_f.
 struct Local {
   HoleFrame f;
   Eigen::Vector3d l;
   explicit Local(const HoleFrame& frame) : f(frame), l(frame.lateral()) {}
-  gp_Pnt at(double s, double x, double y) const { return pnt(f.exit + s * f.axis + x * l + y * f.forward); }
+  gp_Pnt at(double s, double x, double y) const { return occt::to_pnt(f.exit + s * f.axis + x * l + y * f.forward); }
   // Circle in the section plane at s, centre (x, y); parameter theta from e_l towards e_f.
   Handle(Geom_Circle) circle(double s, double x, double y, double radius) const {
-    return new Geom_Circle(gp_Ax2(at(s, x, y), dir(-f.axis), dir(l)), radius);
+    return new Geom_Circle(gp_Ax2(at(s, x, y), occt::to_dir(-f.axis), occt::to_dir(l)), radius);
   }
 };
 
@@ -78,7 +76,7 @@ TopoDS_Shape fan_solid(const HoleFrame& frame, const HoleShape& shape, const Hol
   BRepBuilderAPI_MakeWire top_wire;
   const Handle(Geom_Circle) start = L.circle(sd, 0, 0, r), end = L.circle(se, 0, 0, r);
   const Handle(Geom_CylindricalSurface) cyl =
-      new Geom_CylindricalSurface(gp_Ax3(L.at(se, 0, 0), dir(-frame.axis), dir(L.l)), r);
+      new Geom_CylindricalSurface(gp_Ax3(L.at(se, 0, 0), occt::to_dir(-frame.axis), occt::to_dir(L.l)), r);
   // Junction points of the quadrants: metering circle at angle 90 q, top section's straight sides.
   const double jx[4] = {r, 0, -r, 0}, jy[4] = {0, r, 0, -r};
   for (int q = 0; q < 4; ++q) {
@@ -89,7 +87,7 @@ TopoDS_Shape fan_solid(const HoleFrame& frame, const HoleShape& shape, const Hol
       // quarter arc swept along a straight line, an exact surface of linear extrusion, which OCCT
       // intersects faster and more robustly than a general ruled B-spline.
       const Eigen::Vector3d v = (st - sd) * frame.axis + cx[q] * L.l + cy[q] * frame.forward;
-      const Handle(Geom_SurfaceOfLinearExtrusion) ext = new Geom_SurfaceOfLinearExtrusion(start, dir(v));
+      const Handle(Geom_SurfaceOfLinearExtrusion) ext = new Geom_SurfaceOfLinearExtrusion(start, occt::to_dir(v));
       faces.push_back(BRepBuilderAPI_MakeFace(ext, 0.5 * kPi * q, 0.5 * kPi * (q + 1), 0, v.norm(), 1e-7).Face());
     } else {
       faces.push_back(BRepFill::Face(bottom, top_arc));
@@ -130,7 +128,7 @@ TopoDS_Shape make_hole_solid(const HoleFrame& frame, const HoleShape& shape, con
   TopoDS_Shape tool;
   if (shape.kind == HoleKind::Cylindrical) {
     require(e.s_end > e.s_top, "hole tool: s_end must be > s_top");
-    const gp_Ax2 ax(pnt(frame.exit + e.s_top * frame.axis), dir(frame.axis), dir(frame.lateral()));
+    const gp_Ax2 ax(occt::to_pnt(frame.exit + e.s_top * frame.axis), occt::to_dir(frame.axis), occt::to_dir(frame.lateral()));
     tool = BRepPrimAPI_MakeCylinder(ax, r, e.s_end - e.s_top).Shape();
   } else {
     require(e.s_top < e.s_diffuser && e.s_diffuser < e.s_end, "hole tool: need s_top < s_diffuser < s_end");
@@ -141,7 +139,7 @@ TopoDS_Shape make_hole_solid(const HoleFrame& frame, const HoleShape& shape, con
   const Eigen::Vector3d n = extent.end_normal.normalized(), p = frame.exit + extent.s_end * frame.axis;
   const Eigen::Vector3d x = n.unitOrthogonal(), y = n.cross(x);
   const double big = 4 * (e.s_end - e.s_top) + 20 * shape.diameter;
-  const gp_Ax2 ax(pnt(p - 0.5 * big * (x + y)), dir(-n), dir(x));
+  const gp_Ax2 ax(occt::to_pnt(p - 0.5 * big * (x + y)), occt::to_dir(-n), occt::to_dir(x));
   BRepAlgoAPI_Common common(tool, BRepPrimAPI_MakeBox(ax, big, big, big).Shape());
   if (!common.IsDone() || common.HasErrors()) throw AlgorithmFailure("hole tool: cannot cut the tool's oblique end");
   TopExp_Explorer solids(common.Shape(), TopAbs_SOLID);

@@ -4,8 +4,6 @@
 #include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepClass3d_SolidClassifier.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
-#include <BRepGProp.hxx>
-#include <GProp_GProps.hxx>
 #include <IntCurvesFace_ShapeIntersector.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
@@ -16,28 +14,22 @@
 #include <cmath>
 #include <cstdio>
 
+#include "adaptors/occt_convert.hpp"
 #include "features/film/hole_analysis.hpp"
 #include "features/film/hole_rays.hpp"
 #include "features/film/hole_target.hpp"
 #include "features/film/hole_tool.hpp"
 #include "src/blade/blade_coordinates.hpp"
 #include "src/brep/occt_progress.hpp"
+#include "src/brep/solid_integrals.hpp"
+#include "src/core/constants.hpp"
 #include "src/core/format.hpp"
 
 namespace cg::features {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 
-
-double volume_of(const TopoDS_Shape& s) {
-  GProp_GProps p;
-  BRepGProp::VolumeProperties(s, p, 1e-9, true);
-  return p.Mass();
-}
-
-gp_Pnt pnt(const Eigen::Vector3d& p) { return gp_Pnt(p.x(), p.y(), p.z()); }
 
 // The solid between the ends, split by the rib walls (grown by `grow`); the piece holding `reference` kept.
 TopoDS_Shape chamber_solid(const BSplineSurface<3>& surface, const brep::EndTrim& hub, const brep::EndTrim& tip,
@@ -55,7 +47,7 @@ TopoDS_Shape chamber_solid(const BSplineSurface<3>& surface, const brep::EndTrim
   split.Build();
   if (!split.IsDone() || split.HasErrors()) throw FeatureFailure(what + ": splitting by the rib walls failed");
   for (TopExp_Explorer e(split.Shape(), TopAbs_SOLID); e.More(); e.Next()) {
-    BRepClass3d_SolidClassifier in(e.Current(), pnt(chamber.reference), 1e-7);
+    BRepClass3d_SolidClassifier in(e.Current(), occt::to_pnt(chamber.reference), 1e-7);
     if (in.State() == TopAbs_IN) return e.Current();
   }
   throw FeatureFailure(what + ": no piece between the ribs holds the chamber's reference point");
@@ -276,7 +268,7 @@ FeatureTool jet_tool(const Jet& jet, const char* jn, NearCaster& entry, NearCast
   t.feature = jn;
   t.shape = named_all_faces(make_hole_solid(hf, cyl, ext), jn);
   t.expected_volume = volume;
-  t.symmetry_axis = gp_Ax1(pnt(base), gp_Dir(d.x(), d.y(), d.z()));
+  t.symmetry_axis = gp_Ax1(occt::to_pnt(base), gp_Dir(d.x(), d.y(), d.z()));
   return t;
 }
 
@@ -305,7 +297,7 @@ InsertBuild build_insert(const blade::BladeModel& model, const InsertChamber& ch
   FeatureTool core;
   core.feature = name;
   core.shape = named_all_faces(inner, name);
-  if (!def.hub_open && !def.tip_open) core.expected_volume = volume_of(inner);  // inside the outer solid
+  if (!def.hub_open && !def.tip_open) core.expected_volume = brep::volume_of(inner);  // inside the outer solid
   shell.add(core);
   brep::NamedShape body = shell.apply(named_all_faces(outer, name));
   lap("shell");
@@ -349,7 +341,7 @@ InsertBuild build_insert(const blade::BladeModel& model, const InsertChamber& ch
   m.volume = holes.report().check.volume;
   double removed = 0;
   for (const ToolReport& t : holes.report().tools) removed += t.expected_volume;
-  m.expected_volume = volume_of(outer) - shell.report().tools.front().expected_volume - removed;
+  m.expected_volume = brep::volume_of(outer) - shell.report().tools.front().expected_volume - removed;
   return out;
 }
 
@@ -378,13 +370,13 @@ void measure_insert(const blade::BladeModel& model, const brep::NamedShape& blad
       const double c = c_lo + (c_hi - c_lo) * (i - 0.5 + 0.37) / 8.0;  // off the jet lines' even spacing
       const blade::BladeFrame f = coords.frame(s, c);
       const Eigen::Vector3d p = f.point - off * f.normal, n = f.normal;
-      const gp_Lin out_line(pnt(p), gp_Dir(n.x(), n.y(), n.z()));
+      const gp_Lin out_line(occt::to_pnt(p), gp_Dir(n.x(), n.y(), n.z()));
       on_blade.Perform(out_line, 0, 10 * def.gap + 1);
       double g = HUGE_VAL;
       for (int k = 1; k <= on_blade.NbPnt(); ++k) g = std::min(g, on_blade.WParameter(k));
       gap_normal_min = std::min(gap_normal_min, g);
       const Eigen::Vector3d q = p + 1e-3 * n;
-      const gp_Lin in_line(pnt(q), gp_Dir(-n.x(), -n.y(), -n.z()));
+      const gp_Lin in_line(occt::to_pnt(q), gp_Dir(-n.x(), -n.y(), -n.z()));
       on_insert.Perform(in_line, 0, 10 * def.sheet_thickness + 1);
       std::vector<double> w;
       for (int k = 1; k <= on_insert.NbPnt(); ++k) w.push_back(on_insert.WParameter(k));

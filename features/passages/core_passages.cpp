@@ -25,7 +25,9 @@
 #include <set>
 #include <sstream>
 
+#include "adaptors/occt_convert.hpp"
 #include "src/brep/naming/face_names.hpp"
+#include "src/core/constants.hpp"
 #include "src/core/format.hpp"
 #include "src/brep/blade_solid.hpp"
 #include "src/core/newton.hpp"
@@ -55,14 +57,13 @@ class Stopwatch {
   std::chrono::steady_clock::time_point t0_ = std::chrono::steady_clock::now();
 };
 
-gp_Pnt pnt(const Vec3& p) { return gp_Pnt(p.x(), p.y(), p.z()); }
 
 // Point-in-solid tests against one solid (the classifier's face explorer is built once).
 class Inside {
  public:
   explicit Inside(const TopoDS_Shape& solid) { c_.Load(solid); }
   bool operator()(const Vec3& p) {
-    c_.Perform(pnt(p), 1e-7);
+    c_.Perform(occt::to_pnt(p), 1e-7);
     return c_.State() == TopAbs_IN;
   }
 
@@ -75,8 +76,6 @@ std::string alerts(const Message_Report& r, Message_Gravity g) {
   for (const Handle(Message_Alert)& a : r.GetAlerts(g)) s += (s.empty() ? "" : ", ") + std::string(a->GetMessageKey());
   return s;
 }
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Parameter t along x0 + t dir (|t| <= 50 mm) where the end wall's signed distance reaches `target`
 // (the distance grows along dir, which points into the flow path; Illinois regula falsi to 1e-12 mm).
@@ -460,7 +459,7 @@ std::vector<int> chamber_cells(const std::vector<TopoDS_Shape>& cells, const std
   for (std::size_t c = 0; c < cells.size(); ++c) BRepBndLib::Add(cells[c], cell_box[c]);
   for (std::size_t k = 0; k < chambers.size(); ++k) {
     for (std::size_t c = 0; c < cells.size() && cell_of[k] < 0; ++c) {
-      if (cell_box[c].IsOut(pnt(chambers[k].reference))) continue;
+      if (cell_box[c].IsOut(occt::to_pnt(chambers[k].reference))) continue;
       if (!in_cell[c]) in_cell[c] = std::make_unique<Inside>(cells[c]);
       if ((*in_cell[c])(chambers[k].reference)) cell_of[k] = static_cast<int>(c);
     }
@@ -569,7 +568,7 @@ void assign_pieces(const std::vector<TopoDS_Shape>& pieces, const std::vector<in
     std::optional<Inside> in_piece;
     for (int k : members) {
       const Vec3& ref = out.chambers[static_cast<std::size_t>(k)].reference;
-      if (box.IsOut(pnt(ref))) continue;
+      if (box.IsOut(occt::to_pnt(ref))) continue;
       if (!in_piece) in_piece.emplace(piece);
       if ((*in_piece)(ref)) owner = k;
     }
@@ -653,7 +652,7 @@ void build_inlet(std::size_t m, const blade::BladeModel& model, const blade::Bla
   auto along = [&](const EndWall& w, double target) { return along_line(w, x0, dir, target); };
   const double reach = std::max(0.5, 0.25 * in.diameter);
   const double t0 = along(outside, 0.0), t1 = along(wall, reach);
-  const gp_Ax2 ax(pnt(x0 + t0 * dir), gp_Dir(dir.x(), dir.y(), dir.z()));
+  const gp_Ax2 ax(occt::to_pnt(x0 + t0 * dir), gp_Dir(dir.x(), dir.y(), dir.z()));
   BRepPrimAPI_MakeCylinder cyl(ax, 0.5 * in.diameter, t1 - t0);
   cyl.Build();
   if (!cyl.IsDone()) throw FeatureFailure(name + ": cannot make its cylinder");

@@ -30,7 +30,7 @@ brep::NamedShape cut_passage_tools(const brep::NamedShape& part, const std::vect
 
 brep::NamedShape apply_passage_tools(const brep::NamedShape& part, const std::vector<FeatureTool>& interior,
                                      const std::vector<FeatureTool>& cuts, PassageBooleanReport& report,
-                                     bool verify_result, PerturbedRetries retries) {
+                                     Verification verification, PerturbedRetries retries) {
   const auto t0 = std::chrono::steady_clock::now();
   report = PassageBooleanReport{};
   brep::NamedShape current = part;
@@ -131,7 +131,7 @@ brep::NamedShape apply_passage_tools(const brep::NamedShape& part, const std::ve
     report.void_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   }
   if (cuts.empty()) {
-    if (!verify_result) return current;
+    if (verification != Verification::EachStep) return current;
     // No boolean follows: check the blade with its voids here (otherwise the cut checks the result).
     report.cut.check = brep::verify_solid(current.shape);
     if (!report.cut.check.all_passed())
@@ -139,7 +139,7 @@ brep::NamedShape apply_passage_tools(const brep::NamedShape& part, const std::ve
     return current;
   }
   BooleanOptions options;
-  options.verify_result = verify_result;
+  options.verification = verification;
   options.perturbed_retries = retries;
   return cut_passage_tools(current, cuts, report.cut, options);
 }

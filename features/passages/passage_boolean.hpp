@@ -27,10 +27,11 @@ struct PassageBooleanReport {
 /// part's boundary (BRepExtrema_DistShapeShape) is positive and a point of it lies inside the part. The
 /// result is checked like a boolean result (verify_solid, removed volume = the tools' volume). The
 /// `cuts` then go through the verified boolean path. Throws FeatureFailure naming the feature.
-/// `verify_result`: false leaves verify_solid of the result to the caller (every other check still runs).
+/// `verification` FinalOnly, None: verify_solid of the result is left to the caller (every other check still runs).
 brep::NamedShape apply_passage_tools(const brep::NamedShape& part, const std::vector<FeatureTool>& interior,
                                      const std::vector<FeatureTool>& cuts, PassageBooleanReport& report,
-                                     bool verify_result = true, PerturbedRetries retries = PerturbedRetries::Any);
+                                     Verification verification = Verification::EachStep,
+                                     PerturbedRetries retries = PerturbedRetries::Any);
 
 /// Cuts `tools` from `part` through one verified BooleanStep; returns the named result and fills
 /// `report`. Throws FeatureFailure naming the feature(s) when a check fails.

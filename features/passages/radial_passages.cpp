@@ -8,14 +8,11 @@
 #include <sstream>
 
 #include "src/brep/naming/face_names.hpp"
+#include "src/core/constants.hpp"
 #include "src/core/format.hpp"
 #include "src/blade/blade_coordinates.hpp"
 
 namespace cg::features {
-namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-}  // namespace
 
 RadialPassageBuild build_radial_passages(const blade::BladeModel& model,
                                          const std::vector<RadialPassageDefinition>& passages) {

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "adaptors/occt_convert.hpp"
+#include "src/core/constants.hpp"
 #include "src/core/format.hpp"
 #include "src/algo/project_point_surface.hpp"
 #include "src/core/error.hpp"
@@ -24,7 +25,6 @@ namespace {
 
 
 using Vec3 = Eigen::Vector3d;
-constexpr double kPi = 3.14159265358979323846;
 
 
 // Rational quadratic arc c + r (cos t u + sin t v), t from t0 to t1 (t1 - t0 < pi; u, v orthonormal):

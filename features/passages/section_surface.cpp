@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "adaptors/occt_convert.hpp"
+#include "src/core/constants.hpp"
 #include "src/core/error.hpp"
 #include "src/core/format.hpp"
 
@@ -18,7 +19,6 @@ namespace {
 
 using Vec2 = Eigen::Vector2d;
 using Vec3 = Eigen::Vector3d;
-constexpr double kPi = 3.14159265358979323846;
 constexpr int kSamples = 512;  // streamline samples: foot search start, area function nodes
 
 }  // namespace

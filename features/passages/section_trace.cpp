@@ -14,6 +14,7 @@
 #include <cmath>
 #include <limits>
 
+#include "adaptors/occt_convert.hpp"
 #include "src/brep/boolean/verified_boolean.hpp"
 #include "src/core/newton.hpp"
 #include "src/core/format.hpp"
@@ -31,8 +32,6 @@ constexpr double kMaxTurn = 0.1;     // rad per step
 constexpr double kOnCurve = 1e-11;   // mm, Newton's target |g|
 constexpr int kMaxSteps = 200000;
 
-Vec3 vec(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
-Vec3 vec(const gp_Vec& v) { return {v.X(), v.Y(), v.Z()}; }
 
 // A point of the zero set of f(u, v) = g(S(u, v)) on one surface with what the tracer needs there.
 struct Node {
@@ -54,12 +53,12 @@ class CurveTracer {
     surf_.D1(uv.X(), uv.Y(), p, su, sv);
     Node n;
     n.uv = uv;
-    n.p = vec(p);
+    n.p = occt::to_eigen(p);
     Vec3 grad;
     n.g = s_.value(n.p, &grad, &n.t);
-    n.fu = grad.dot(vec(su));
-    n.fv = grad.dot(vec(sv));
-    n.tangent = vec(su) * n.fv - vec(sv) * n.fu;
+    n.fu = grad.dot(occt::to_eigen(su));
+    n.fv = grad.dot(occt::to_eigen(sv));
+    n.tangent = occt::to_eigen(su) * n.fv - occt::to_eigen(sv) * n.fu;
     return n;
   }
   // Newton along grad f onto f = 0.
@@ -211,19 +210,19 @@ void edge_crossings(const TopoDS_Edge& edge, int index, SpanSurfaceEvaluator& s,
   if (BRep_Tool::Degenerated(edge)) return;
   const BRepAdaptor_Curve c(edge);
   const double a = c.FirstParameter(), b = c.LastParameter(), xtol = 1e-15 * (std::abs(a) + std::abs(b) + (b - a));
-  auto g = [&](double t) { return s.value(vec(c.Value(t))); };
+  auto g = [&](double t) { return s.value(occt::to_eigen(c.Value(t))); };
   struct Sample {
     double t, g;
     Vec3 p;
   };
   auto sample = [&](double t) {
-    const Vec3 p = vec(c.Value(t));
+    const Vec3 p = occt::to_eigen(c.Value(t));
     return Sample{t, s.value(p), p};
   };
   auto scan = [&](auto& self, const Sample& x, const Sample& y, int depth) -> void {
     if ((x.g < 0) != (y.g < 0)) {
       const double r = newton::solve_bracketed_secant(g, x.t, y.t, x.g, y.g, xtol);
-      out.push_back({index, r, vec(c.Value(r))});
+      out.push_back({index, r, occt::to_eigen(c.Value(r))});
       return;
     }
     const Sample m = sample(0.5 * (x.t + y.t));

@@ -42,8 +42,7 @@ TopoDS_Face planar_quad(const Eigen::Vector3d& a, const Eigen::Vector3d& b, cons
   const Eigen::Vector3d n = (c - a).cross(d - b);
   if (!(n.norm() > 0)) return {};
   if (std::abs(n.normalized().dot(b - a)) > 1e-10 || std::abs(n.normalized().dot(d - a)) > 1e-10) return {};
-  auto pnt = [](const Eigen::Vector3d& p) { return gp_Pnt(p.x(), p.y(), p.z()); };
-  BRepBuilderAPI_MakePolygon poly(pnt(a), pnt(b), pnt(c), pnt(d), /*Close=*/true);
+  BRepBuilderAPI_MakePolygon poly(occt::to_pnt(a), occt::to_pnt(b), occt::to_pnt(c), occt::to_pnt(d), /*Close=*/true);
   if (!poly.IsDone()) return {};
   BRepBuilderAPI_MakeFace face(poly.Wire(), /*OnlyPlane=*/true);
   return face.IsDone() ? face.Face() : TopoDS_Face();

@@ -13,6 +13,7 @@
 
 #include "src/brep/naming/face_names.hpp"
 #include "features/wall/ruled_block.hpp"
+#include "src/core/constants.hpp"
 #include "src/core/format.hpp"
 #include "src/algo/segment_distance.hpp"
 #include "src/core/newton.hpp"
@@ -21,7 +22,6 @@ namespace cg::features {
 namespace {
 
 using Vec3 = Eigen::Vector3d;
-constexpr double kPi = 3.14159265358979323846;
 // Gauss cells per direction and span between breaks: the integrands are smooth between the breaks
 // (measured against OCCT's Common of the tool with the part: 1e-7 .. 3e-7 relative on the example).
 constexpr int kCellsChannel = 2, kCellsCutback = 4;

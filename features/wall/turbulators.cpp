@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "features/wall/ruled_block.hpp"
+#include "src/core/constants.hpp"
 #include "src/core/format.hpp"
 #include "src/fit/interpolate.hpp"
 #include "src/fit/skin.hpp"
@@ -13,7 +14,6 @@ namespace cg::features {
 namespace {
 
 using Vec3 = Eigen::Vector3d;
-constexpr double kPi = 3.14159265358979323846;
 
 std::string field(std::size_t i, const std::string& member) {
   return "core.turbulators[" + std::to_string(i) + "]" + (member.empty() ? "" : "." + member);

@@ -56,7 +56,7 @@ WallFeatureBuild build_wall_feature_tools(const blade::BladeModel& model, const 
 }
 
 brep::NamedShape apply_wall_feature_tools(const brep::NamedShape& blade, WallFeatureBuild& b, PassageReport& report,
-                                          bool verify_result, PerturbedRetries retries) {
+                                          Verification verification, PerturbedRetries retries) {
   const struct Group {
     const char* name;
     BooleanOperation op;
@@ -66,11 +66,11 @@ brep::NamedShape apply_wall_feature_tools(const brep::NamedShape& blade, WallFea
                 {"te_slots", BooleanOperation::Cut, &b.trailing_edge.slot_tools}};
   // The groups' booleans in a chain. Every boolean gets its cheap checks and the per-tool volume check
   // (BooleanStep); verify_solid (BRepCheck, free edges, shells, closed mesh, ~1 s on the blade) runs on
-  // the chain's result only when `verify_each` is off: the steps touch disjoint regions and a defect a
+  // the chain's result only when `steps` is not EachStep: the steps touch disjoint regions and a defect a
   // step leaves is still in the final solid, where the check finds it. Only if it does is the chain
   // redone with verify_solid after every step, which names the group (and the tools) to blame.
   std::vector<ToolVolumeCheck> tools;
-  auto chain = [&](bool verify_each, std::vector<std::pair<std::string, double>>& seconds) {
+  auto chain = [&](Verification steps, std::vector<std::pair<std::string, double>>& seconds) {
     b.steps.clear();
     b.step_names.clear();
     tools.clear();
@@ -85,8 +85,8 @@ brep::NamedShape apply_wall_feature_tools(const brep::NamedShape& blade, WallFea
         t0 = t;
       }
       BooleanOptions options;
-      options.verify_result = verify_each;
-      options.prune_face_pairs = !verify_each;  // the redo that locates a defect takes no shortcut
+      options.verification = steps;
+      options.prune_face_pairs = steps != Verification::EachStep;  // the redo that locates a defect takes no shortcut
       options.perturbed_retries = retries;
       BooleanStep step(g.op, options);
       for (const FeatureTool& t : *g.tools) step.add(t);
@@ -108,15 +108,15 @@ brep::NamedShape apply_wall_feature_tools(const brep::NamedShape& blade, WallFea
     return current;
   };
   std::vector<std::pair<std::string, double>> seconds;
-  brep::NamedShape current = chain(false, seconds);
-  if (!b.steps.empty() && verify_result) {
+  brep::NamedShape current = chain(Verification::FinalOnly, seconds);
+  if (!b.steps.empty() && verification == Verification::EachStep) {
     const auto t0 = std::chrono::steady_clock::now();
     BooleanStepReport& last = b.steps.back();
     last.check = brep::verify_solid(current.shape);
     last.seconds_verify = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     seconds.emplace_back("wall_features_verify", last.seconds_verify);
     // Throws FeatureFailure naming the group and tools, or passes (every step's result then verified).
-    if (!last.check.all_passed()) current = chain(true, seconds);
+    if (!last.check.all_passed()) current = chain(Verification::EachStep, seconds);
   }
   report.seconds.insert(report.seconds.end(), seconds.begin(), seconds.end());
   report.tools.insert(report.tools.end(), tools.begin(), tools.end());

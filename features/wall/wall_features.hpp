@@ -11,6 +11,7 @@
 #include "features/passages/passage_report.hpp"
 #include "features/wall/trailing_edge.hpp"
 #include "features/wall/turbulators.hpp"
+#include "src/brep/boolean/feature_options.hpp"
 #include "src/brep/named_shape.hpp"
 
 namespace cg::features {
@@ -38,9 +39,10 @@ WallFeatureBuild build_wall_feature_tools(const blade::BladeModel& model, const 
 /// (One boolean for all groups was measured slower: OCCT then intersects the tools with each other,
 /// 69 s against 28 s for the three steps' intersections on the example.) Appends stage times and
 /// per-tool volume checks to `report`, the step reports to `build`. Throws FeatureFailure when a step fails.
-/// `verify_result` false: no verify_solid at all (the caller verifies the final solid).
+/// `verification` EachStep as described; FinalOnly, None: no verify_solid at all (the caller verifies the final solid).
 /// `retries`: what a step may change to get a tool through (boolean_retries.hpp).
 brep::NamedShape apply_wall_feature_tools(const brep::NamedShape& blade, WallFeatureBuild& build, PassageReport& report,
-                                          bool verify_result = true, PerturbedRetries retries = PerturbedRetries::Any);
+                                          Verification verification = Verification::EachStep,
+                                          PerturbedRetries retries = PerturbedRetries::Any);
 
 }  // namespace cg::features

@@ -15,6 +15,7 @@
 #include "src/algo/bounding_spans.hpp"
 #include "src/algo/ray_surface.hpp"
 #include "src/core/bspline_surface.hpp"
+#include "src/core/constants.hpp"
 
 namespace cg::features {
 
@@ -103,7 +104,7 @@ void gauss_legendre(double a, double b, int cells, F f) {
 
 template <class F>
 double disc_integral(double r, F f, int angles) {
-  constexpr double kTwoPi = 6.283185307179586476925;
+  constexpr double kTwoPi = 2 * kPi;
   double sum = 0;
   gauss_legendre(0.0, r, 1, [&](double rho, double w) {
     for (int k = 0; k < angles; ++k) sum += w * rho * (kTwoPi / angles) * f(rho, kTwoPi * k / angles);

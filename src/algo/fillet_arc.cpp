@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "src/core/constants.hpp"
 #include "src/core/error.hpp"
 #include "src/core/format.hpp"
 
@@ -11,12 +12,12 @@ namespace cg {
 
 Curve2 circular_arc(const Eigen::Vector2d& centre, double radius, double start, double sweep, double a, double b) {
   require(std::isfinite(radius) && radius > 0, "arc radius must be > 0 (got " + format_number(radius) + ")");
-  require(std::isfinite(sweep) && std::abs(sweep) > 0 && std::abs(sweep) <= 2 * M_PI + 1e-12,
+  require(std::isfinite(sweep) && std::abs(sweep) > 0 && std::abs(sweep) <= 2 * kPi + 1e-12,
           "arc sweep must be in (0, 2 pi] in magnitude (got " + format_number(sweep) + ")");
   require(std::isfinite(start), "arc start angle must be finite");
   require(a < b, "arc parameter range must satisfy a < b");
   // A7.1: at most 90 deg per segment keeps every middle weight >= cos 45 deg.
-  const int segments = std::max(1, static_cast<int>(std::ceil(std::abs(sweep) / (0.5 * M_PI) - 1e-12)));
+  const int segments = std::max(1, static_cast<int>(std::ceil(std::abs(sweep) / (0.5 * kPi) - 1e-12)));
   const double dt = sweep / segments;
   const double w1 = std::cos(0.5 * dt);
   auto on_circle = [&](double t) { return Eigen::Vector2d(centre + radius * Eigen::Vector2d(std::cos(t), std::sin(t))); };

@@ -4,12 +4,11 @@
 #include <cmath>
 
 #include "src/core/bezier_ops.hpp"
+#include "src/core/constants.hpp"
 
 namespace cg::detail {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
-
 // Interval of abscissae j/p where the convex hull of (j/p, v_j) has points with ordinate >= 0.
 bool nonnegative_hull_range(const double* v, int p, double& lo, double& hi) {
   lo = 2.0;

@@ -10,6 +10,7 @@
 #include "src/algo/offset_exact.hpp"
 #include "src/algo/project_point_curve.hpp"
 #include "src/algo/self_intersect.hpp"
+#include "src/core/constants.hpp"
 #include "src/core/error.hpp"
 #include "src/core/format.hpp"
 #include "src/modify/degree_elevation.hpp"
@@ -38,7 +39,7 @@ JoinedOffset join_pieces(const RawOffset& raw, double domain) {
   for (const auto& p : raw.pieces) {
     // Corner arcs get a parameter length proportional to their turning angle (any positive
     // length would do; this keeps the parametrisation speed of the same order as the stretches).
-    const double len = p.kind == RawOffsetPiece::Kind::offset ? p.u1 - p.u0 : domain * std::abs(p.sweep) / (2 * M_PI) + 1e-3 * domain;
+    const double len = p.kind == RawOffsetPiece::Kind::offset ? p.u1 - p.u0 : domain * std::abs(p.sweep) / (2 * kPi) + 1e-3 * domain;
     Curve2 c = p.curve.degree() < q ? elevate_degree(p.curve, q - p.curve.degree()) : p.curve;
     c = reparametrized(c, s, s + len);
     J.start.push_back(s);
@@ -101,7 +102,7 @@ TrimmedOffset offset_curve(const Curve2& base, double distance, double tol) {
   for (double s : J.start) cuts.push_back(s);
   if (!raw.closed) {
     for (double u : {base.first_param(), base.last_param()}) {
-      const Curve2 cap = circular_arc(base.point(u), ad, 0.0, 2 * M_PI);
+      const Curve2 cap = circular_arc(base.point(u), ad, 0.0, 2 * kPi);
       for (const auto& x : intersect_curves(R, cap, tol).points)
         if (x.s > s_first + eps && x.s < s_last - eps) cuts.push_back(x.s);
     }

@@ -2,13 +2,13 @@
 
 #include <cmath>
 
+#include "src/core/constants.hpp"
 #include "src/core/error.hpp"
 
 namespace cg {
 
 void gauss_legendre(int n, double* x, double* w) {
   require(n >= 1 && n <= 64, "gauss_legendre: 1 <= n <= 64");
-  constexpr double kPi = 3.14159265358979323846;
   for (int i = 0; i < n; ++i) {
     double z = std::cos(kPi * (i + 0.75) / (n + 0.5)), dp = 1;
     for (int it = 0; it < 100; ++it) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "src/core/constants.hpp"
 #include "src/core/format.hpp"
 #include "src/blade/section_family.hpp"
 #include "src/blade/surface_iso.hpp"
@@ -11,8 +12,6 @@
 
 namespace cg::blade {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 
 std::string section_name(std::size_t k) { return "section " + std::to_string(k); }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 
+#include "src/core/constants.hpp"
 #include "src/core/error.hpp"
 #include "src/fit/interpolate.hpp"
 #include "src/modify/degree_elevation.hpp"
@@ -12,8 +13,6 @@
 
 namespace cg::blade::detail {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 double residual(const std::vector<Eigen::Vector2d>& p, const EdgeCircle& c) {
   double r = 0;

@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 
+#include "src/core/constants.hpp"
 #include "src/core/format.hpp"
 #include "src/core/knots.hpp"
 #include "src/core/parallel.hpp"
@@ -17,7 +18,6 @@ namespace cg::blade {
 namespace {
 
 using Vec3 = Eigen::Vector3d;
-constexpr double kPi = 3.14159265358979323846;
 
 }  // namespace
 

@@ -8,12 +8,11 @@
 
 #include "src/algo/ray_curve.hpp"
 #include "src/blade/planar_polyline.hpp"
+#include "src/core/constants.hpp"
 #include "src/core/error.hpp"
 
 namespace cg::blade {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 struct Samples {
   std::vector<Eigen::Vector2d> p;  // n points around the closed curve (no repeat)

@@ -6,6 +6,7 @@
 #include <type_traits>
 
 #include "src/algo/project_point_curve.hpp"
+#include "src/core/constants.hpp"
 #include "src/core/format.hpp"
 #include "src/blade/periodic_seam.hpp"
 #include "src/blade/section_3d.hpp"
@@ -14,8 +15,6 @@
 
 namespace cg::blade::detail {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 Eigen::Matrix2d rotation(double a) {
   Eigen::Matrix2d R;

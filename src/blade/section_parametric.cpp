@@ -7,6 +7,7 @@
 #include "src/blade/planar_polyline.hpp"
 #include "src/blade/section.hpp"
 #include "src/core/bezier_curve.hpp"
+#include "src/core/constants.hpp"
 #include "src/core/format.hpp"
 #include "src/core/error.hpp"
 #include "src/fit/interpolate.hpp"
@@ -14,7 +15,6 @@
 namespace cg::blade {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 double rad(double deg) { return deg * kPi / 180.0; }
 
 

@@ -37,6 +37,7 @@
 #include "src/algo/project_point_curve.hpp"
 #include "src/blade/surface_iso.hpp"
 #include "src/brep/occt_progress.hpp"
+#include "src/core/constants.hpp"
 #include "src/fit/interpolate.hpp"
 #include "src/modify/periodic_conversion.hpp"
 #include "src/modify/reparametrize.hpp"
@@ -45,8 +46,6 @@
 
 namespace cg::brep {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Bounding box of the surface's poles: it contains the surface (convex hull property).
 struct PoleBox {

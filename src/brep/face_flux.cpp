@@ -30,6 +30,7 @@
 
 #include "adaptors/occt_convert.hpp"
 #include "src/analyze/gauss_legendre.hpp"
+#include "src/core/constants.hpp"
 #include "src/core/newton.hpp"
 #include "src/core/surface_evaluator.hpp"
 
@@ -40,7 +41,6 @@ using Vec3 = Eigen::Vector3d;
 constexpr int kRule = 10;      // points of the boundary panels and of non-polynomial strip pieces
 constexpr int kMaxDepth = 30;       // panel halvings (a kink of the integrand converges slowly, not never)
 constexpr int kMaxPanels = 50000;  // per face (the cooled blades' faces take up to ~1000)
-constexpr double kPi = 3.14159265358979323846;
 
 struct GaussRule {
   int n = 0;

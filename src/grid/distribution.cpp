@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "src/core/constants.hpp"
 #include "src/core/format.hpp"
 #include "src/core/error.hpp"
 
@@ -90,7 +91,7 @@ std::vector<double> vinokur(int cells, double length, double d0, double d1) {
   const bool linear = std::abs(b - 1) < 1e-9;
   const double dy = linear ? 0.0
                     : b > 1 ? bisect([&](double y) { return std::sinh(y) / y - b; }, 1e-12, 2 * std::asinh(b) + 10)
-                            : bisect([&](double y) { return std::sin(y) / y - b; }, 1e-12, M_PI - 1e-12);
+                            : bisect([&](double y) { return std::sin(y) / y - b; }, 1e-12, kPi - 1e-12);
   auto u_of = [&](double xi) -> double {
     if (linear) return xi;
     if (b > 1) return 0.5 * (1 + std::tanh(dy * (xi - 0.5)) / std::tanh(0.5 * dy));

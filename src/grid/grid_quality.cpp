@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "src/core/constants.hpp"
 #include "src/core/error.hpp"
 
 namespace cg::grid {
@@ -57,7 +58,7 @@ WallQuality wall_quality(const Block& b, const BSplineCurve<2>& curve, const std
     const Eigen::Vector2d line = b.at(i, 1) - b.at(i, 0);
     const double h = line.norm();
     const double c = std::abs(d[1].dot(line)) / (d[1].norm() * h);
-    w.max_angle_deviation_deg = std::max(w.max_angle_deviation_deg, std::asin(std::min(1.0, c)) * 180.0 / M_PI);
+    w.max_angle_deviation_deg = std::max(w.max_angle_deviation_deg, std::asin(std::min(1.0, c)) * 180.0 / kPi);
     w.min_first_cell_height = std::min(w.min_first_cell_height, h);
     w.max_first_cell_height = std::max(w.max_first_cell_height, h);
   }

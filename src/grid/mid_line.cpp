@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "src/algo/ray_curve.hpp"
+#include "src/core/constants.hpp"
 #include "src/core/error.hpp"
 #include "src/fit/approximate.hpp"
 
@@ -16,7 +17,7 @@ MidLine::MidLine(const BSplineCurve<2>& wall, double a_min, double a_max) {
   std::vector<Eigen::Matrix<double, 1, 1>> y;
   std::vector<double> x;
   for (int k = 1; k < stations; ++k) {
-    const double a = a_min + (a_max - a_min) * 0.5 * (1 - std::cos(M_PI * k / stations));
+    const double a = a_min + (a_max - a_min) * 0.5 * (1 - std::cos(kPi * k / stations));
     const auto hits = line_curve_intersections(wall, Eigen::Vector2d(a, 0), Eigen::Vector2d(0, 1),
                                                -std::numeric_limits<double>::infinity(),
                                                std::numeric_limits<double>::infinity());

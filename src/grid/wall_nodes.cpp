@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "src/analyze/frenet.hpp"
+#include "src/core/constants.hpp"
 #include "src/grid/distribution.hpp"
 
 namespace cg::grid {
@@ -53,7 +54,7 @@ std::vector<double> clustered_wall_positions(const blade::SectionProfile& sectio
   std::vector<double> raw(static_cast<std::size_t>(n));
   for (int k = 0; k < n; ++k)
     raw[static_cast<std::size_t>(k)] =
-        1.0 + clustering * std::abs(signed_curvature(section.curve, u[static_cast<std::size_t>(k)])) * P / (2 * M_PI);
+        1.0 + clustering * std::abs(signed_curvature(section.curve, u[static_cast<std::size_t>(k)])) * P / (2 * kPi);
   // Smoothed over 1.5 mean cells: the curvature of an interpolated profile jumps where an edge circle
   // meets a flank; the cell sizes should not.
   std::vector<double> density = smooth_periodic(raw, 1.5 * per_cell);

@@ -7,6 +7,7 @@
 
 #include "src/blade/section.hpp"
 #include "src/core/basis.hpp"
+#include "src/core/constants.hpp"
 #include "src/core/error.hpp"
 #include "src/modify/bezier_decomposition.hpp"
 #include "src/ortho/edge_angles.hpp"
@@ -96,7 +97,7 @@ WallPatches::WallPatches(const BSplineCurve<2>& curve, double thickness) : curve
     if ((ta - tb).norm() > 1e-7)
       throw InvalidGeometry("wall patches: the section curve has a corner at parameter " +
                             format_number(d.breaks[static_cast<std::size_t>(k) + 1]) +
-                            " (tangents differ by " + format_number(std::asin(std::min(1.0, (ta - tb).norm() / 2)) * 360 / M_PI) +
+                            " (tangents differ by " + format_number(std::asin(std::min(1.0, (ta - tb).norm() / 2)) * 360 / kPi) +
                             " deg); an orthogonal O-grid needs a tangent-continuous section");
   }
   std::vector<ortho::ContinuationFactors> factors;

@@ -28,9 +28,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-// Volume to 1e-7 relative (brep::integrate_solid: our face flux, faces in parallel).
-double accurate_volume(const TopoDS_Shape& s) { return brep::integrate_solid(s, 1e-7, true, brep::Integrals::Volume).volume; }
-
 // gmsh volumes and surfaces of the imported compound, matched to our regions and named faces.
 struct ModelMap {
   std::vector<std::vector<int>> region_volumes;  ///< per region: gmsh volume tags
@@ -226,7 +223,7 @@ void statistics(const ConformalDomains& domains, const ModelMap& model, const Me
   for (std::size_t k = 0; k < domains.regions.size(); ++k) {
     const MeshData::Block& block = data.blocks[k];
     RegionMesh rm{block.name, block.fluid, tet_quality(data.points, block.tets), 0};
-    for (const auto& s : domains.regions[k].solids) rm.brep_volume += accurate_volume(s);
+    for (const auto& s : domains.regions[k].solids) rm.brep_volume += brep::volume_of(s);
     if (rm.fluid) r.coolant_mesh_volume += rm.tets.volume;
     r.tetrahedra += rm.tets.elements;
     r.inverted += rm.tets.inverted;
@@ -328,7 +325,7 @@ MeshResult mesh_blade(const brep::Part& part, const TopoDS_Shape& uncooled, cons
   if (o.coolant) {
     coolant = coolant_domain(part, uncooled, uncooled_faces);
     r.removed_volume = coolant.removed_volume;
-    for (std::size_t b = 1; b < part.size(); ++b) r.insert_volume += accurate_volume(part[b].geometry.shape);
+    for (std::size_t b = 1; b < part.size(); ++b) r.insert_volume += brep::volume_of(part[b].geometry.shape);
     r.coolant_brep_volume = coolant.volume;
     if (coolant.solids == 0) r.notes.push_back("the blade has no cavities: no coolant domain to mesh");
   }

@@ -17,9 +17,6 @@ namespace {
 
 using NameMap = NCollection_DataMap<TopoDS_Shape, std::string, TopTools_ShapeMapHasher>;
 
-// Volume of the closed shells to 1e-7 relative (our face flux, faces in parallel).
-double volume_of(const TopoDS_Shape& s) { return brep::integrate_solid(s, 1e-7, true, brep::Integrals::Volume).volume; }
-
 // Binds the names of `faces` to what they became in an operation with history (`modified`,
 // `deleted`): a kept face keeps its name, each split piece gets it. First binding wins, so bind the
 // preferred names (metal side) first.
@@ -55,7 +52,7 @@ CoolantDomain coolant_domain(const brep::Part& part, const TopoDS_Shape& uncoole
   if (part.empty()) throw MeshError("coolant domain: the part has no bodies");
   if (uncooled.IsNull()) throw MeshError("coolant domain: no uncooled blade solid given");
   CoolantDomain c;
-  c.removed_volume = volume_of(uncooled) - volume_of(part[0].geometry.shape);
+  c.removed_volume = brep::volume_of(uncooled) - brep::volume_of(part[0].geometry.shape);
   TopTools_ListOfShape args, tools;
   args.Append(uncooled);
   for (const brep::NamedBody& b : part) tools.Append(b.geometry.shape);
@@ -84,7 +81,7 @@ CoolantDomain coolant_domain(const brep::Part& part, const TopoDS_Shape& uncoole
   }
   c.shape = solids;
   c.faces = name_faces(solids, names, "coolant domain");
-  c.volume = volume_of(solids);
+  c.volume = brep::volume_of(solids);
   return c;
 }
 

@@ -16,6 +16,7 @@
 #include <cmath>
 
 #include "src/brep/named_shape.hpp"
+#include "src/core/constants.hpp"
 #include "src/core/parallel.hpp"
 
 namespace cg::mesh {
@@ -35,7 +36,7 @@ double local_size(BRepLProp_SLProps& props, double u, double v, const MeshOption
   props.SetParameters(u, v);
   if (!props.IsCurvatureDefined()) return o.max_size;
   const double k = std::max(std::abs(props.MaxCurvature()), std::abs(props.MinCurvature()));
-  return k > 0 ? std::clamp(2 * M_PI / (o.feature_curvature_elements * k), o.min_size, o.max_size) : o.max_size;
+  return k > 0 ? std::clamp(2 * kPi / (o.feature_curvature_elements * k), o.min_size, o.max_size) : o.max_size;
 }
 
 // Samples of one cooling-feature face, each with the size its own point needs; points that need

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "src/core/basis.hpp"
+#include "src/core/constants.hpp"
 #include "src/core/error.hpp"
 #include "src/core/knots.hpp"
 #include "src/core/rational.hpp"
@@ -117,7 +118,7 @@ Eigen::VectorXd chebyshev_nodes01(int count) {
     return t;
   }
   // Chebyshev-Lobatto points (the ends included), increasing.
-  for (int k = 0; k < count; ++k) t[k] = 0.5 - 0.5 * std::cos(M_PI * k / (count - 1));
+  for (int k = 0; k < count; ++k) t[k] = 0.5 - 0.5 * std::cos(kPi * k / (count - 1));
   return t;
 }
 

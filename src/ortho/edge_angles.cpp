@@ -6,6 +6,7 @@
 #include <string>
 
 #include "src/core/basis.hpp"
+#include "src/core/constants.hpp"
 #include "src/core/error.hpp"
 #include "src/core/format.hpp"
 
@@ -115,7 +116,7 @@ double EdgeAngleSampler<Dim>::score(const Vectors& V) const {
 }
 
 double angle_deviation_deg(double c, double eta) {
-  return std::abs(std::acos(std::clamp(c, -1.0, 1.0)) - std::acos(std::clamp(eta, -1.0, 1.0))) * 180.0 / M_PI;
+  return std::abs(std::acos(std::clamp(c, -1.0, 1.0)) - std::acos(std::clamp(eta, -1.0, 1.0))) * 180.0 / kPi;
 }
 
 template <int Dim>

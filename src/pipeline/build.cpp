@@ -28,9 +28,10 @@ std::string failure(const std::exception_ptr& e) {
 // decoded): the B-rep reader rebuilds the axes of elementary surfaces (gp_Ax3) to within an ulp, so
 // only then is a build bit for bit the same whether its cooling stage came from the cache or not. It
 // costs ~0.03 s on the built-in example (1.5 MB of shapes).
-features::PassagesResult cooling_stage(const config::Config& c, BuildResult& r, bool verify_each, StageCache* cache) {
+features::PassagesResult cooling_stage(const config::Config& c, BuildResult& r, features::Verification verification,
+                                       StageCache* cache) {
   const bool on = cache && cache->options().mode != StageCacheMode::kOff;
-  const std::string key = on ? cooling_stage_key(c, verify_each) : std::string();
+  const std::string key = on ? cooling_stage_key(c, verification == features::Verification::EachStep) : std::string();
   if (on)
     if (const auto entry = cache->find(kCoolingStage, key)) {
       try {
@@ -42,7 +43,7 @@ features::PassagesResult cooling_stage(const config::Config& c, BuildResult& r, 
                              "); built again");
       }
     }
-  features::PassagesResult built = apply_cooling(c.cooling, r.model, r.part.front().geometry, verify_each);
+  features::PassagesResult built = apply_cooling(c.cooling, r.model, r.part.front().geometry, verification);
   StageCacheEntry entry;
   features::PassagesResult canonical;
   try {
@@ -110,22 +111,22 @@ BuildResult run_build(const config::Config& config, const BuildOptions& options,
   });
   // Checks the feature stages already ran on a body with the default options, by body index.
   std::vector<std::optional<brep::SolidCheck>> known_checks;
-  // The feature stages on the uncooled blade; `verify_each`: verify_solid after each boolean step.
-  auto build_features = [&](bool verify_each, const std::string& suffix) {
+  // The feature stages on the uncooled blade, verified as `verification` says.
+  auto build_features = [&](features::Verification verification, const std::string& suffix) {
     r.part.resize(1);
     r.part.front().geometry = r.uncooled;
     known_checks.assign(1, std::nullopt);
     std::optional<features::PassagesResult> cooled;
     if (!config.cooling.passages.empty())
       stages.run("cooling" + suffix, "cooling features (chambers, ribs, passages)", [&] {
-        cooled = cooling_stage(config, r, verify_each, options.stage_cache);
+        cooled = cooling_stage(config, r, verification, options.stage_cache);
         r.part.front().geometry = cooled->blade;
         r.cooling = cooled->report;
         if (cooled->checked) known_checks[0] = cooled->check;
       });
     if (!config.cooling.film.empty())
       stages.run("film" + suffix, "film cooling holes and impingement inserts", [&] {
-        features::FilmCoolingResult film = apply_film(config.cooling, r.model, *cooled, progress, verify_each);
+        features::FilmCoolingResult film = apply_film(config.cooling, r.model, *cooled, {verification, progress});
         r.part.front().geometry = std::move(film.blade);
         if (film.holes_cut) known_checks[0] = film.blade_checked ? std::optional(film.check) : std::nullopt;
         for (std::size_t i = 0; i < film.inserts.size(); ++i) {
@@ -150,14 +151,14 @@ BuildResult run_build(const config::Config& config, const BuildOptions& options,
       }
     });
   };
-  build_features(options.verify_each_step, "");
+  build_features(options.verification, "");
   verify_bodies("");
-  if (!options.verify_each_step && !config.cooling.empty() && !r.valid()) {
+  if (options.verification == features::Verification::FinalOnly && !config.cooling.empty() && !r.valid()) {
     // A defect one of the deferred steps left: build the features again, each step verified, so the
     // step that makes it throws FeatureFailure naming its feature (or the final checks stay failed).
     r.warnings.push_back("the cooled blade failed " + r.failed_checks() +
                          ": the cooling features were built again with verify_solid after every step");
-    build_features(true, "_rechecked");
+    build_features(features::Verification::EachStep, "_rechecked");
     verify_bodies("_rechecked");
   }
   return r;

@@ -21,6 +21,7 @@
 
 #include "features/film/film_report.hpp"
 #include "features/passages/passage_report.hpp"
+#include "src/brep/boolean/feature_options.hpp"
 #include "src/blade/blade_surface.hpp"
 #include "src/brep/named_shape.hpp"
 #include "src/brep/verify.hpp"
@@ -34,11 +35,12 @@ namespace cg::pipeline {
 struct BuildOptions {
   /// Options of the solid checks (mesh deflection); `verify.progress` is set by run_build.
   brep::VerifyOptions verify;
-  /// true: the feature stages run verify_solid after each of their boolean steps (every other check of
-  /// the verified boolean path runs either way). false (default): verify_solid runs once, in the verify
-  /// stage, on the final blade; only if that fails are the feature stages run again with it after
-  /// every step, which names the feature to blame (stages "cooling_rechecked", "film_rechecked").
-  bool verify_each_step = false;
+  /// EachStep: the feature stages run verify_solid after each of their boolean steps (every other check
+  /// of the verified boolean path runs either way). FinalOnly (default): verify_solid runs once, in the
+  /// verify stage, on the final blade; only if that fails are the feature stages run again with it
+  /// after every step, which names the feature to blame (stages "cooling_rechecked", "film_rechecked").
+  /// None: as FinalOnly without the rerun (the verify stage still checks every body).
+  features::Verification verification = features::Verification::FinalOnly;
   /// Optional: the cooling stage is taken from this cache when an earlier build stored the same inputs,
   /// and stored in it otherwise (stage_cache.hpp, cooling_stage_cache.hpp). Null: always built.
   StageCache* stage_cache = nullptr;

@@ -25,23 +25,23 @@ void validate_cooling(const config::CoolingConfig& cooling, const blade::BladeMo
 }
 
 features::PassagesResult apply_cooling(const config::CoolingConfig& cooling, const blade::BladeModel& model,
-                                       const brep::NamedShape& blade, bool verify_each_step) {
+                                       const brep::NamedShape& blade, features::Verification verification) {
   try {
-    return features::build_passages(model, blade, cooling.passages, verify_each_step);
+    return features::build_passages(model, blade, cooling.passages, verification);
   } catch (const features::PassageInputError& e) {
     throw config::cooling_error(e);
   }
 }
 
 features::FilmCoolingResult apply_film(const config::CoolingConfig& cooling, const blade::BladeModel& model,
-                                       const features::PassagesResult& cooled, ProgressSink* progress,
-                                       bool verify_each_step) {
+                                       const features::PassagesResult& cooled,
+                                       const features::FeatureOptions& options) {
   if (!cooled.core || !cooling.passages.core)
     throw config::ConfigError("cooling: film rows, a showerhead and inserts need \"core\": the chambers they feed from or sit in");
   try {
     features::FilmCavity cavity = features::film_cavity_of_core(model, *cooling.passages.core, *cooled.core);
     features::add_wall_feature_obstacles(cavity.target, cooled.wall_features);
-    return features::build_film_cooling(model, cooled.blade, std::move(cavity), cooling.film, progress, verify_each_step);
+    return features::build_film_cooling(model, cooled.blade, std::move(cavity), cooling.film, options);
   } catch (const features::FilmInputError& e) {
     throw config::film_error(e);
   }

@@ -7,9 +7,9 @@
 #include "features/film/film_cooling.hpp"
 #include "features/internal_cooling.hpp"
 #include "src/blade/blade_surface.hpp"
+#include "src/brep/boolean/feature_options.hpp"
 #include "src/brep/named_shape.hpp"
 #include "src/config/cooling_config.hpp"
-#include "src/core/progress.hpp"
 
 namespace cg::pipeline {
 
@@ -17,14 +17,16 @@ namespace cg::pipeline {
 /// placed on their rows: span range, positions, pitch), as ConfigError.
 void validate_cooling(const config::CoolingConfig& cooling, const blade::BladeModel& model);
 
-/// `verify_each_step`: see features::build_passages (`verify_solid_after_steps`).
+/// `verification`: see features::build_passages.
 features::PassagesResult apply_cooling(const config::CoolingConfig& cooling, const blade::BladeModel& model,
-                                       const brep::NamedShape& blade, bool verify_each_step = true);
+                                       const brep::NamedShape& blade,
+                                       features::Verification verification = features::Verification::EachStep);
 
 /// The film stage: the film rows, showerhead and inserts of `cooling` built into `cooled` (the result of
 /// apply_cooling, which must have built a core). Film input the blade cannot take: ConfigError.
+/// `options`: verification and progress (see features::build_film_cooling).
 features::FilmCoolingResult apply_film(const config::CoolingConfig& cooling, const blade::BladeModel& model,
-                                       const features::PassagesResult& cooled, ProgressSink* progress = nullptr,
-                                       bool verify_each_step = true);
+                                       const features::PassagesResult& cooled,
+                                       const features::FeatureOptions& options = {});
 
 }  // namespace cg::pipeline

@@ -16,13 +16,14 @@
 #include "export/vtk_writer.hpp"
 #include "export/x_display.hpp"
 #include "src/core/background.hpp"
+#include "src/core/constants.hpp"
 #include "src/pipeline/report.hpp"
 
 namespace cg::pipeline {
 namespace fs = std::filesystem;
 namespace {
 
-constexpr double kDeg = 3.14159265358979323846 / 180;
+constexpr double kDeg = kPi / 180;
 
 // What the formats of one build result share. The cache holds the blade's TShape, so a later result
 // can never reuse its address and be mistaken for this one. The triangulation and the sections are

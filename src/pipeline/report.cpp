@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "src/blade/section.hpp"
+#include "src/core/constants.hpp"
 #include "src/pipeline/sha256.hpp"
 #include "export/version.hpp"
 
@@ -13,7 +14,7 @@ namespace {
 
 using json = nlohmann::ordered_json;
 
-constexpr double kDegPerRad = 57.295779513082320876798;
+constexpr double kDegPerRad = 180 / kPi;
 
 json xyz(const Eigen::Vector3d& p) { return json::array({p.x(), p.y(), p.z()}); }
 json ab(const Eigen::Vector2d& p) { return json::array({p.x(), p.y()}); }

@@ -12,6 +12,7 @@
 #include <cmath>
 
 #include "src/algo/intersect_curves.hpp"
+#include "src/core/constants.hpp"
 #include "src/core/error.hpp"
 
 using namespace cg;
@@ -19,7 +20,7 @@ using V2 = Eigen::Vector2d;
 
 namespace {
 
-const double kPi = std::acos(-1.0);
+using cg::kPi;
 
 // Nine-point rational circle (The NURBS Book Ex. 7.2) mapped by x -> M x + c: an exact ellipse.
 BSplineCurve<2> conic(const Eigen::Matrix2d& M, const V2& c) {

@@ -15,6 +15,7 @@
 #include "src/blade/edge_arcs.hpp"
 #include "src/blade/surface_iso.hpp"
 #include "src/core/bezier_curve.hpp"
+#include "src/core/constants.hpp"
 #include "src/core/error.hpp"
 #include "src/fit/interpolate.hpp"
 
@@ -23,7 +24,7 @@ using namespace cg::blade;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using cg::kPi;
 const Eigen::Vector2d kLeCentre(12.8, 0), kTeCentre(130, -25);
 constexpr double kLeRadius = 12.8, kTeRadius = 1.0;
 

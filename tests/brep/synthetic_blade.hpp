@@ -8,11 +8,12 @@
 
 #include "src/core/bspline_curve.hpp"
 #include "src/core/bspline_surface.hpp"
+#include "src/core/constants.hpp"
 #include "src/core/knots.hpp"
 
 namespace cg::test {
 
-constexpr double kPi = 3.14159265358979323846;
+using cg::kPi;
 
 struct EllipticBlade {
   double a = 20, b = 4;          // semi-axes along x (chord) and y (thickness), mm

@@ -18,6 +18,7 @@
 #include "blade/blade_fixtures.hpp"
 #include "src/blade/blade_coordinates.hpp"
 #include "src/brep/blade_solid.hpp"
+#include "src/brep/solid_integrals.hpp"
 #include "src/brep/verify.hpp"
 
 using namespace cg;
@@ -30,7 +31,7 @@ void require_valid(const TopoDS_Shape& s, const char* what) {
   for (const brep::Check* k : c.checks()) BOOST_TEST(k->passed, what << ": " << k->name << ": " << k->message);
 }
 
-double volume_of(const TopoDS_Shape& s) { return brep::verify_solid(s).volume; }
+using brep::volume_of;
 
 // Area of the polygon q clipped to the half-plane (p - o) . n >= 0 (Sutherland-Hodgman, one edge).
 double clipped_area(const std::vector<Eigen::Vector2d>& q, const Eigen::Vector2d& o, const Eigen::Vector2d& n) {

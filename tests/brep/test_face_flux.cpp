@@ -33,6 +33,7 @@
 #include "src/brep/face_flux.hpp"
 #include "src/brep/solid_integrals.hpp"
 #include "src/analyze/gauss_legendre.hpp"
+#include "src/core/constants.hpp"
 #include "support/random_geometry.hpp"
 #include "support/random_periodic.hpp"
 
@@ -40,7 +41,7 @@ namespace {
 
 using cg::brep::StripDirection;
 using cg::brep::face_volume_flux;
-constexpr double kPi = 3.14159265358979323846;
+using cg::kPi;
 
 double occt_flux(const TopoDS_Face& f, const gp_Pnt& c, double eps) {
   BRepGProp_Face bf(f);

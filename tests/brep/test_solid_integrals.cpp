@@ -13,10 +13,11 @@
 #include <cmath>
 
 #include "src/brep/solid_integrals.hpp"
+#include "src/core/constants.hpp"
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using cg::kPi;
 
 // A 40 x 40 x 4 mm plate with n x n through holes of radius r, its faces B-splines (NurbsConvert) so
 // the hole loops are B-spline pcurves on B-spline walls, as on a drilled blade.

@@ -25,9 +25,11 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "adaptors/occt_convert.hpp"
 #include "src/brep/blade_solid.hpp"
 #include "src/config/builtin_example.hpp"
 #include "src/config/config.hpp"
+#include "src/core/constants.hpp"
 
 namespace cg::test {
 
@@ -51,15 +53,15 @@ struct CooledPartOptions {
   double chamber_top = 0.85;///< span fraction where the chambers end (they open at the hub)
 };
 
-constexpr double kPi = 3.14159265358979323846;
+using cg::kPi;
 
-inline double volume_of(const TopoDS_Shape& s) {
+inline double occt_volume(const TopoDS_Shape& s) {
   GProp_GProps g;
   BRepGProp::VolumeProperties(s, g, 1e-7, /*OnlyClosed=*/true);  // relative accuracy 1e-7 (as brep::verify_solid)
   return g.Mass();
 }
 
-inline gp_Pnt to_pnt(const Eigen::Vector3d& p) { return gp_Pnt(p.x(), p.y(), p.z()); }
+using occt::to_pnt;
 
 /// Solid cylinder from a to b with every face named `side` (lateral) / `ends` (caps).
 inline brep::NamedShape named_cylinder(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double radius,
@@ -177,9 +179,9 @@ inline CooledPart make_cooled_part(const config::Config& c, const CooledPartOpti
   brep::NamedShape blade{solid.solid, solid.faces};
   cp.uncooled = solid.solid;
   cp.uncooled_faces = solid.faces;
-  cp.uncooled_volume = volume_of(solid.solid);
+  cp.uncooled_volume = occt_volume(solid.solid);
   cp.part.push_back({"blade", tools.empty() ? blade : cut_named(blade, tools)});
-  cp.removed_volume = cp.uncooled_volume - volume_of(cp.part[0].geometry.shape);
+  cp.removed_volume = cp.uncooled_volume - occt_volume(cp.part[0].geometry.shape);
   if (o.insert && o.chambers > 0) {
     // A tube in the last chamber, clear of its wall, from 25 % to 70 % of the chamber's length (inside
     // the blade: the chamber starts below the hub).

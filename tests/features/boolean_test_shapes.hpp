@@ -12,10 +12,11 @@
 #include <string>
 
 #include "src/brep/boolean/verified_boolean.hpp"
+#include "src/core/constants.hpp"
 
 namespace cg::test {
 
-constexpr double kPi = 3.14159265358979323846;
+using cg::kPi;
 
 /// Every face named `name`.
 inline brep::NamedShape named_all(const TopoDS_Shape& s, const std::string& name) {

@@ -15,13 +15,14 @@
 
 #include "features/film/hole_analysis.hpp"
 #include "features/film/hole_tool.hpp"
+#include "src/core/constants.hpp"
 
 using namespace cg;
 using namespace cg::features;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using cg::kPi;
 
 HoleFrame tilted_frame() {
   HoleFrame f;

@@ -11,6 +11,7 @@
 #include "features/film/film_holes.hpp"
 #include "features/film/film_rows.hpp"
 #include "src/blade/blade_coordinates.hpp"
+#include "src/core/constants.hpp"
 #include "test_film_fixtures.hpp"
 
 using namespace cg;
@@ -18,7 +19,7 @@ using namespace cg::features;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using cg::kPi;
 constexpr double kDeg = 180 / kPi;
 
 test::FilmVane& vane() {

@@ -281,14 +281,14 @@ BOOST_AUTO_TEST_CASE(bad_input_names_the_field) {
 }
 
 // By default verify_solid runs once, on the final blade (the steps run their other checks); with
-// verify_each_step it runs after every boolean step. Both give the same solid, and the default run
+// Verification::EachStep it runs after every boolean step. Both give the same solid, and the default run
 // neither rebuilt anything nor verified inside the steps.
 BOOST_AUTO_TEST_CASE(deferred_and_per_step_verification_agree) {
   const pipeline::BuildResult& deferred = built();
   BOOST_TEST_REQUIRE(deferred.valid(), deferred.failed_checks());
   for (const pipeline::StageTiming& t : deferred.timings) BOOST_TEST(t.stage.find("_rechecked") == std::string::npos, t.stage);
   pipeline::BuildOptions each;
-  each.verify_each_step = true;
+  each.verification = features::Verification::EachStep;
   const pipeline::BuildResult r = pipeline::run_build(parse(config_doc()), each);
   BOOST_TEST_REQUIRE(r.valid(), r.failed_checks());
   BOOST_REQUIRE(r.checks.size() == deferred.checks.size());

@@ -8,11 +8,12 @@
 #include <TopoDS.hxx>
 
 #include "features/passage_fixtures.hpp"
+#include "src/core/constants.hpp"
 
 using namespace cg;
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
+using cg::kPi;
 const test::CooledBlade& c3x() { return test::cooled_example(COOLINGGEN_SOURCE_DIR "/data/examples/c3x_vane.json"); }
 const test::CooledBlade& open_chamber() {
   return test::cooled_example(COOLINGGEN_SOURCE_DIR "/data/examples/c3x_vane_open_chamber.json");

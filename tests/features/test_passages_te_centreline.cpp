@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "adaptors/occt_convert.hpp"
 #include "src/brep/boolean/false_seams.hpp"
 #include "features/passage_fixtures.hpp"
 
@@ -30,13 +31,12 @@ std::set<std::string> names_with(const brep::NamedShape& s, const std::string& p
   return out;
 }
 
-gp_Pnt pnt(const Eigen::Vector3d& p) { return gp_Pnt(p.x(), p.y(), p.z()); }
 
 // Parameters where the line p + t d (|d| = 1) crosses the built solid, sorted (OCCT's intersector).
 std::vector<double> crossings(const Eigen::Vector3d& p, const Eigen::Vector3d& d, double t0, double t1) {
   IntCurvesFace_ShapeIntersector in;
   in.Load(vane().cooled.blade.shape, 1e-9);
-  in.Perform(gp_Lin(pnt(p), gp_Dir(d.x(), d.y(), d.z())), t0, t1);
+  in.Perform(gp_Lin(occt::to_pnt(p), gp_Dir(d.x(), d.y(), d.z())), t0, t1);
   std::vector<double> out;
   for (int i = 1; i <= in.NbPnt(); ++i) out.push_back(in.WParameter(i));
   std::sort(out.begin(), out.end());

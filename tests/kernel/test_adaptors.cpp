@@ -192,10 +192,7 @@ Handle(Geom_BSplineSurface) random_occt_surface(test::Rng& r, bool rational, boo
 
 // ---- evaluation against OCCT --------------------------------------------------------------------
 
-Eigen::Vector3d eig(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
-Eigen::Vector3d eig(const gp_Vec& v) { return {v.X(), v.Y(), v.Z()}; }
-Eigen::Vector2d eig(const gp_Pnt2d& p) { return {p.X(), p.Y()}; }
-Eigen::Vector2d eig(const gp_Vec2d& v) { return {v.X(), v.Y()}; }
+using occt::to_eigen;
 
 // Ours (de Boor, batched evaluator) against OCCT's D2 at parameters up to 3 periods outside the base
 // period (periodic curves) or inside the domain.
@@ -213,15 +210,15 @@ void check_curve_evaluation(const BSplineCurve<Dim>& c, const OcctCurve<Dim>& oc
     typename BSplineCurve<Dim>::Point q, q1, q2;
     ev.d2(u, q, q1, q2);
     const double s0 = 1e-12 * deriv_scale(c, 0), s1 = 1e-12 * deriv_scale(c, 1), s2 = 1e-12 * deriv_scale(c, 2);
-    BOOST_TEST((d[0] - eig(P)).norm() <= s0);
-    BOOST_TEST((q - eig(P)).norm() <= s0);
+    BOOST_TEST((d[0] - to_eigen(P)).norm() <= s0);
+    BOOST_TEST((q - to_eigen(P)).norm() <= s0);
     // At u = last of a periodic curve OCCT takes the left limit, we wrap to the first span (right
     // limit): derivatives of order > p - seam multiplicity jump there, so only compare the point.
     if (c.is_periodic() && s == 1) continue;
-    BOOST_TEST((d[1] - eig(V1)).norm() <= s1);
-    BOOST_TEST((d[2] - eig(V2)).norm() <= s2);
-    BOOST_TEST((q1 - eig(V1)).norm() <= s1);
-    BOOST_TEST((q2 - eig(V2)).norm() <= s2);
+    BOOST_TEST((d[1] - to_eigen(V1)).norm() <= s1);
+    BOOST_TEST((d[2] - to_eigen(V2)).norm() <= s2);
+    BOOST_TEST((q1 - to_eigen(V1)).norm() <= s1);
+    BOOST_TEST((q2 - to_eigen(V2)).norm() <= s2);
   }
 }
 
@@ -239,15 +236,15 @@ void check_surface_evaluation(const BSplineSurface<3>& s, const Geom_BSplineSurf
     const auto d = s.derivatives<1>(u, v);
     // Derivative scales as for curves, per direction (eval_scales.hpp).
     const double su = test::deriv_scale(s, 1, 0), sv = test::deriv_scale(s, 0, 1);
-    BOOST_TEST((d.S() - eig(P)).norm() <= 1e-12 * scale);
-    BOOST_TEST((d.S_u() - eig(Du)).norm() <= 1e-12 * su);
-    BOOST_TEST((d.S_v() - eig(Dv)).norm() <= 1e-12 * sv);
-    BOOST_TEST((ev.point(u, v) - eig(P)).norm() <= 1e-12 * scale);
+    BOOST_TEST((d.S() - to_eigen(P)).norm() <= 1e-12 * scale);
+    BOOST_TEST((d.S_u() - to_eigen(Du)).norm() <= 1e-12 * su);
+    BOOST_TEST((d.S_v() - to_eigen(Dv)).norm() <= 1e-12 * sv);
+    BOOST_TEST((ev.point(u, v) - to_eigen(P)).norm() <= 1e-12 * scale);
     Eigen::Vector3d q, qu, qv;
     ev.d1(u, v, q, qu, qv);
-    BOOST_TEST((q - eig(P)).norm() <= 1e-12 * scale);
-    BOOST_TEST((qu - eig(Du)).norm() <= 1e-12 * su);
-    BOOST_TEST((qv - eig(Dv)).norm() <= 1e-12 * sv);
+    BOOST_TEST((q - to_eigen(P)).norm() <= 1e-12 * scale);
+    BOOST_TEST((qu - to_eigen(Du)).norm() <= 1e-12 * su);
+    BOOST_TEST((qv - to_eigen(Dv)).norm() <= 1e-12 * sv);
   }
 }
 

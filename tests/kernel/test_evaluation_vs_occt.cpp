@@ -26,10 +26,7 @@ using test::deriv_scale;
 
 namespace {
 
-Eigen::Vector3d to_eigen(const gp_Vec& v) { return {v.X(), v.Y(), v.Z()}; }
-Eigen::Vector3d to_eigen(const gp_Pnt& v) { return {v.X(), v.Y(), v.Z()}; }
-Eigen::Vector2d to_eigen(const gp_Vec2d& v) { return {v.X(), v.Y()}; }
-Eigen::Vector2d to_eigen(const gp_Pnt2d& v) { return {v.X(), v.Y()}; }
+using occt::to_eigen;
 
 template <int Dim, class OcctCurve>
 void compare_curve(const BSplineCurve<Dim>& c, const OcctCurve& oc, test::Rng& r) {

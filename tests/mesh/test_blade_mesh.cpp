@@ -101,7 +101,7 @@ const Built& c3x() {
   });
 }
 
-double volume_of(const TopoDS_Shape& s) {
+double occt_volume(const TopoDS_Shape& s) {
   GProp_GProps g;
   BRepGProp::VolumeProperties(s, g, 1e-7, /*OnlyClosed=*/true);
   return g.Mass();
@@ -132,8 +132,8 @@ void check_mesh(const mesh::MeshResult& r, const pipeline::BuildResult& b, const
   BOOST_TEST(r.nonconformal_triangles == 0u);
   BOOST_TEST_REQUIRE(r.regions.size() == b.part.size() + 1);
   double inserts = 0;
-  for (std::size_t k = 1; k < b.part.size(); ++k) inserts += volume_of(b.part[k].geometry.shape);
-  const double expected = volume_of(b.uncooled.shape) - volume_of(b.part[0].geometry.shape) - inserts;
+  for (std::size_t k = 1; k < b.part.size(); ++k) inserts += occt_volume(b.part[k].geometry.shape);
+  const double expected = occt_volume(b.uncooled.shape) - occt_volume(b.part[0].geometry.shape) - inserts;
   BOOST_TEST(std::abs(r.coolant_brep_volume - expected) <= 1e-6 * expected, r.coolant_brep_volume << " vs " << expected);
   BOOST_TEST(std::abs(r.coolant_mesh_volume - expected) <= 5e-3 * expected, r.coolant_mesh_volume << " vs " << expected);
   for (std::size_t k = 0; k < r.regions.size(); ++k) {

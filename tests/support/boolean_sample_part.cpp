@@ -15,6 +15,7 @@
 #include "src/algo/ray_surface.hpp"
 #include "src/blade/blade_coordinates.hpp"
 #include "src/brep/blade_solid.hpp"
+#include "src/core/constants.hpp"
 #include "src/core/error.hpp"
 #include "src/fit/interpolate.hpp"
 #include "src/fit/skin.hpp"
@@ -23,7 +24,7 @@
 namespace cg::features {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using cg::kPi;
 
 // Blade thickness |S_ss - S_ps| at chordwise fraction x and span v.
 double blade_thickness(const blade::BladeCoordinates& bc, double v, double x) {
@@ -110,15 +111,15 @@ HollowBlade make_hollow_blade(const blade::BladeModel& model, const HollowBladeO
 
   BooleanOptions bo;
   bo.parallel = true;
-  bo.verify_result = o.verify;
+  bo.verification = o.verify ? Verification::EachStep : Verification::None;
   BooleanStep step(BooleanOperation::Cut, bo);
   FeatureTool core_tool;
   core_tool.feature = "chamber_1";
   core_tool.shape = tool;
-  core_tool.expected_volume = solid_volume(core.solid);  // the core lies inside the blade
+  core_tool.expected_volume = occt_volume(core.solid);  // the core lies inside the blade
   step.add(core_tool);
   hb.part = step.apply(part);
-  hb.volume = o.verify ? step.report().check.volume : solid_volume(hb.part.shape);
+  hb.volume = o.verify ? step.report().check.volume : occt_volume(hb.part.shape);
   return hb;
 }
 

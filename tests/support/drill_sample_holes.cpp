@@ -16,12 +16,13 @@
 #include "adaptors/occt_convert.hpp"
 #include "features/drilling/drill_hole_geometry.hpp"
 #include "src/blade/blade_coordinates.hpp"
+#include "src/core/constants.hpp"
 #include "src/core/error.hpp"
 
 namespace cg::features {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using cg::kPi;
 
 // The chamber walls of the part: their common surface and a classifier per face.
 struct ChamberWalls {

@@ -11,7 +11,7 @@
 
 namespace cg::features {
 
-double solid_volume(const TopoDS_Shape& s) {
+double occt_volume(const TopoDS_Shape& s) {
   GProp_GProps p;
   BRepGProp::VolumeProperties(s, p, 1e-10, /*OnlyClosed=*/Standard_True);
   return p.Mass();
@@ -35,7 +35,7 @@ double occt_expected_volume(const TopoDS_Shape& tool, const TopoDS_Shape& part, 
     bop.SetToFillHistory(false);
     bop.Build();
     if (bop.HasErrors() || bop.HasWarnings()) why = alert_summary(bop.GetReport());
-    else return solid_volume(bop.Shape());
+    else return occt_volume(bop.Shape());
   } catch (const Standard_Failure& e) {
     why = std::string("exception ") + e.GetMessageString();
   }

@@ -15,6 +15,6 @@ double occt_expected_volume(const TopoDS_Shape& tool, const TopoDS_Shape& part, 
                             const std::string& feature);
 
 /// Volume of a solid (BRepGProp, relative accuracy 1e-10), mm^3.
-double solid_volume(const TopoDS_Shape& s);
+double occt_volume(const TopoDS_Shape& s);
 
 }  // namespace cg::features

@@ -1,4 +1,5 @@
 #include "src/brep/boolean/boolean_perturb.hpp"
+#include "src/core/constants.hpp"
 #include "src/core/format.hpp"
 
 #include <BRepAdaptor_Surface.hxx>
@@ -49,7 +50,7 @@ Perturbed perturb_tool(const brep::NamedShape& tool, const std::optional<gp_Ax1>
     const double angle = attempt == 1 ? 0.37 : 0.37 + 1.2 * (attempt / 2);
     t.SetRotation(*axis, angle);
     p.same_geometry = true;
-    p.what = "rotated " + format_number(angle * 180 / 3.14159265358979323846) + " deg about its axis";
+    p.what = "rotated " + format_number(angle * 180 / kPi) + " deg about its axis";
   } else {
     gp_Vec d(1, 1, 1);
     if (axis) {

@@ -518,7 +518,7 @@ brep::NamedShape BooleanStep::apply(const brep::NamedShape& part) {
   // booleans redone with verify_solid on each of them, to find the tool to blame.
   brep::NamedShape result = engine.apply_group(base, all, /*verify=*/false);
   std::string failure;
-  if (options_.verify_result && engine.failures.empty()) {
+  if (options_.verification == Verification::EachStep && engine.failures.empty()) {
     report_progress(progress, 0.9, "verify");
     if (!engine.verify_final(result)) {
       report_.warnings.push_back("the result failed " + report_.check.failed_names() +

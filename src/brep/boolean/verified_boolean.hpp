@@ -8,7 +8,7 @@
 //   const BooleanStepReport& r = step.report();     // per-tool expected/measured volumes, checks, timings
 //
 // What apply() guarantees when it returns: the result passed every check of brep::verify_solid (unless
-// options.verify_result is off), has options.expected_solids solids, came from booleans without any
+// options.verification is not EachStep), has options.expected_solids solids, came from booleans without any
 // BOPAlgo error or warning, every face is named from boolean history, no piece of the part was dropped
 // outside the tools, and every tool removed (added) its expected volume within the tolerance, measured
 // on the result.
@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "src/brep/boolean/boolean_retries.hpp"
+#include "src/brep/boolean/feature_options.hpp"
 #include "src/brep/named_shape.hpp"
 #include "src/brep/verify.hpp"
 #include "src/core/error.hpp"
@@ -53,7 +54,7 @@ struct FeatureTool {
   std::optional<gp_Ax1> symmetry_axis;
 };
 
-struct BooleanOptions {
+struct BooleanOptions : FeatureOptions {
   /// Per-tool |measured - expected| <= volume_rel_tolerance * expected + volume_abs_tolerance
   /// + the uncertainty the result's edge tolerances leave in the measured volume (ToolReport).
   double volume_rel_tolerance = 1e-6;
@@ -73,11 +74,10 @@ struct BooleanOptions {
   /// `patch_tools_per_patch` tools first (src/brep/face_patches.hpp); 0 disables.
   int patch_min_tools = 64;
   int patch_tools_per_patch = 32;
-  /// Run brep::verify_solid on the result (BRepCheck, free edges, shells, closed mesh, volume).
-  bool verify_result = true;
+  /// Inherited from FeatureOptions: `verification` EachStep runs brep::verify_solid on the result
+  /// (BRepCheck, free edges, shells, closed mesh, volume), FinalOnly and None leave it to the caller;
+  /// `progress`: progress and cancellation.
   brep::VerifyOptions verify;
-  /// Progress and cancellation (src/core/progress.hpp); null: none. A stop throws cg::Cancelled.
-  ProgressSink* progress = nullptr;
 };
 
 struct ToolReport {

@@ -5,7 +5,6 @@
 #include <BRepLib.hxx>
 #include <BRep_Builder.hxx>
 #include <GProp_GProps.hxx>
-#include <OSD_Parallel.hxx>
 #include <ShapeAnalysis_FreeBounds.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
@@ -16,7 +15,6 @@
 #include <TopoDS_Shell.hxx>
 #include <TopoDS_Solid.hxx>
 
-#include "src/brep/solid_integrals.hpp"
 #include "src/core/error.hpp"
 #include "src/core/format.hpp"
 
@@ -123,16 +121,6 @@ TopoDS_Shape merge_cells(const std::vector<TopoDS_Shape>& cells) {
   bb.Add(solid, shell);
   BRepLib::OrientClosedSolid(solid);
   return solid;
-}
-
-double volume_of(const TopoDS_Shape& shape) { return brep::shape_volume(shape, 1e-7); }
-
-std::vector<double> volumes_of(const std::vector<TopoDS_Shape>& shapes) {
-  std::vector<double> v(shapes.size(), 0.0);
-  // Read-only on the shapes (each integration has its own surface adaptors), so they run in parallel.
-  OSD_Parallel::For(0, static_cast<int>(shapes.size()),
-                    [&](int i) { v[static_cast<std::size_t>(i)] = volume_of(shapes[static_cast<std::size_t>(i)]); });
-  return v;
 }
 
 }  // namespace cg::features

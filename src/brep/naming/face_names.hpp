@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "src/brep/named_shape.hpp"
+#include "src/brep/solid_integrals.hpp"
 
 namespace cg::features {
 
@@ -44,10 +45,8 @@ std::vector<TopoDS_Shape> solids_of(const TopoDS_Shape& shape);
 /// faces were split for naming. Throws AlgorithmFailure when the faces do not form one closed shell.
 TopoDS_Shape merge_cells(const std::vector<TopoDS_Shape>& cells);
 
-/// Volume bounded by the shape's faces (brep::shape_volume, our face flux) at relative accuracy 1e-7 per
-/// face: ten times below the 1e-6 volume checks.
-double volume_of(const TopoDS_Shape& shape);
-/// volume_of of every shape, computed in parallel.
-std::vector<double> volumes_of(const std::vector<TopoDS_Shape>& shapes);
+/// The volume checks of the features use brep::volume_of (src/brep/solid_integrals.hpp).
+using brep::volume_of;
+using brep::volumes_of;
 
 }  // namespace cg::features
