@@ -354,6 +354,11 @@ void HoleAnalyser::Impl::Analysis::tool_extent() {
     auto plane_s = [&](const Eigen::Vector3d& o) { return (delta - (o - ai.point).dot(n_inlet)) / cos_t - s_out; };
     g.extent.s_end = plane_s(base);
     g.extent.end_normal = n_inlet;
+    // The tool keeps what lies before that plane: a plane before the tool's start keeps nothing.
+    if (g.extent.s_end <= g.extent.s_top + c)
+      fail(h, h.position_field, "does not fit here: the cavity wall its axis enters lies across the hole's own start (" +
+                                    format_number(g.extent.s_end - g.extent.s_top) + " mm along the axis; the wall is too thin "
+                                    "or too curved here for this inclination)");
     double worst = axis_far - g.extent.s_end;
     for (std::size_t q = 0; q < nr; ++q) {
       s_end_rim[q] = plane_s(end_rim[q]);

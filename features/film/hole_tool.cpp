@@ -137,7 +137,9 @@ TopoDS_Shape make_hole_solid(const HoleFrame& frame, const HoleShape& shape, con
   if (!oblique) return tool;
   // Keep the side of the end plane towards the exit: a box with one face on the plane.
   const Eigen::Vector3d n = extent.end_normal.normalized(), p = frame.exit + extent.s_end * frame.axis;
-  const Eigen::Vector3d x = n.unitOrthogonal(), y = n.cross(x);
+  // The box's own axes: Z = -n (into the kept side), X = x, Y = Z x X (gp_Ax2), so the corner lies half
+  // a box back along X and Y for the box to be centred on the axis.
+  const Eigen::Vector3d x = n.unitOrthogonal(), y = (-n).cross(x);
   const double big = 4 * (e.s_end - e.s_top) + 20 * shape.diameter;
   const gp_Ax2 ax(occt::to_pnt(p - 0.5 * big * (x + y)), occt::to_dir(-n), occt::to_dir(x));
   BRepAlgoAPI_Common common(tool, BRepPrimAPI_MakeBox(ax, big, big, big).Shape());
