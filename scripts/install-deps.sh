@@ -10,6 +10,7 @@ packages=(
   libvtk9-dev libgmsh-dev libcgns-dev admesh cgns-convert libssl-dev xvfb xauth
   python3-meshio pybind11-dev python3-dev python3-numpy python3-distributed
   clang libclang-rt-14-dev
+  slurm-wlm munge
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -7,7 +7,7 @@ cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 jobs=$(nproc)
 
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DCOOLINGGEN_SANITIZE=OFF -DCOOLINGGEN_BUILD_TESTS=ON -DCOOLINGGEN_BUILD_BENCH=ON >/dev/null
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DCOOLINGGEN_SANITIZE=OFF -DCOOLINGGEN_BUILD_TESTS=ON -DCOOLINGGEN_BUILD_BENCH=ON -DCOOLINGGEN_TEST_SLURM=ON >/dev/null
 cmake --build build -j"$jobs"
 (cd build && ctest --output-on-failure -j"$jobs")
 

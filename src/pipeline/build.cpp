@@ -31,7 +31,7 @@ std::string failure(const std::exception_ptr& e) {
 features::PassagesResult cooling_stage(const config::Config& c, BuildResult& r, features::Verification verification,
                                        StageCache* cache) {
   const bool on = cache && cache->options().mode != StageCacheMode::kOff;
-  const std::string key = on ? cooling_stage_key(c, verification == features::Verification::EachStep) : std::string();
+  const std::string key = on ? cooling_stage_key(c, verification) : std::string();
   if (on)
     if (const auto entry = cache->find(kCoolingStage, key)) {
       try {

@@ -366,7 +366,7 @@ const std::vector<std::string> kNotCoolingInputs = [] {
   return v;
 }();
 
-std::string cooling_stage_key(const config::Config& c, bool verify_each_step) {
+std::string cooling_stage_key(const config::Config& c, features::Verification verification) {
   json document = c.source;
   for (const std::string& path : kNotCoolingInputs) {
     const std::size_t dot = path.find('.');
@@ -376,7 +376,7 @@ std::string cooling_stage_key(const config::Config& c, bool verify_each_step) {
   }
   Sha256 h;
   for (const std::string& part : {std::string(kFormat), std::string(io::tool_version()), binary_fingerprint(), std::string(kCoolingStage),
-                                  std::string(verify_each_step ? "verify_each_step" : "verify_once")}) {
+                                  std::string(verification == features::Verification::EachStep ? "verify_each_step" : "verify_once")}) {
     h.update(std::to_string(part.size()) + ":");
     h.update(part);
   }

@@ -34,8 +34,9 @@ inline constexpr const char* kCoolingStage = "cooling";
 /// errors).
 extern const std::vector<std::string> kNotCoolingInputs;
 
-/// "sha256:..." hex key of the cooling stage of `config` (see above).
-std::string cooling_stage_key(const config::Config& config, bool verify_each_step);
+/// "sha256:..." hex key of the cooling stage of `config` (see above) when built with `verification`
+/// (EachStep verifies inside the stage and has its own entries; FinalOnly and None build it alike).
+std::string cooling_stage_key(const config::Config& config, features::Verification verification);
 
 /// The entry of a cooling stage's result. Throws cg::Error when a part would not come back exactly
 /// (then nothing is stored).

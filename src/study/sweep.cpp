@@ -63,7 +63,8 @@ void record(ResultRow& row, const ProcessResult& r, const PreparedVariant& p, co
     row.error = std::string("ended by signal ") + std::to_string(r.signal) + " (" + strsignal(r.signal) + ")" + (row.error.empty() ? "" : ": " + row.error);
   } else if (r.exit_code == 0) {
     row.status = report_matches ? Status::kBuilt : Status::kFailed;
-    if (!report_matches) row.error = "exit 0 but no report.json with the variant's input_hash";
+    // A built variant has no error (its stderr may still hold warnings; report.json lists them).
+    row.error = report_matches ? std::string() : "exit 0 but no report.json with the variant's input_hash";
   } else {
     row.status = r.exit_code == 2 ? Status::kRefused : r.exit_code == 6 ? Status::kTimeout : Status::kFailed;
   }

@@ -55,7 +55,7 @@ PreparedVariant prepare_variant(const Study& s, const Variant& v, const fs::path
     const config::Config c = config::load_config_file(p.config_file);
     pipeline::validate(c);
     p.input_hash = pipeline::input_hash(c);
-    if (!c.cooling.passages.empty()) p.cooling_key = pipeline::cooling_stage_key(c, false);
+    if (!c.cooling.passages.empty()) p.cooling_key = pipeline::cooling_stage_key(c, pipeline::BuildOptions{}.verification);
   } catch (const io::ExportError&) {
     throw;
   } catch (const Error& e) {  // ConfigError, or the model's own refusal of the geometry

@@ -41,7 +41,7 @@ json light_film(double pitch_d = 5) {
 
 config::Config parse(const json& d) { return config::parse_config(d, kBase.parent_path(), "light_film"); }
 
-std::string key_of(const json& d) { return pipeline::cooling_stage_key(parse(d), false); }
+std::string key_of(const json& d) { return pipeline::cooling_stage_key(parse(d), features::Verification::FinalOnly); }
 
 // A report without what may differ between equal builds: timings and the stage cache's own record.
 json comparable(json r) {
@@ -79,7 +79,7 @@ BOOST_AUTO_TEST_CASE(key_covers_the_cooling_inputs_only) {
   BOOST_TEST(changed([](json& d) { d["sections"][1]["parametric"]["stagger_deg"] = -26.5; }));
   BOOST_TEST(changed([](json& d) { d["blade"]["chordwise_samples"] = 101; }));
   BOOST_TEST(changed([](json& d) { d["booleans"] = {{"allow_perturbation", false}}; }));
-  BOOST_TEST(pipeline::cooling_stage_key(parse(base), true) != k);
+  BOOST_TEST(pipeline::cooling_stage_key(parse(base), features::Verification::EachStep) != k);
   // Hits: the film rows, the name, the outputs.
   BOOST_TEST(!changed([](json& d) { d["cooling"]["film_rows"][0]["pitch_d"] = 6; }));
   BOOST_TEST(!changed([](json& d) { d["cooling"]["film_rows"][0]["inclination_deg"] = 30; }));
