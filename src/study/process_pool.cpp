@@ -66,16 +66,17 @@ fs::path current_executable() {
 std::vector<ProcessResult> run_processes(const std::vector<ProcessSpec>& specs, const PoolOptions& o) {
   std::vector<ProcessResult> results(specs.size());
   std::vector<Running> running;
-  std::vector<bool> started(specs.size(), false), ended(specs.size(), false);
+  // ready[i]: spec i ended or created its ready_path (checked for running specs only, once a tick).
+  std::vector<bool> started(specs.size(), false), ready(specs.size(), false);
   std::size_t first_unstarted = 0;  // specs before it have all started
   bool stopping = false;
   auto last_tick = Clock::now();
-  // The first spec that has not started and whose `after` spec (an earlier one) has ended.
+  // The first spec that has not started and whose `after` spec (an earlier one) is ready.
   const auto next_ready = [&]() -> std::size_t {
     while (first_unstarted < specs.size() && started[first_unstarted]) ++first_unstarted;
     for (std::size_t i = first_unstarted; i < specs.size(); ++i) {
       const std::size_t a = specs[i].after;
-      if (!started[i] && (a >= i || ended[a])) return i;
+      if (!started[i] && (a >= i || ready[a])) return i;
     }
     return specs.size();
   };
@@ -87,6 +88,10 @@ std::vector<ProcessResult> run_processes(const std::vector<ProcessSpec>& specs, 
         r.interrupted = true;
         r.interrupt_time = Clock::now();
       }
+    }
+    for (const Running& r : running) {
+      std::error_code ec;
+      if (!ready[r.index] && !specs[r.index].ready_path.empty() && fs::exists(specs[r.index].ready_path, ec)) ready[r.index] = true;
     }
     while (!stopping && static_cast<int>(running.size()) < std::max(1, o.jobs)) {
       const std::size_t next = next_ready();
@@ -114,7 +119,7 @@ std::vector<ProcessResult> run_processes(const std::vector<ProcessSpec>& specs, 
         res.signal = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
         res.killed_for_time = r.killed && !r.interrupted;
         res.interrupted = r.interrupted;
-        ended[r.index] = true;
+        ready[r.index] = true;
         if (o.on_finished) o.on_finished(r.index, res);
         running.erase(running.begin() + static_cast<long>(k));
         continue;

@@ -1,6 +1,6 @@
 #pragma once
 // Runs commands as child processes, at most `jobs` at a time, in order (a spec may wait for an earlier one
-// to end: ProcessSpec::after). Each child runs in its own process group
+// to end or to create a path: ProcessSpec::after, ready_path). Each child runs in its own process group
 // with stdout and stderr in files; one that outlives its `kill_after_s` is killed (SIGKILL to its
 // group). When `stop_requested` turns true no child is started any more, the running ones get SIGINT
 // (a coolinggen build stops cleanly at its next check point) and, after `stop_grace_s`, SIGKILL.
@@ -21,6 +21,9 @@ struct ProcessSpec {
   /// order, a waiting one skipped for the next that can start.
   static constexpr std::size_t kNone = static_cast<std::size_t>(-1);
   std::size_t after = kNone;
+  /// A path this spec's process creates when what the specs waiting for it need is there (the stage
+  /// cache's entry): once it exists they start without waiting for the end. Empty: only the end counts.
+  std::filesystem::path ready_path;
 };
 
 struct ProcessResult {

@@ -10,6 +10,8 @@
 #include "export/atomic_file.hpp"
 #include "src/config/config_error.hpp"
 #include "src/core/format.hpp"
+#include "src/pipeline/cooling_stage_cache.hpp"
+#include "src/pipeline/stage_cache.hpp"
 #include "src/study/design.hpp"
 #include "src/study/process_pool.hpp"
 #include "src/study/study_file.hpp"
@@ -181,6 +183,7 @@ SweepOutcome run_sweep(const SweepOptions& o) {
   std::vector<ProcessSpec> specs;
   std::vector<std::size_t> spec_of;  // specs[k] -> prepared index
   std::map<std::string, std::size_t> builds_stage;  // cooling key -> the spec that builds it first
+  const pipeline::StageCache cache({pipeline::StageCacheMode::kDisk, stage_cache_directory(o.output)});  // its entries' paths
   for (std::size_t i = 0; i < prepared.size(); ++i) {
     const PreparedVariant& p = prepared[i];
     if (p.refused()) continue;
@@ -195,10 +198,12 @@ SweepOutcome run_sweep(const SweepOptions& o) {
     if (o.timeout_s > 0) s.argv.insert(s.argv.end(), {"--timeout", format_number(o.timeout_s)});
     if (o.stage_cache == pipeline::StageCacheMode::kDisk) {
       s.argv.insert(s.argv.end(), {"--stage-cache", stage_cache_directory(o.output).string()});
-      // The first variant of a cooling stage builds and stores it; the others of this run wait for it.
+      // The first variant of a cooling stage builds and stores it; the others of this run wait until
+      // its entry is there (or the variant ended without storing it).
       if (!p.cooling_key.empty()) {
         const auto [it, first] = builds_stage.emplace(p.cooling_key, specs.size());
-        if (!first) s.after = it->second;
+        if (first) s.ready_path = cache.entry_directory(pipeline::kCoolingStage, p.cooling_key);
+        else s.after = it->second;
       }
     }
     s.stdout_file = p.dir / "build.log";

@@ -317,6 +317,22 @@ BOOST_AUTO_TEST_CASE(process_pool_outcomes) {
   BOOST_TEST(r[2].exit_code == 3);
   BOOST_TEST(seconds < 10, seconds);  // the 30 s hang did not hold the pool (limit 0.3 s, polling 20 ms)
 
+  // A spec waiting for an earlier one starts when that one created its ready_path, not at its end
+  // (the stage cache's entry); without a ready_path, at its end.
+  std::vector<std::size_t> order;
+  o.on_finished = [&](std::size_t i, const study::ProcessResult&) { order.push_back(i); };
+  const fs::path ready = dir.path / "entry";
+  for (const bool with_path : {true, false}) {
+    fs::remove_all(ready);
+    order.clear();
+    std::vector<study::ProcessSpec> specs{spec("mkdir " + q(ready) + " && exec sleep 2"), spec("exit 0")};
+    if (with_path) specs[0].ready_path = ready;
+    specs[1].after = 0;
+    study::run_processes(specs, o);
+    BOOST_TEST((order == std::vector<std::size_t>{with_path ? 1u : 0u, with_path ? 0u : 1u}), with_path);
+  }
+  o.on_finished = {};
+
   // Stop after 0.3 s: the two running sleeps get SIGINT, the third never starts.
   o.stop_requested = [t0 = std::chrono::steady_clock::now()] {
     return std::chrono::steady_clock::now() - t0 > std::chrono::milliseconds(300);
