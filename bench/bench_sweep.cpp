@@ -1,7 +1,6 @@
 // bench_sweep: a design study's wall time against the serial sum of its variants' process wall times
 // (measured in the same run), the parallel gain of `coolinggen sweep --jobs 2`; then the rerun, which
-// must build nothing. Exit 1 when a variant is not built or the rerun
-// builds one.
+// must build nothing. Exit 1 when a variant is not built or the rerun builds one.
 //
 //   bench_sweep            data/studies/hpt_rotor_lhs24.json (24 variants of the built-in example;
 //                          long: each variant is a full cooled build)
@@ -46,7 +45,7 @@ int main(int argc, char** argv) {
   try {
     const study::SweepOutcome first = study::run_sweep(o);
     // The serial sum: the wall time of every variant's process (built, or refused or failed by the
-    // build after part of it), as --jobs 1 would run them one after the other on this machine's load.
+    // build after part of it), each measured while sharing the machine with the other job.
     double serial = 0, built_s = 0;
     int built = 0, ran = 0;
     for (const study::ResultRow& r : first.listing.rows) {
