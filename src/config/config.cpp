@@ -230,8 +230,9 @@ Config parse_config(const nlohmann::json& document, const std::filesystem::path&
     if (out.has("formats")) {
       const Field formats = out.at("formats");
       const std::size_t n = formats.expect_array(0);
-      c.output.formats.clear();
-      for (std::size_t i = 0; i < n; ++i) c.output.formats.push_back(formats.item(i).string());
+      std::vector<std::string> names;
+      for (std::size_t i = 0; i < n; ++i) names.push_back(formats.item(i).string());
+      c.output.formats = parse_output_formats(names, formats.path());
     }
     if (out.has("step_schema"))
       c.output.step_schema = out.at("step_schema").choice({"AP214", "AP242"}) == 1 ? "AP242" : "AP214";

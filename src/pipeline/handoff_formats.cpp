@@ -53,9 +53,9 @@ Shared& shared_for(const BuildResult& r) {
   return s;
 }
 
-bool selected(const config::Config& c, std::initializer_list<const char*> names) {
-  for (const char* n : names)
-    if (std::find(c.output.formats.begin(), c.output.formats.end(), n) != c.output.formats.end()) return true;
+bool selected(const config::Config& c, std::initializer_list<config::OutputFormat> formats) {
+  for (const config::OutputFormat f : formats)
+    if (config::has_format(c.output.formats, f)) return true;
   return false;
 }
 
@@ -96,25 +96,26 @@ void need_part(const BuildResult& r, const char* what) {
 
 }  // namespace
 
-std::vector<OutputFormat> handoff_formats() {
+std::vector<OutputWriter> handoff_writers() {
+  using F = config::OutputFormat;
   return {
-      {"iges", "IGES (144 trimmed NURBS surfaces, names and levels per feature)", {"blade.igs"},
+      {F::Iges, "IGES (144 trimmed NURBS surfaces, names and levels per feature)", {"blade.igs"},
        [](OutputDirectory& d, const config::Config& c, const BuildResult& r, ProgressSink*) {
          need_part(r, "IGES");
          d.write("blade.igs", [&](const fs::path& t) { io::write_iges(t, r.part, {product(c), c.output.iges_mode == "brep" ? io::IgesMode::Brep : io::IgesMode::Faces}); });
        }},
-      {"brep", "OCCT BREP of all bodies", {"blade.brep"},
+      {F::Brep, "OCCT BREP of all bodies", {"blade.brep"},
        [](OutputDirectory& d, const config::Config&, const BuildResult& r, ProgressSink*) {
          need_part(r, "BREP");
          d.write("blade.brep", [&](const fs::path& t) { io::write_brep(t, r.part); });
        }},
-      {"stl", "binary STL", {"blade.stl"},
+      {F::Stl, "binary STL", {"blade.stl"},
        [](OutputDirectory& d, const config::Config& c, const BuildResult& r, ProgressSink*) {
          need_part(r, "STL");
          const io::PartTriangles& t = triangles(c, r);
          d.write("blade.stl", [&](const fs::path& target) { io::write_stl(target, t, product(c)); });
        }},
-      {"vtk", "ParaView multiblock with feature ids", {"blade.vtm", "blade_blade.vtp"},
+      {F::Vtk, "ParaView multiblock with feature ids", {"blade.vtm", "blade_blade.vtp"},
        [](OutputDirectory& d, const config::Config& c, const BuildResult& r, ProgressSink*) {
          need_part(r, "VTK");
          const io::PartTriangles& t = triangles(c, r);
@@ -124,7 +125,7 @@ std::vector<OutputFormat> handoff_formats() {
                    [&](const fs::path& target) { io::write_vtk_piece(target, r.part[k].name, t, static_cast<int>(k)); });
          d.write("blade.vtm", [&](const fs::path& target) { io::write_vtk_multiblock(target, r.part, "blade"); });
        }},
-      {"preview", "preview.png (VTK; skipped without an X display)", {"preview.png"},
+      {F::Preview, "preview.png (VTK; skipped without an X display)", {"preview.png"},
        [](OutputDirectory& d, const config::Config& c, const BuildResult& r, ProgressSink*) {
          need_part(r, "preview");
          const io::PartTriangles& t = triangles(c, r);
@@ -147,13 +148,13 @@ std::vector<OutputFormat> handoff_formats() {
          });
          if (!written) shared_for(r).notes.push_back(note);
        }},
-      {"sections", "sections.svg (sections at several spans with passages and dimensions)", {"sections.svg"},
+      {F::Sections, "sections.svg (sections at several spans with passages and dimensions)", {"sections.svg"},
        [](OutputDirectory& d, const config::Config& c, const BuildResult& r, ProgressSink*) {
          need_part(r, "sections");
          const auto& cuts = sections(c, r);
          d.write("sections.svg", [&](const fs::path& t) { io::write_sections_svg(t, cuts, product(c)); });
        }},
-      {"report_md", "report.md (rendered from report.json)", {"report.md"},
+      {F::ReportMd, "report.md (rendered from report.json)", {"report.md"},
        [](OutputDirectory& d, const config::Config& c, const BuildResult& r, ProgressSink*) {
          std::vector<std::string> files = d.files();
          files.push_back("report.md");
@@ -168,14 +169,14 @@ std::vector<OutputFormat> handoff_formats() {
 void add_handoff_report(const config::Config& c, const BuildResult& r, io::ReportContent& report) {
   if (r.part.empty()) return;
   Shared& s = shared_for(r);
-  if (selected(c, {"sections", "report_md"}) && r.valid()) report.extra["sections"] = io::sections_json(sections(c, r));
+  if (selected(c, {config::OutputFormat::Sections, config::OutputFormat::ReportMd}) && r.valid()) report.extra["sections"] = io::sections_json(sections(c, r));
   if (!s.notes.empty()) report.extra["notes"] = s.notes;
 }
 
 void prepare_shared_outputs(const config::Config& c, const BuildResult& r) {
   if (r.part.empty() || !r.valid()) return;
-  if (selected(c, {"stl", "vtk", "preview"})) start_triangles(c, r);
-  if (selected(c, {"sections", "report_md"})) start_sections(c, r);
+  if (selected(c, {config::OutputFormat::Stl, config::OutputFormat::Vtk, config::OutputFormat::Preview})) start_triangles(c, r);
+  if (selected(c, {config::OutputFormat::Sections, config::OutputFormat::ReportMd})) start_sections(c, r);
 }
 
 void finish_shared_outputs(const BuildResult& r) noexcept {

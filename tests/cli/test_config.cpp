@@ -260,6 +260,19 @@ BOOST_AUTO_TEST_CASE(schema_documents_the_fields) {
   for (const auto& k : keys) BOOST_TEST(names.count(k) == 1u, "schema lacks " << k);
 }
 
+// The format names of both schemas are the one list of output formats (src/config/output_format.hpp).
+BOOST_AUTO_TEST_CASE(schemas_list_the_output_formats) {
+  const json schema = json::parse(test::read_text(COOLINGGEN_SOURCE_DIR "/data/schema/coolinggen.schema.json"));
+  const json study = json::parse(test::read_text(COOLINGGEN_SOURCE_DIR "/data/schema/study.schema.json"));
+  std::vector<std::string> all;
+  for (const config::OutputFormatInfo& f : config::kOutputFormats) all.push_back(f.name);
+  const json& formats = schema.at("definitions").at("output_options").at("properties").at("formats");
+  BOOST_TEST(formats.at("items").at("enum").get<std::vector<std::string>>() == all);
+  BOOST_TEST(formats.at("default").get<std::vector<std::string>>() ==
+             config::output_format_names(config::default_output_formats()));
+  BOOST_TEST(study.at("properties").at("outputs").at("items").at("enum").get<std::vector<std::string>>() == all);
+}
+
 namespace {
 
 // The ConfigError of parsing `text` ("" if none).
