@@ -9,13 +9,13 @@
 
 namespace cg::config {
 
-enum class OutputFormat { Step, Iges, Brep, Stl, Vtk, Preview, Sections, ReportMd };
+enum class OutputFormat { Step, Iges, Brep, Stl, Vtk, Glb, Preview, Sections, Html, ReportMd };
 
 enum class DefaultOutput { Written, OnRequest };
 
 struct OutputFormatInfo {
   OutputFormat format;
-  const char* name;       ///< as written in output.formats
+  const char* name;          ///< as written in output.formats
   DefaultOutput by_default;  ///< part of the default list of `build`
 };
 
@@ -26,8 +26,10 @@ inline constexpr OutputFormatInfo kOutputFormats[] = {
     {OutputFormat::Brep, "brep", DefaultOutput::Written},
     {OutputFormat::Stl, "stl", DefaultOutput::Written},
     {OutputFormat::Vtk, "vtk", DefaultOutput::Written},
+    {OutputFormat::Glb, "glb", DefaultOutput::Written},
     {OutputFormat::Preview, "preview", DefaultOutput::Written},
     {OutputFormat::Sections, "sections", DefaultOutput::Written},
+    {OutputFormat::Html, "html", DefaultOutput::Written},
     {OutputFormat::ReportMd, "report_md", DefaultOutput::Written},
 };
 

@@ -15,6 +15,7 @@
 #include "src/study/design.hpp"
 #include "src/study/process_pool.hpp"
 #include "src/study/study_file.hpp"
+#include "src/study/study_html.hpp"
 #include "src/study/text_file.hpp"
 #include "src/study/variant_config.hpp"
 
@@ -129,6 +130,7 @@ StudyListing collect_study(const fs::path& dir) {
   collect_rows(dir, l);
   write_results_csv(dir, l);
   write_study_report(dir, l);
+  write_study_html(dir, l);
   return l;
 }
 
@@ -254,6 +256,7 @@ SweepOutcome run_sweep(const SweepOptions& o) {
   if (tabulate) {
     write_results_csv(o.output, l);
     write_study_report(o.output, l);
+    write_study_html(o.output, l);
   }
   progress();
   out.wall_s = std::chrono::duration<double>(Clock::now() - t0).count();

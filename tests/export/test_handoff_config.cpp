@@ -39,7 +39,7 @@ BOOST_AUTO_TEST_CASE(defaults) {
   BOOST_TEST(c.output.iges_mode == "faces");
   // every format (README, Outputs), in the order they are written
   BOOST_TEST(config::output_format_names(c.output.formats) ==
-             (std::vector<std::string>{"step", "iges", "brep", "stl", "vtk", "preview", "sections", "report_md"}));
+             (std::vector<std::string>{"step", "iges", "brep", "stl", "vtk", "glb", "preview", "sections", "html", "report_md"}));
   BOOST_TEST(c.output.stl_deflection == 0.01);
   BOOST_TEST(c.output.section_spans.size() == 5u);
   BOOST_TEST(c.mesh.max_size == 1.5);
