@@ -80,22 +80,25 @@ void check_turbulator_definitions(const CoreDefinition& def) {
     seen[static_cast<std::size_t>(t.chamber)] = true;
     auto positive = [&](double v, const char* name, double hi) {
       if (!(v > 0 && v <= hi))
-        throw PassageInputError(field(i, name), "must be in (0, " + format_number(hi) + "] mm, got " + format_number(v));
+        throw PassageInputError(field(i, name), "must be in (0, " + format_limit(hi, Allowed::below) + "] mm, got " +
+                                                    format_value_range(v, 0, hi).value);
     };
     positive(t.height, "height", 5);
     positive(t.width, "width", 10);
     positive(t.pitch, "pitch", 100);
     if (!(t.angle_deg >= 30 && t.angle_deg <= 90))
-      throw PassageInputError(field(i, "angle_deg"), "must be in [30, 90] deg, got " + format_number(t.angle_deg));
+      throw PassageInputError(field(i, "angle_deg"), "must be in [30, 90] deg, got " + format_value_range(t.angle_deg, 30, 90).value);
     if (!(t.end_gap >= 0 && t.end_gap <= 10))
-      throw PassageInputError(field(i, "end_gap"), "must be in [0, 10] mm, got " + format_number(t.end_gap));
+      throw PassageInputError(field(i, "end_gap"), "must be in [0, 10] mm, got " + format_value_range(t.end_gap, 0, 10).value);
     if (!(t.span_margin >= 0 && t.span_margin <= 50))
-      throw PassageInputError(field(i, "span_margin"), "must be in [0, 50] mm, got " + format_number(t.span_margin));
+      throw PassageInputError(field(i, "span_margin"), "must be in [0, 50] mm, got " + format_value_range(t.span_margin, 0, 50).value);
     // Along the passage axis a turbulator covers width / sin(angle): neighbours must not touch.
     const double along = t.width / std::sin(t.angle_deg * kPi / 180);
-    if (!(t.pitch > along))
-      throw PassageInputError(field(i, "pitch"), "must be > width / sin(angle) = " + format_number(along) +
-                                                     " mm (neighbouring turbulators would touch), got " + format_number(t.pitch));
+    if (!(t.pitch > along)) {
+      const ValueLimitText p = format_value_limit(t.pitch, along, Allowed::above);
+      throw PassageInputError(field(i, "pitch"), "must be > width / sin(angle) = " + p.limit +
+                                                     " mm (neighbouring turbulators would touch), got " + p.value);
+    }
   }
 }
 
@@ -283,7 +286,7 @@ void build_turbulator(const std::string& name, std::size_t i, const TurbulatorDe
                               name + " is taller than its chamber at span " + format_number(s) + ": " + format_number(clear + td.height) +
                                   " mm from the wall to the opposite wall, the turbulators need " +
                                   format_number(td.height + other_height) + " mm and 0.1 mm clear; height must be < " +
-                                  format_number(0.5 * (clear + td.height - 0.1)) + " mm here");
+                                  format_limit(0.5 * (clear + td.height - 0.1), Allowed::below) + " mm here");
   }
   const BlockIntegral vi = integrate_block(block, lines, Region::Material, Region::Chamber, Region::Chamber);
   if (!vi.ok)

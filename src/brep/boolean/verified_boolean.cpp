@@ -235,8 +235,8 @@ class Engine {
     for (int id : a.suspects) {
       const Unit& u = units[static_cast<std::size_t>(id)];
       const auto k = static_cast<std::size_t>(std::find(ids.begin(), ids.end(), id) - ids.begin());
-      what += (what.empty() ? "" : "; ") + u.label + ": measured " + format_number(a.volumes[k].volume) + " mm^3, expected " +
-              format_number(u.expected) + " mm^3 (closure " + format_number(a.volumes[k].closure) + ", B-rep uncertainty " + format_number(a.volumes[k].uncertainty) + ")";
+      const ValueLimitText t = format_value_limit(a.volumes[k].volume, u.expected, Allowed::near);
+      what += (what.empty() ? "" : "; ") + u.label + ": measured " + t.value + " mm^3, expected " + t.limit + " mm^3 (closure " + format_number(a.volumes[k].closure) + ", B-rep uncertainty " + format_number(a.volumes[k].uncertainty) + ")";
     }
     report_.warnings.push_back("boolean of " + std::to_string(ids.size()) + " tool(s) rejected: " + what);
   }
@@ -296,8 +296,8 @@ class Engine {
     if (!a.warning.empty()) return a.warning;
     if (std::isnan(expected)) expected = u.expected;
     const std::string verb = op_ == BooleanOperation::Cut ? "removed " : "added ";
-    return verb + format_number(a.volumes.empty() ? 0 : a.volumes.front().volume) + " mm^3 instead of " + format_number(expected) +
-           " mm^3 (closure " + format_number(a.volumes.empty() ? 0 : a.volumes.front().closure) + " mm^3)";
+    const ValueLimitText t = format_value_limit(a.volumes.empty() ? 0 : a.volumes.front().volume, expected, Allowed::near);
+    return verb + t.value + " mm^3 instead of " + t.limit + " mm^3 (closure " + format_number(a.volumes.empty() ? 0 : a.volumes.front().closure) + " mm^3)";
   }
 
   // Units among `ids` whose (slightly enlarged) box contains each shape; empty when some shape is null
