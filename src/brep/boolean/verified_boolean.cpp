@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <numeric>
 #include <sstream>
 
@@ -33,6 +34,17 @@ int count_solids(const TopoDS_Shape& s) {
   TopTools_IndexedMapOfShape m;
   TopExp::MapShapes(s, TopAbs_SOLID, m);
   return m.Extent();
+}
+
+// Test hook, read here only: COOLINGGEN_TEST_FAIL_VOLUME=<feature> fails that feature's volume check on
+// every attempt, so the path of a boolean the tool cannot verify (retries, then exit 3 naming the
+// feature) stays tested end to end while no real design takes it (tests/cli/test_cli_sections.cpp).
+bool injected_volume_failure(const std::string& label) {
+  static const std::string feature = [] {
+    const char* v = std::getenv("COOLINGGEN_TEST_FAIL_VOLUME");
+    return std::string(v ? v : "");
+  }();
+  return !feature.empty() && label == feature;
 }
 
 // A tool of the step after overlapping tools were fused: pairwise disjoint from the others.
@@ -198,7 +210,8 @@ class Engine {
     a.volumes = vm.tools;
     for (std::size_t k = 0; k < ids.size(); ++k) {
       const double e = expected ? (*expected)[k] : units[static_cast<std::size_t>(ids[k])].expected;
-      if (!volume_ok(vm.tools[k].volume, e, vm.tools[k])) a.suspects.push_back(ids[k]);
+      if (!volume_ok(vm.tools[k].volume, e, vm.tools[k]) || injected_volume_failure(units[static_cast<std::size_t>(ids[k])].label))
+        a.suspects.push_back(ids[k]);
     }
     if (!a.ok() || !verify) return a;
     t = Clock::now();
