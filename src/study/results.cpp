@@ -38,9 +38,9 @@ std::string csv_cell(const std::string& s) {
   return q + "\"";
 }
 
-std::string value_text(const json& v) { return v.is_number() ? format_number(v.get<double>()) : v.is_string() ? v.get<std::string>() : v.dump(); }
+std::string value_text(const json& v) { return v.is_number() ? format_round_trip(v.get<double>()) : v.is_string() ? v.get<std::string>() : v.dump(); }
 
-std::string opt(const std::optional<double>& x) { return x ? format_number(*x) : ""; }
+std::string opt(const std::optional<double>& x) { return x ? format_round_trip(*x) : ""; }
 
 }  // namespace
 
@@ -205,7 +205,7 @@ void write_results_csv(const fs::path& study_dir, const StudyListing& l) {
     o << "," << opt(r.process_s);
     for (const std::string& name : passages) {
       const auto it = std::find_if(m.passages.begin(), m.passages.end(), [&](const Metrics::Passage& p) { return p.name == name; });
-      o << "," << (it == m.passages.end() ? "" : format_number(it->dh_mean_mm)) << "," << (it == m.passages.end() ? "" : format_number(it->dh_min_mm));
+      o << "," << (it == m.passages.end() ? "" : format_round_trip(it->dh_mean_mm)) << "," << (it == m.passages.end() ? "" : format_round_trip(it->dh_min_mm));
     }
     o << "\n";
   }

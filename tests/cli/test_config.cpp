@@ -331,7 +331,7 @@ BOOST_AUTO_TEST_CASE(integers_as_json_schema_counts_them) {
   expect_error([](json& x) { x["blade"]["chordwise_samples"] = 4.0; }, "blade.chordwise_samples", "[8, 2000], got 4.0");
   expect_error([](json& x) { x["blade"]["chordwise_samples"] = 1e30; }, "blade.chordwise_samples", "[8, 2000]");
   expect_error([](json& x) { x["blade"]["chordwise_samples"] = 3000000000ull; }, "blade.chordwise_samples", "[8, 2000]");
-  // Shortest round-trip numbers, never "0.100000".
+  // 4 significant digits without padding, never "0.100000".
   expect_error([](json& x) { x["flow_path"]["streamlines"] = {0.3, 0.1}; }, "flow_path.streamlines[1]",
                "got 0.1 after 0.3");
   expect_error([](json& x) { x["blade"]["overbuild"] = 0.7; }, "blade.overbuild", "got 0.7");
