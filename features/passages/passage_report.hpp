@@ -1,7 +1,8 @@
 #pragma once
 // What the passage build measured on the built solid: design checks, the quantities a 1D flow-network
 // model needs, feature volumes. A plain struct; to_json() gives the object report.json carries under
-// "cooling" (units in the key names: _mm, _mm2, _mm3, _s).
+// "cooling" (units in the key names: _mm, _mm2, _mm3, _s), which is also how the stage cache stores it
+// (from_json reads it back: one serialisation).
 #include <nlohmann/json.hpp>
 
 #include <limits>
@@ -68,7 +69,12 @@ struct PassageReport {
   double wall_clearance = std::numeric_limits<double>::quiet_NaN();
   std::vector<std::pair<std::string, double>> seconds;  ///< stage times
   bool passed() const;
-  nlohmann::json to_json() const;
+  /// Every member (keys sorted as report.json has always shown them, `seconds` in run order; a
+  /// non-finite number as null).
+  nlohmann::ordered_json to_json() const;
+  /// The report `to_json` wrote (null numbers as NaN; "passed" is derived, not read). Throws
+  /// nlohmann::json::exception for an object it did not write.
+  static PassageReport from_json(const nlohmann::ordered_json& j);
 };
 
 }  // namespace cg::features

@@ -3,7 +3,6 @@
 #include "src/brep/blade_solid.hpp"
 #include "src/pipeline/cooling.hpp"
 #include "src/pipeline/cooling_stage_cache.hpp"
-#include "src/pipeline/outputs.hpp"
 #include "src/pipeline/stage_runner.hpp"
 
 namespace cg::pipeline {
@@ -67,30 +66,6 @@ features::PassagesResult cooling_stage(const config::Config& c, BuildResult& r, 
 }
 
 }  // namespace
-
-const char* StageCacheUse::name(Outcome o) {
-  switch (o) {
-    case Outcome::kHit: return "hit";
-    case Outcome::kStored: return "stored";
-    case Outcome::kNotStored: return "not_stored";
-  }
-  return "not_stored";
-}
-
-bool BuildResult::valid() const {
-  if (checks.empty() || checks.size() != part.size()) return false;
-  for (const brep::SolidCheck& c : checks)
-    if (!c.all_passed()) return false;
-  return true;
-}
-
-std::string BuildResult::failed_checks() const {
-  std::string s;
-  for (std::size_t i = 0; i < checks.size() && i < part.size(); ++i)
-    if (!checks[i].all_passed()) s += (s.empty() ? "" : "; ") + part[i].name + ": " + checks[i].failed_names();
-  if (checks.size() != part.size()) s += (s.empty() ? "" : "; ") + std::string("not every body was checked");
-  return s;
-}
 
 blade::BladeModel validate(const config::Config& config, ProgressSink* progress) {
   blade::BladeModel model = config::build_model(config, progress);

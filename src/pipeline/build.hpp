@@ -19,14 +19,11 @@
 #include <string>
 #include <vector>
 
-#include "features/film/film_report.hpp"
-#include "features/passages/passage_report.hpp"
 #include "src/brep/boolean/feature_options.hpp"
-#include "src/blade/blade_surface.hpp"
-#include "src/brep/named_shape.hpp"
 #include "src/brep/verify.hpp"
 #include "src/config/config.hpp"
 #include "src/core/progress.hpp"
+#include "src/pipeline/build_result.hpp"
 #include "src/pipeline/stage_cache.hpp"
 #include "src/pipeline/time_limit.hpp"
 
@@ -44,51 +41,6 @@ struct BuildOptions {
   /// Optional: the cooling stage is taken from this cache when an earlier build stored the same inputs,
   /// and stored in it otherwise (stage_cache.hpp, cooling_stage_cache.hpp). Null: always built.
   StageCache* stage_cache = nullptr;
-};
-
-/// What the stage cache did for one stage of a build.
-struct StageCacheUse {
-  enum class Outcome {
-    kHit,        ///< taken from the cache
-    kStored,     ///< built and stored
-    kNotStored,  ///< built; storing failed (the warning says why)
-  };
-  std::string stage;
-  std::string key;  ///< hex digest of the stage's inputs
-  Outcome outcome = Outcome::kStored;
-  static const char* name(Outcome o);  ///< "hit", "stored", "not_stored"
-};
-
-/// Wall-clock time of one stage, seconds.
-struct StageTiming {
-  std::string stage;
-  double seconds = 0;
-};
-
-struct BuildResult {
-  blade::BladeModel model;
-  /// The product: bodies[0] is the blade ("blade"), each body's faces named (src/brep/named_shape.hpp).
-  brep::Part part;
-  /// The blade solid before any cooling feature (its faces named): what the coolant domain of
-  /// `coolinggen mesh` is cut from (coolant = uncooled - part bodies).
-  brep::NamedShape uncooled;
-  /// checks[i]: the checks of part[i].
-  std::vector<brep::SolidCheck> checks;
-  /// Warnings of the stages (e.g. general-fuse alerts), each prefixed with its stage.
-  std::vector<std::string> warnings;
-  /// Stages in run order.
-  std::vector<StageTiming> timings;
-  /// The stages that went through BuildOptions::stage_cache, in run order (empty without a cache).
-  std::vector<StageCacheUse> stage_cache;
-  /// What the cooling stage measured (design checks, passage sections, volumes); none when uncooled.
-  std::optional<features::PassageReport> cooling;
-  /// What the film stage measured (per hole, row, chamber, insert); none without film input.
-  std::optional<features::FilmReport> film;
-
-  /// Every check of every body passed.
-  bool valid() const;
-  /// "blade: closed_mesh, brep_valid; insert_1: one_solid" (empty when valid).
-  std::string failed_checks() const;
 };
 
 /// Builds and checks the model of `config`. `progress` (optional) sees the stages and may stop the

@@ -26,23 +26,19 @@
 namespace cg::pipeline {
 namespace {
 
-using json = nlohmann::json;
+using json = nlohmann::ordered_json;  // an entry keeps the order of what it holds (the report's stage times)
 using Vec3 = Eigen::Vector3d;
 
 // Bump when the entry's layout changes.
-constexpr const char* kFormat = "coolinggen stage cache 1";
+constexpr const char* kFormat = "coolinggen stage cache 2";
 
-// The types an entry stores field by field (or restores in part, see the header). A new field changes
-// the size: place it in the entry (encode and decode below) or in the header's list of what is not
-// restored, then update the size. Sizes on x86-64 Linux with libstdc++ (the platform the project builds
+// The types an entry stores field by field (or restores in part, see the header); the passage report
+// is stored as report.json has it (PassageReport::to_json / from_json). A new field changes the size:
+// place it in the entry (encode and decode below) or in the header's list of what is not restored, then
+// update the size. Sizes on x86-64 Linux with libstdc++ (the platform the project builds
 // and tests on; elsewhere the guard is skipped).
 #if defined(__x86_64__) && defined(__GLIBCXX__)
 static_assert(sizeof(brep::Check) == 80 && sizeof(brep::SolidCheck) == 568, "SolidCheck changed: update its codec");
-static_assert(sizeof(features::ThicknessMeasure) == 104 && sizeof(features::CrossSection) == 32 &&
-                  sizeof(features::PassageMeasure) == 96 && sizeof(features::FeatureVolume) == 72 &&
-                  sizeof(features::ToolVolumeCheck) == 88 && sizeof(features::PerturbedTool) == 72,
-              "a passage report type changed: update its codec");
-static_assert(sizeof(features::PassageReport) == 184, "PassageReport changed: update its codec");
 static_assert(sizeof(features::ChamberInfo) == 88 && sizeof(blade::InnerWallSection) == 64 && sizeof(blade::InnerWall) == 160,
               "ChamberInfo or the inner wall changed: update its codec");
 static_assert(sizeof(features::FeatureTool) == 144 && sizeof(features::WallFeatureBuild) == 200 &&
@@ -157,59 +153,6 @@ brep::SolidCheck check_of(const json& j) {
   k.solid_count = j.at("solid_count").get<int>();
   k.mesh_triangles = j.at("mesh_triangles").get<int>();
   return k;
-}
-
-json report_json(const features::PassageReport& r) {
-  json j;
-  for (const auto& t : r.thickness)
-    j["thickness"].push_back({t.feature, num(t.configured), num(t.min), num(t.max), num(t.tolerance), t.passed, t.method});
-  for (const auto& p : r.passages) {
-    json secs = json::array();
-    for (const auto& c : p.sections) secs.push_back(nums({c.span, c.area, c.wetted_perimeter, c.hydraulic_diameter}));
-    j["passages"].push_back({p.name, num(p.volume), p.fed_by, secs});
-  }
-  for (const auto& v : r.volumes) j["volumes"].push_back({v.feature, num(v.volume), v.meaning});
-  for (const auto& t : r.tools) j["tools"].push_back({t.feature, num(t.expected), num(t.measured), t.passed, t.how});
-  for (const auto& p : r.perturbed) j["perturbed"].push_back({p.feature, p.change, p.geometry_changed});
-  for (const auto& [stage, s] : r.seconds) j["seconds"].push_back({stage, num(s)});
-  j["closed_cavities"] = r.closed_cavities;
-  j["all_chambers_fed"] = r.all_chambers_fed;
-  j["inner_wall_poles"] = {r.inner_wall_poles_u, r.inner_wall_poles_v};
-  j["inner_wall_fit_error"] = num(r.inner_wall_fit_error);
-  j["min_clearance"] = num(r.min_clearance);
-  j["wall_clearance"] = num(r.wall_clearance);
-  return j;
-}
-
-// The elements of an array that may be absent (empty in the report).
-const json& list(const json& j, const char* key) {
-  static const json empty = json::array();
-  return j.contains(key) ? j.at(key) : empty;
-}
-
-features::PassageReport report_of(const json& j) {
-  features::PassageReport r;
-  for (const json& t : list(j, "thickness"))
-    r.thickness.push_back({t.at(0).get<std::string>(), unnum(t.at(1)), unnum(t.at(2)), unnum(t.at(3)), unnum(t.at(4)),
-                           t.at(5).get<bool>(), t.at(6).get<std::string>()});
-  for (const json& p : list(j, "passages")) {
-    features::PassageMeasure m{p.at(0).get<std::string>(), unnum(p.at(1)), p.at(2).get<std::string>(), {}};
-    for (const json& c : p.at(3)) m.sections.push_back({unnum(c.at(0)), unnum(c.at(1)), unnum(c.at(2)), unnum(c.at(3))});
-    r.passages.push_back(std::move(m));
-  }
-  for (const json& v : list(j, "volumes")) r.volumes.push_back({v.at(0).get<std::string>(), unnum(v.at(1)), v.at(2).get<std::string>()});
-  for (const json& t : list(j, "tools"))
-    r.tools.push_back({t.at(0).get<std::string>(), unnum(t.at(1)), unnum(t.at(2)), t.at(3).get<bool>(), t.at(4).get<std::string>()});
-  for (const json& p : list(j, "perturbed")) r.perturbed.push_back({p.at(0).get<std::string>(), p.at(1).get<std::string>(), p.at(2).get<bool>()});
-  for (const json& s : list(j, "seconds")) r.seconds.emplace_back(s.at(0).get<std::string>(), unnum(s.at(1)));
-  r.closed_cavities = j.at("closed_cavities").get<int>();
-  r.all_chambers_fed = j.at("all_chambers_fed").get<bool>();
-  r.inner_wall_poles_u = j.at("inner_wall_poles").at(0).get<int>();
-  r.inner_wall_poles_v = j.at("inner_wall_poles").at(1).get<int>();
-  r.inner_wall_fit_error = unnum(j.at("inner_wall_fit_error"));
-  r.min_clearance = unnum(j.at("min_clearance"));
-  r.wall_clearance = unnum(j.at("wall_clearance"));
-  return r;
 }
 
 // ---- the core's parts the film stage reads
@@ -402,7 +345,7 @@ StageCacheEntry encode_cooling_stage(const features::PassagesResult& r) {
             {"version", io::tool_version()},
             {"blade_faces", face_names(r.blade)},
             {"tools", tools},
-            {"report", report_json(r.report)},
+            {"report", r.report.to_json()},
             {"check", check_json(r.check)},
             {"checked", r.checked},
             {"core", r.core ? core_json(*r.core) : json(nullptr)}};
@@ -422,7 +365,7 @@ features::PassagesResult decode_cooling_stage(const StageCacheEntry& e, const bl
   for (std::size_t i = 0; i < 3; ++i)
     for (const json& t : d.at("tools").at(ToolGroups::names[i])) g.lists[i]->push_back(tool_of(t, shapes.at(next++)));
   if (next != shapes.size()) throw Error("stage cache: the entry has more shapes than tools");
-  r.report = report_of(d.at("report"));
+  r.report = features::PassageReport::from_json(d.at("report"));
   r.check = check_of(d.at("check"));
   r.checked = d.at("checked").get<bool>();
   if (!d.at("core").is_null()) r.core = std::make_shared<const features::CoreBuild>(core_of(d.at("core"), model));

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "export/report.hpp"
-#include "src/pipeline/outputs.hpp"
+#include "src/pipeline/output_writer.hpp"
 
 namespace cg::pipeline {
 

@@ -11,20 +11,10 @@
 
 #include "src/config/config.hpp"
 #include "src/core/progress.hpp"
-#include "src/pipeline/build.hpp"
-#include "src/pipeline/output_directory.hpp"
+#include "src/pipeline/build_result.hpp"
+#include "src/pipeline/output_writer.hpp"
 
 namespace cg::pipeline {
-
-inline constexpr const char* kReportFile = "report.json";
-
-struct OutputWriter {
-  config::OutputFormat format;
-  std::string description;         ///< one line for people
-  std::vector<std::string> files;  ///< the names it writes, removed when a later run does not write them
-  /// Writes the format's files through `dir` (each atomically); may poll `progress`.
-  std::function<void(OutputDirectory& dir, const config::Config&, const BuildResult&, ProgressSink* progress)> write;
-};
 
 /// One writer per output format, in the order of config::kOutputFormats (the order they are written).
 const std::vector<OutputWriter>& output_writers();

@@ -8,7 +8,7 @@
 
 #include "export/report.hpp"
 #include "src/config/config.hpp"
-#include "src/pipeline/build.hpp"
+#include "src/pipeline/build_result.hpp"
 
 namespace cg::pipeline {
 

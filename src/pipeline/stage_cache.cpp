@@ -107,7 +107,7 @@ std::shared_ptr<const StageCacheEntry> StageCache::read_disk(const std::string& 
   auto e = std::make_shared<StageCacheEntry>();
   if (shapes && data) {
     e->shapes = *shapes;
-    e->data = nlohmann::json::parse(*data, nullptr, /*allow_exceptions=*/false);
+    e->data = nlohmann::ordered_json::parse(*data, nullptr, /*allow_exceptions=*/false);
   }
   if (!shapes || !data || !e->data.is_object() || e->data.value("key", "") != key || e->shapes.empty()) {
     // Not an entry this code wrote whole (entries appear by rename): set it aside and rebuild.
@@ -129,7 +129,7 @@ void StageCache::write_disk(const std::string& stage, const std::string& key, co
   try {
     fs::create_directory(tmp);
     write_bytes(tmp / kShapesFile, entry.shapes);
-    nlohmann::json data = entry.data;
+    nlohmann::ordered_json data = entry.data;
     data["key"] = key;
     write_bytes(tmp / kDataFile, data.dump());
   } catch (const std::exception& e) {

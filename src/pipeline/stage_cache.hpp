@@ -46,7 +46,7 @@ struct StageCacheOptions {
 
 struct StageCacheEntry {
   std::string shapes;   ///< BinTools bytes of one compound
-  nlohmann::json data;  ///< the rest of the stage's result (stage-specific)
+  nlohmann::ordered_json data;  ///< the rest of the stage's result (stage-specific), in the order it was written
 };
 
 class StageCache {

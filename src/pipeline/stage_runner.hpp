@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "src/core/progress.hpp"
-#include "src/pipeline/build.hpp"
+#include "src/pipeline/stage_records.hpp"
 
 namespace cg::pipeline {
 

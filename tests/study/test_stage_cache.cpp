@@ -143,6 +143,15 @@ BOOST_AUTO_TEST_CASE(memory_cache_in_process) {
   BOOST_TEST(!jp.contains("stage_cache"));
   BOOST_TEST(comparable(jb) == comparable(jp));
   BOOST_TEST(comparable(report_of(a, ra)) != comparable(jp));  // the pitch shows in the report
+  // The entry holds the passage report as report.json has it, and reads it back whole: stage times in
+  // run order, the perturbed tools and the wall clearance included.
+  BOOST_TEST_REQUIRE(plain.cooling.has_value());
+  const nlohmann::ordered_json written = plain.cooling->to_json();
+  const features::PassageReport back = features::PassageReport::from_json(written);
+  BOOST_TEST(back.to_json().dump() == written.dump());
+  BOOST_TEST_REQUIRE(back.seconds.size() == plain.cooling->seconds.size());
+  for (std::size_t i = 0; i < back.seconds.size(); ++i) BOOST_TEST(back.seconds[i].first == plain.cooling->seconds[i].first);
+  BOOST_TEST(!back.tools.empty());
 }
 
 // `coolinggen sweep` of three film pitches, two at a time, with the disk cache (default) and without.
