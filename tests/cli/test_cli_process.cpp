@@ -66,8 +66,8 @@ BOOST_AUTO_TEST_CASE(builtin_example_builds) {
   // when an X display could be had.
   std::set<std::string> files;
   for (const auto& e : fs::directory_iterator(dir.path / "out")) files.insert(e.path().filename().string());
-  std::set<std::string> expected{"blade.step", "blade.igs", "blade.brep", "blade.stl", "blade.vtm", "blade_blade.vtp",
-                                 "sections.svg", "report.json", "report.md"};
+  std::set<std::string> expected{"blade.step", "blade.igs",   "blade.brep",  "blade.stl", "blade.vtm", "blade_blade.vtp",
+                                 "blade.glb",  "sections.svg", "report.html", "report.json", "report.md"};
   if (files.count("preview.png")) expected.insert("preview.png");
   BOOST_TEST(files == expected);
   // The passage table (report.json "sections", what sections.svg shows): all four chambers at every

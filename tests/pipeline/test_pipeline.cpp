@@ -218,13 +218,14 @@ BOOST_AUTO_TEST_CASE(output_directory_never_mixes_runs) {
   BOOST_TEST((e == std::vector<std::string>{"notes.txt"}));
 }
 
-// A failed check writes report.json only (valid: false), and removes the model of an earlier run.
+// A failed check writes report.json only (valid: false): no model, no blade.glb, no report.html, and
+// removes those of an earlier run.
 BOOST_AUTO_TEST_CASE(failed_checks_write_the_report_only) {
   const config::Config c = c3x_uncooled();
   pipeline::BuildResult r = pipeline::run_build(c);
   TempDir dir("pipeline_failed");
   pipeline::write_outputs(c, r, dir.path);
-  BOOST_TEST(fs::exists(dir.path / "blade.step"));
+  for (const char* f : {"blade.step", "blade.glb", "report.html"}) BOOST_TEST(fs::exists(dir.path / f), f);
   r.checks[0].closed_mesh.passed = false;
   BOOST_TEST(!r.valid());
   BOOST_TEST(r.failed_checks() == "blade: closed_mesh");
