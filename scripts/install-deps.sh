@@ -11,6 +11,7 @@ packages=(
   python3-meshio pybind11-dev python3-dev python3-numpy python3-distributed
   clang libclang-rt-14-dev
   slurm-wlm munge
+  calculix-ccx
 )
 missing=()
 for p in "${packages[@]}"; do

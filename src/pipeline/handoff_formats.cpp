@@ -17,6 +17,7 @@
 #include "export/x_display.hpp"
 #include "src/core/background.hpp"
 #include "src/core/constants.hpp"
+#include "src/pipeline/network_format.hpp"
 #include "src/pipeline/report.hpp"
 
 namespace cg::pipeline {
@@ -160,6 +161,7 @@ std::vector<OutputFormat> handoff_formats() {
          files.push_back(kReportFile);
          io::ReportContent rc = report_content(c, r, files, r.timings);
          add_handoff_report(c, r, rc);
+         add_network_report(r, rc);
          d.write("report.md", [&](const fs::path& t) { io::write_report_markdown(t, io::report_json(rc)); });
        }},
   };

@@ -1,6 +1,6 @@
 #include "src/pipeline/outputs.hpp"
 
-
+#include <algorithm>
 #include <set>
 
 #include "export/atomic_file.hpp"
@@ -8,6 +8,7 @@
 #include "export/step_writer.hpp"
 #include "src/config/json_fields.hpp"
 #include "src/pipeline/handoff_formats.hpp"
+#include "src/pipeline/network_format.hpp"
 #include "src/pipeline/report.hpp"
 #include "src/pipeline/stage_runner.hpp"
 
@@ -30,6 +31,9 @@ const std::vector<OutputFormat>& output_formats() {
     std::vector<OutputFormat> f{
         {"step", "STEP (AP242 or AP214, unit mm) with named bodies and faces", {"blade.step"}, write_step_file}};
     for (OutputFormat& h : handoff_formats()) f.push_back(std::move(h));
+    // The network before report_md, so that report.md shows its headline numbers.
+    const auto md = std::find_if(f.begin(), f.end(), [](const OutputFormat& x) { return x.name == "report_md"; });
+    f.insert(md, network_format());
     return f;
   }();
   return formats;
@@ -47,6 +51,7 @@ void check_output_options(const config::Config& c) {
     if (!known) config::fail(path, "unknown output format \"" + n + "\" (allowed: " + names + ")");
     if (!seen.insert(n).second) config::fail(path, "\"" + n + "\" is listed twice");
   }
+  check_network_options(c);
 }
 
 WrittenOutputs write_outputs(const config::Config& c, const BuildResult& r, const fs::path& dir, ProgressSink* progress) {
@@ -84,6 +89,7 @@ WrittenOutputs write_outputs(const config::Config& c, const BuildResult& r, cons
     od.commit([&](const fs::path& target, const std::vector<std::string>& files) {
       io::ReportContent rc = report_content(c, r, files, timings);
       add_handoff_report(c, r, rc);
+      add_network_report(r, rc);
       io::write_report(target, rc);
     });
   });

@@ -5,6 +5,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include "acceptance/handoff_checks.hpp"
+#include "acceptance/network_checks.hpp"
 
 using namespace cg;
 
@@ -16,3 +17,10 @@ BOOST_AUTO_TEST_CASE(step_ap242_one_valid_named_solid) { test::check_step(build(
 BOOST_AUTO_TEST_CASE(iges_sews_into_a_closed_shell) { test::check_iges(build()); }
 BOOST_AUTO_TEST_CASE(stl_closed_and_outward) { test::check_stl(build()); }
 BOOST_AUTO_TEST_CASE(vtk_closed_outward_normals_out) { test::check_vtk(build()); }
+
+// The coolant network (the built-in example has a "coolant" section, so "network" is a default format):
+// 153 film and showerhead holes, two turnarounds (ribs 2 and 3), four chambers.
+BOOST_AUTO_TEST_CASE(network_deck_converges_in_ccx_and_conserves_mass) {
+  test::check_network_deck(build(), {153, 2, {"chamber_1", "chamber_2", "chamber_3", "chamber_4"}});
+}
+BOOST_AUTO_TEST_CASE(film_holes_csv_on_the_outer_wall_along_the_cylinders) { test::check_film_holes_csv(build(), 153); }

@@ -1,0 +1,20 @@
+#pragma once
+// Output format "network" (docs/network.md): the coolant flow network of the built part (src/network),
+// solved by CalculiX: network.json, network.inp, network_results.json, film_holes.csv. Needs the config's
+// "coolant" section (check_network_options). A solver that is missing or does not converge is a warning
+// in report.json and on stderr (the model files are written, exit 0).
+#include "export/report.hpp"
+#include "src/pipeline/outputs.hpp"
+
+namespace cg::pipeline {
+
+OutputFormat network_format();
+
+/// Throws ConfigError("coolant: ...") when "network" is selected without a "coolant" section.
+void check_network_options(const config::Config& config);
+
+/// Adds "network" (headline numbers: status, total and per-chamber flow, worst backflow margin) and
+/// the network's warnings to a report, when the network of `result` was solved in this run.
+void add_network_report(const BuildResult& result, io::ReportContent& report);
+
+}  // namespace cg::pipeline
