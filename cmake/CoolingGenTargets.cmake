@@ -46,12 +46,15 @@ cg_add_library(coolinggen_mesh DIRS src/mesh DEPS coolinggen_brep coolinggen_exp
 vtk_module_autoinit(TARGETS coolinggen_mesh MODULES ${VTK_LIBRARIES})
 # Configuration file (JSON) -> plain option structs and the blade model's definitions (no OCCT).
 cg_add_library(coolinggen_config DIRS src/config DEPS coolinggen_model nlohmann_json::nlohmann_json)
+# The coolant circuit of a built part as a flow network, solved by CalculiX (ccx) in a child process.
+cg_add_library(coolinggen_network DIRS src/network DEPS coolinggen_brep coolinggen_config nlohmann_json::nlohmann_json)
 # The whole job (config -> verified, exported model) as a library call; the CLI is a thin layer on it.
-cg_add_library(coolinggen_pipeline DIRS src/pipeline DEPS OpenSSL::Crypto coolinggen_config coolinggen_export coolinggen_mesh)
+cg_add_library(coolinggen_pipeline DIRS src/pipeline DEPS OpenSSL::Crypto coolinggen_config coolinggen_export coolinggen_mesh
+  coolinggen_network)
 
 add_library(coolinggen INTERFACE)
 add_library(coolinggen::coolinggen ALIAS coolinggen)
-target_link_libraries(coolinggen INTERFACE coolinggen_pipeline coolinggen_config coolinggen_mesh coolinggen_export
+target_link_libraries(coolinggen INTERFACE coolinggen_pipeline coolinggen_network coolinggen_config coolinggen_mesh coolinggen_export
   coolinggen_brep coolinggen_model coolinggen_adaptors coolinggen_kernel)
 
 # The CLI: its commands in a library (tests/cli links it to test them without a process), main.cpp
@@ -65,7 +68,7 @@ set_target_properties(coolinggen_cli PROPERTIES OUTPUT_NAME coolinggen RUNTIME_O
 target_link_libraries(coolinggen_cli PRIVATE coolinggen_cli_commands)
 install(TARGETS coolinggen_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 
-install(TARGETS coolinggen coolinggen_pipeline coolinggen_config coolinggen_mesh coolinggen_export coolinggen_brep
+install(TARGETS coolinggen coolinggen_pipeline coolinggen_network coolinggen_config coolinggen_mesh coolinggen_export coolinggen_brep
   coolinggen_model coolinggen_kernel coolinggen_adaptors coolinggen_occt_deps coolinggen_vtk_deps coolinggen_gmsh_deps
   coolinggen_cgns_deps
   EXPORT CoolingGenTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})

@@ -116,6 +116,22 @@ void mesh_section(std::ostringstream& o, const json& m) {
   if (!rows.empty()) table(o, {"surface group", "faces", "triangles"}, rows);
 }
 
+// Coolant flow network (report.json "network", src/network): status, total flow, per chamber, worst margin.
+void network_section(std::ostringstream& o, const json& n) {
+  o << "## Coolant flow network\n\nCalculiX: **" << cell(n.value("status", "")) << "** (" << cell(n.value("message", ""))
+    << "); details in `network_results.json`, the circuit in `network.json` (docs/network.md).\n\n";
+  if (!n.contains("total_mass_flow_kg_s")) return;
+  o << "Total coolant " << num(n.at("total_mass_flow_kg_s").get<double>() * 1e3) << " g/s";
+  if (n.contains("worst_backflow_margin"))
+    o << "; worst backflow margin " << num(n.at("worst_backflow_margin")) << " (" << cell(n.value("worst_backflow_row", "")) << ")";
+  o << ".\n\n";
+  std::vector<std::vector<std::string>> rows;
+  const json chambers = n.value("chamber_mass_flow_kg_s", json::object());
+  for (const auto& [chamber, flow] : chambers.items())
+    rows.push_back({chamber, num(flow.get<double>() * 1e3)});
+  if (!rows.empty()) table(o, {"chamber", "coolant g/s"}, rows);
+}
+
 // Film cooling (model.cooling.film, features/film/film_report.hpp): rows, chambers fed, inserts, every hole.
 // A null ligament means no other hole (or obstacle) is near: "-".
 void film_section(std::ostringstream& o, const json& f) {
@@ -215,6 +231,7 @@ std::string report_markdown(const json& r) {
   }
   if (model.is_object() && model.contains("cooling") && model.at("cooling").is_object() && model.at("cooling").contains("film"))
     film_section(o, model.at("cooling").at("film"));
+  if (r.contains("network")) network_section(o, r.at("network"));
   if (r.contains("sections") && !r.at("sections").empty()) sections(o, r.at("sections"));
   if (r.contains("mesh")) mesh_section(o, r.at("mesh"));
   if (r.contains("outputs") || r.contains("notes")) {

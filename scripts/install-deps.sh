@@ -12,7 +12,7 @@ packages=(
   python3-meshio pybind11-dev python3-dev python3-numpy python3-distributed
   clang libclang-rt-14-dev
   slurm-wlm munge
-  chromium nodejs
+  chromium nodejs calculix-ccx
 )
 # node and npm may come from elsewhere (e.g. NodeSource's nodejs, which includes npm and conflicts with
 # Debian's npm): Debian's npm only when no npm is on PATH.

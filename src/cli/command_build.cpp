@@ -42,7 +42,9 @@ void print_summary(const config::Config& c, const pipeline::BuildResult& r, cons
   std::printf("\n");
 }
 
-int run_build(const JobOptions& o, const std::string& stage_cache_dir) {
+}  // namespace
+
+int run_build_job(const JobOptions& o, const std::string& stage_cache_dir, const std::function<void(config::Config&)>& adjust) {
   ConsoleProgress console(o.show_progress());
   pipeline::TimeLimit limit(&console, o.timeout_s);
   Watchdog watchdog(limit, console, watchdog_grace(o.timeout_s), o.output.string());
@@ -51,7 +53,8 @@ int run_build(const JobOptions& o, const std::string& stage_cache_dir) {
     std::error_code ec;  // fail now, not after a build of minutes
     if (std::filesystem::exists(o.output, ec) && !std::filesystem::is_directory(o.output, ec))
       throw io::ExportError("output directory " + o.output.string() + " exists and is not a directory");
-    const config::Config c = load_config_argument(o.config);
+    config::Config c = load_config_argument(o.config);
+    if (adjust) adjust(c);
     std::optional<pipeline::StageCache> cache;
     if (!stage_cache_dir.empty()) cache.emplace(pipeline::StageCacheOptions{pipeline::StageCacheMode::kDisk, stage_cache_dir});
     pipeline::BuildOptions options;
@@ -79,8 +82,6 @@ int run_build(const JobOptions& o, const std::string& stage_cache_dir) {
   }
 }
 
-}  // namespace
-
 Command add_build_command(CLI::App& app) {
   auto o = std::make_shared<JobOptions>();
   CLI::App* cmd = app.add_subcommand("build", "Build and check the blade solid; write DIR/blade.step and DIR/report.json");
@@ -90,7 +91,7 @@ Command add_build_command(CLI::App& app) {
                   "Take the cooling stage from DIR when a build of the same inputs stored it there, else store it "
                   "(docs/studies.md; coolinggen sweep passes its study's cache)")
       ->type_name("DIR");
-  return {cmd, [o, cache_dir] { return run_build(*o, *cache_dir); }};
+  return {cmd, [o, cache_dir] { return run_build_job(*o, *cache_dir, {}); }};
 }
 
 }  // namespace cg::cli

@@ -14,7 +14,7 @@
 #include "src/cli/exit_codes.hpp"
 #include "src/cli/watchdog.hpp"
 #include "src/core/parallel.hpp"
-#include "src/study/process_pool.hpp"
+#include "src/core/process_pool.hpp"
 #include "src/study/sweep.hpp"
 
 namespace cg::cli {

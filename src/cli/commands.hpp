@@ -25,6 +25,7 @@ Command add_example_command(CLI::App& app);
 Command add_mesh_command(CLI::App& app);
 Command add_grid_command(CLI::App& app);
 Command add_sweep_command(CLI::App& app);
+Command add_network_command(CLI::App& app);
 
 /// Options shared by the commands that run a job: CONFIG, -o DIR, -q, --timeout.
 struct JobOptions {
@@ -36,6 +37,11 @@ struct JobOptions {
   bool show_progress() const;
 };
 void add_job_options(CLI::App* command, JobOptions& options);
+
+/// `coolinggen build`'s job (run_build + write_outputs, printed); `adjust` (optional) changes the loaded
+/// config first (e.g. `coolinggen network` selects its output formats). Returns the exit code.
+int run_build_job(const JobOptions& options, const std::string& stage_cache_dir,
+                  const std::function<void(config::Config&)>& adjust);
 
 /// The config named on the command line (empty: the built-in example). Throws ConfigError.
 config::Config load_config_argument(const std::string& path);

@@ -59,7 +59,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   const std::vector<Command> commands{add_build_command(app), add_mesh_command(app), add_validate_command(app),
                                       add_example_command(app), add_grid_command(app),
-                                      add_sweep_command(app)};
+                                      add_sweep_command(app), add_network_command(app)};
 
   if (const std::string unknown = unknown_command(argc, argv, commands); !unknown.empty())
     return error_exit(kUsage, unknown);

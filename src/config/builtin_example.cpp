@@ -6,7 +6,7 @@ const char* builtin_example_json() {
   return R"json({
   "$schema": "../schema/coolinggen.schema.json",
   "name": "hpt_rotor",
-  "description": "High-pressure turbine rotor blade at engine scale: hub radius ~275 mm, span ~55 mm, axial chord ~36 mm; curved hub and casing contours, three parametric sections with twist and thickness taper, fitted between the LE and TE lines. Cooled: 1 mm wall, a radial LE chamber and a 3-pass serpentine (ribs 2 and 3 turn at the tip and the hub), filleted ribs, two hub inlets.",
+  "description": "High-pressure turbine rotor blade at engine scale: hub radius ~275 mm, span ~55 mm, axial chord ~36 mm; curved hub and casing contours, three parametric sections with twist and thickness taper, fitted between the LE and TE lines. Cooled: 1 mm wall, a radial LE chamber and a 3-pass serpentine (ribs 2 and 3 turn at the tip and the hub), filleted ribs, two hub inlets. Coolant: 2.5 MPa / 850 K supply at 13000 rpm (blade speed ~375-450 m/s), hot-gas static pressures per kind of exit.",
   "units": "mm",
   "flow_path": {
     "type": "meridional",
@@ -58,6 +58,12 @@ const char* builtin_example_json() {
       {"diameter": 0.4, "chord": 0.35, "pitch_d": 5, "inclination_deg": 30, "compound_deg": 15, "span_start": 0.1, "span_end": 0.9, "chamber": 2},
       {"diameter": 0.4, "chord": 0.57, "pitch_d": 5, "inclination_deg": 30, "span_start": 0.1, "span_end": 0.9, "chamber": 3}
     ]
+  },
+  "coolant": {
+    "supply": {"total_pressure_pa": 2.5e6, "total_temperature_k": 850},
+    "sinks": {"static_pressure_pa": 1.3e6, "suction_side_pa": 1.1e6, "pressure_side_pa": 1.5e6, "showerhead_pa": 1.6e6,
+              "trailing_edge_pa": 1.15e6},
+    "rotational_speed_rpm": 13000
   },
   "output": {"step_schema": "AP214"}
 }

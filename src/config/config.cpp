@@ -197,7 +197,7 @@ blade::BladeOptions blade_options(const Field& f) {
 Config parse_config(const nlohmann::json& document, const std::filesystem::path& base_dir, const std::string& default_name) {
   const Field root(document, "");
   root.expect_object({"$schema", "name", "description", "units", "flow_path", "sections", "blade", "output", "mesh",
-                      "grid", "cooling", "booleans"});
+                      "grid", "cooling", "booleans", "coolant"});
   Config c;
   c.source = document;
   c.name = root.has("name") ? root.at("name").string() : default_name;
@@ -219,6 +219,7 @@ Config parse_config(const nlohmann::json& document, const std::filesystem::path&
   }
   if (root.has("blade")) c.blade.options = blade_options(root.at("blade"));
   if (root.has("cooling")) c.cooling = parse_cooling(root.at("cooling"), base_dir);
+  if (root.has("coolant")) c.coolant = parse_coolant(root.at("coolant"));
   if (root.has("booleans")) {
     const Field b = root.at("booleans");
     b.expect_object({"allow_perturbation"});
@@ -244,6 +245,11 @@ Config parse_config(const nlohmann::json& document, const std::filesystem::path&
     if (out.has("product_name")) c.output.product_name = out.at("product_name").string();
     read_handoff_output_fields(out, c.output);
   }
+  // The flow network is written by default when the config has its boundary conditions.
+  const bool formats_given = root.has("output") && root.at("output").has("formats");
+  if (c.coolant && !formats_given) c.output.formats.push_back(OutputFormat::Network);
+  if (has_format(c.output.formats, OutputFormat::Network) && !c.coolant)
+    fail("coolant", "required when output.formats lists \"network\" (supply, sinks: docs/configuration.md)");
   if (root.has("mesh")) c.mesh = mesh_config(root.at("mesh"));
   if (root.has("grid")) c.grid = parse_grid_config(root.at("grid"), n);
   return c;

@@ -7,12 +7,14 @@
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include <vector>
 
 #include "src/blade/blade_surface.hpp"
 #include "src/config/config_error.hpp"
+#include "src/config/coolant_config.hpp"
 #include "src/config/cooling_config.hpp"
 #include "src/config/grid_config.hpp"
 #include "src/config/output_format.hpp"
@@ -60,6 +62,8 @@ struct Config {
   blade::BladeDefinition blade;
   OutputOptions output;
   CoolingConfig cooling;    ///< "cooling" (optional; empty = an uncooled blade)
+  /// "coolant" (optional): boundary conditions of the coolant flow network (src/network)
+  std::optional<CoolantConfig> coolant;
   MeshConfig mesh;
   GridConfig grid;          ///< "grid" (structured grids around the sections; optional)
   /// One per section, in order; `field` is empty for parametric sections.

@@ -304,7 +304,7 @@ const std::string& binary_fingerprint() {
 }  // namespace
 
 const std::vector<std::string> kNotCoolingInputs = [] {
-  std::vector<std::string> v{"$schema", "name", "description", "output", "mesh", "grid"};
+  std::vector<std::string> v{"$schema", "name", "description", "output", "mesh", "grid", "coolant"};
   for (const char* k : config::kFilmCoolingKeys) v.push_back(std::string("cooling.") + k);
   return v;
 }();

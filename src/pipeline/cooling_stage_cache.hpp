@@ -6,7 +6,7 @@
 // (SHA-256 of its file: a rebuilt tool never reads the entries of another build; when the file cannot
 // be read, a value of this process alone), verify_each_step,
 // and what the blade model, the solid and the cooling stage read: the parsed config without the fields
-// only other stages read (kNotCoolingInputs: name, description, output, mesh, grid and the film
+// only other stages read (kNotCoolingInputs: name, description, output, mesh, grid, coolant and the film
 // fields under "cooling"), then the bytes of the config's section point files and cooling table files
 // (hash_inputs, as the input hash). Everything else (units, flow path, sections, blade, booleans,
 // cooling.core, cooling.radial_passages, and any field added later) is in the key.

@@ -19,6 +19,7 @@
 #include "export/x_display.hpp"
 #include "src/core/background.hpp"
 #include "src/core/constants.hpp"
+#include "src/pipeline/network_format.hpp"
 #include "src/pipeline/report.hpp"
 
 namespace cg::pipeline {
@@ -212,6 +213,7 @@ void add_handoff_report(const config::Config& c, const BuildResult& r, io::Repor
   if (selected(c, {config::OutputFormat::Sections, config::OutputFormat::ReportMd, config::OutputFormat::Html}) && r.valid())
     report.extra["sections"] = io::sections_json(sections(c, r));
   if (!s.notes.empty()) report.extra["notes"] = s.notes;
+  add_network_report(r, report);
 }
 
 void prepare_shared_outputs(const config::Config& c, const BuildResult& r) {

@@ -6,6 +6,7 @@
 #include "export/report.hpp"
 #include "export/step_writer.hpp"
 #include "src/pipeline/handoff_formats.hpp"
+#include "src/pipeline/network_format.hpp"
 #include "src/pipeline/report.hpp"
 #include "src/pipeline/stage_runner.hpp"
 
@@ -28,6 +29,7 @@ const std::vector<OutputWriter>& output_writers() {
     std::vector<OutputWriter> all{{config::OutputFormat::Step, "STEP (AP242 or AP214, unit mm) with named bodies and faces",
                                    {"blade.step"}, write_step_file}};
     for (OutputWriter& h : handoff_writers()) all.push_back(std::move(h));
+    all.push_back(network_writer());
     // In the order of kOutputFormats, one each (a format without a writer is a programming error).
     std::vector<OutputWriter> ordered;
     for (const config::OutputFormatInfo& f : config::kOutputFormats) {

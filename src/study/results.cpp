@@ -84,6 +84,15 @@ Metrics report_metrics(const json& r) {
       if (t.value().is_number()) total += t.value().get<double>();
     m.build_s = total;
   }
+  if (r.contains("network") && r["network"].is_object()) {
+    const json& n = r["network"];
+    m.network_status = n.value("status", "");
+    m.coolant_flow_kg_s = number_at(n, "/total_mass_flow_kg_s"_json_pointer);
+    m.worst_backflow_margin = number_at(n, "/worst_backflow_margin"_json_pointer);
+    if (n.contains("chamber_mass_flow_kg_s") && n["chamber_mass_flow_kg_s"].is_object())
+      for (const auto& c : n["chamber_mass_flow_kg_s"].items())
+        if (c.value().is_number()) m.chamber_flows_kg_s.emplace_back(c.key(), c.value().get<double>());
+  }
   const json::json_pointer cooling("/model/cooling");
   if (!r.contains(cooling)) return m;
   const json& c = r.at(cooling);
@@ -188,6 +197,10 @@ void write_results_csv(const fs::path& study_dir, const StudyListing& l) {
   for (const ResultRow& r : l.rows)
     for (const Metrics::Passage& p : r.metrics.passages)
       if (std::find(passages.begin(), passages.end(), p.name) == passages.end()) passages.push_back(p.name);
+  std::vector<std::string> chambers;  // chambers with a solved flow, the union over the variants
+  for (const ResultRow& r : l.rows)
+    for (const auto& c : r.metrics.chamber_flows_kg_s)
+      if (std::find(chambers.begin(), chambers.end(), c.first) == chambers.end()) chambers.push_back(c.first);
   std::ostringstream o;
   o << "id";
   for (const std::string& p : l.parameters) o << "," << csv_cell(p);
@@ -195,6 +208,8 @@ void write_results_csv(const fs::path& study_dir, const StudyListing& l) {
   for (const auto& [name, value] : metric_columns(Metrics{})) o << "," << name;
   o << ",process_s";
   for (const std::string& p : passages) o << "," << csv_cell(p + "_dh_mean_mm") << "," << csv_cell(p + "_dh_min_mm");
+  o << ",network_status,coolant_mass_flow_kg_s,worst_backflow_margin";
+  for (const std::string& c : chambers) o << "," << csv_cell(c + "_mass_flow_kg_s");
   o << "\n";
   for (const ResultRow& r : l.rows) {
     const Metrics& m = r.metrics;
@@ -206,6 +221,11 @@ void write_results_csv(const fs::path& study_dir, const StudyListing& l) {
     for (const std::string& name : passages) {
       const auto it = std::find_if(m.passages.begin(), m.passages.end(), [&](const Metrics::Passage& p) { return p.name == name; });
       o << "," << (it == m.passages.end() ? "" : format_round_trip(it->dh_mean_mm)) << "," << (it == m.passages.end() ? "" : format_round_trip(it->dh_min_mm));
+    }
+    o << "," << csv_cell(m.network_status) << "," << opt(m.coolant_flow_kg_s) << "," << opt(m.worst_backflow_margin);
+    for (const std::string& name : chambers) {
+      const auto it = std::find_if(m.chamber_flows_kg_s.begin(), m.chamber_flows_kg_s.end(), [&](const auto& c) { return c.first == name; });
+      o << "," << (it == m.chamber_flows_kg_s.end() ? "" : format_number(it->second));
     }
     o << "\n";
   }

@@ -13,6 +13,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace cg::study {
@@ -32,6 +33,11 @@ struct Metrics {
     double dh_mean_mm = 0, dh_min_mm = 0;
   };
   std::vector<Passage> passages;
+  /// The coolant network (report.json "network"): its status ("" when none was written), the total
+  /// flow, the worst backflow margin and the flow per chamber (only when it converged).
+  std::string network_status;
+  std::optional<double> coolant_flow_kg_s, worst_backflow_margin;
+  std::vector<std::pair<std::string, double>> chamber_flows_kg_s;
 };
 
 /// Metrics of a report.json document (pipeline/report.cpp, features/passage_report, film_report).

@@ -13,7 +13,7 @@
 #include "src/pipeline/cooling_stage_cache.hpp"
 #include "src/pipeline/stage_cache.hpp"
 #include "src/study/design.hpp"
-#include "src/study/process_pool.hpp"
+#include "src/core/process_pool.hpp"
 #include "src/study/study_file.hpp"
 #include "src/study/study_html.hpp"
 #include "src/study/text_file.hpp"

@@ -7,6 +7,7 @@
 
 #include "acceptance/handoff_checks.hpp"
 #include "acceptance/report_page_checks.hpp"
+#include "acceptance/network_checks.hpp"
 
 using namespace cg;
 
@@ -32,3 +33,9 @@ BOOST_AUTO_TEST_CASE(report_html_in_a_browser, *utf::precondition(test::BrowserT
 BOOST_AUTO_TEST_CASE(report_html_with_a_truncated_model_says_broken, *utf::precondition(test::BrowserTools())) {
   test::check_truncated_model_is_broken(build());
 }
+// The coolant network (the built-in example has a "coolant" section, so "network" is a default format):
+// 153 film and showerhead holes, two turnarounds (ribs 2 and 3), four chambers.
+BOOST_AUTO_TEST_CASE(network_deck_converges_in_ccx_and_conserves_mass) {
+  test::check_network_deck(build(), {153, 2, {"chamber_1", "chamber_2", "chamber_3", "chamber_4"}});
+}
+BOOST_AUTO_TEST_CASE(film_holes_csv_on_the_outer_wall_along_the_cylinders) { test::check_film_holes_csv(build(), 153); }

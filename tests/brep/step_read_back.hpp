@@ -24,6 +24,7 @@ struct StepReadBack {
   std::multiset<std::string> names;        ///< names of the free shapes' sub-shape labels
   std::multiset<std::string> face_names;   ///< the names on face labels
   std::map<std::string, TopoDS_Shape> named_solids;  ///< solid labels by name (bodies)
+  std::multimap<std::string, TopoDS_Shape> named_faces;  ///< face labels by name
 };
 
 inline StepReadBack read_step_back(const std::filesystem::path& file) {
@@ -50,7 +51,10 @@ inline StepReadBack read_step_back(const std::filesystem::path& file) {
         const std::string name = TCollection_AsciiString(n->Get()).ToCString();
         r.names.insert(name);
         const TopoDS_Shape shape = XCAFDoc_ShapeTool::GetShape(s);
-        if (shape.ShapeType() == TopAbs_FACE) r.face_names.insert(name);
+        if (shape.ShapeType() == TopAbs_FACE) {
+          r.face_names.insert(name);
+          r.named_faces.emplace(name, shape);
+        }
         if (shape.ShapeType() == TopAbs_SOLID) r.named_solids[name] = shape;
       }
     }

@@ -23,7 +23,7 @@
 #include "src/config/config_error.hpp"
 #include "src/study/design.hpp"
 #include "src/study/field_path.hpp"
-#include "src/study/process_pool.hpp"
+#include "src/core/process_pool.hpp"
 
 namespace fs = std::filesystem;
 using namespace cg;

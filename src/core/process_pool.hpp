@@ -1,4 +1,5 @@
 #pragma once
+// (Shared by design studies and the network solver run; namespace kept from src/study.)
 // Runs commands as child processes, at most `jobs` at a time, in order (a spec may wait for an earlier one
 // to end or to create a path: ProcessSpec::after, ready_path). Each child runs in its own process group
 // with stdout and stderr in files; one that outlives its `kill_after_s` is killed (SIGKILL to its

@@ -1,4 +1,4 @@
-#include "src/study/process_pool.hpp"
+#include "src/core/process_pool.hpp"
 
 #include <fcntl.h>
 #include <signal.h>

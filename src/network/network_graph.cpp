@@ -1,0 +1,601 @@
+#include "src/network/network_graph.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <memory>
+#include <set>
+
+#include <BRepBndLib.hxx>
+#include <Bnd_Box.hxx>
+
+#include "features/passages/section_surface.hpp"
+#include "src/blade/blade_coordinates.hpp"
+#include "src/core/constants.hpp"
+#include "src/network/network_correlations.hpp"
+
+namespace cg::network {
+namespace {
+
+using Vec3 = Eigen::Vector3d;
+using features::SpanEnd;
+
+// One station of a passage: a measured section, or the passage's end (end wall or open end) with the
+// nearest measured section's area.
+struct Station {
+  double span = 0, area = 0, perimeter = 0;
+  bool measured = false;
+  Vec3 point = Vec3::Zero();  ///< on the passage's mid line
+  int node = 0;
+};
+
+struct Passage {
+  std::string name;
+  int number = 0;       ///< chamber number (1-based) or radial passage number
+  bool chamber = true;  ///< false: a radial passage
+  std::vector<Station> stations;  ///< hub -> tip
+  int feed = -1;        ///< index of the station the coolant enters at (-1: not fed yet)
+  bool hub_turn = false, tip_turn = false;  ///< the end is a turnaround
+  std::vector<int> segment_elements;        ///< hub -> tip, one per station pair
+};
+
+// Equivalent rectangle with the same area and wetted perimeter: W / H >= 1 (NaN when none exists).
+double aspect_ratio(double a, double p) {
+  const double half = p / 2, disc = half * half - 4 * a;
+  if (!(disc >= 0)) return kUnset;
+  const double w = (half + std::sqrt(disc)) / 2, h = half - w;
+  return h > 0 ? w / h : kUnset;
+}
+
+class Builder {
+ public:
+  explicit Builder(const NetworkInput& in)
+      : in_(in), c_(*in.config), bc_(*in.config->coolant), coords_(std::make_unique<blade::BladeCoordinates>(*in.model)) {}
+
+  Network run();
+
+ private:
+  int add_node(Node n) {
+    n.id = static_cast<int>(net_.nodes.size()) + 1;
+    net_.nodes.push_back(std::move(n));
+    return net_.nodes.back().id;
+  }
+  Element& add_element(Element e) {
+    e.id = static_cast<int>(net_.elements.size()) + 1;
+    net_.elements.push_back(std::move(e));
+    return net_.elements.back();
+  }
+  Vec3 mid_point(const Passage& p, double span) const;
+  double radius(const Vec3& p) const { return rotor_ ? std::hypot(p.y(), p.z()) : kUnset; }
+  double end_span(SpanEnd end) const;
+  void gas();
+  void passages();
+  void orient();
+  void stations_to_nodes(Passage& p);
+  void segments(Passage& p);
+  void inlets();
+  void bends();
+  void inserts();
+  void holes();
+  void slots();
+  double compound_angle(const features::HoleMeasure& h) const;
+  void prune_dead_ends();
+  int sink(config::SinkKind kind);
+  Passage* find(const std::string& name) {
+    for (Passage& p : passages_)
+      if (p.name == name) return &p;
+    return nullptr;
+  }
+  int nearest_station(const Passage& p, double span) const {
+    int best = 0;
+    for (std::size_t i = 1; i < p.stations.size(); ++i)
+      if (std::abs(p.stations[i].span - span) < std::abs(p.stations[static_cast<std::size_t>(best)].span - span)) best = static_cast<int>(i);
+    return best;
+  }
+  std::string segment_at(const Passage& p, double span) const;
+
+  const NetworkInput& in_;
+  const config::Config& c_;
+  const config::CoolantConfig& bc_;
+  std::unique_ptr<blade::BladeCoordinates> coords_;
+  bool rotor_ = false;
+  Network net_;
+  std::vector<Passage> passages_;
+  int supply_ = 0;
+  std::map<config::SinkKind, int> sinks_;
+};
+
+const features::CoreDefinition* core_of(const config::Config& c) {
+  return c.cooling.passages.core ? &*c.cooling.passages.core : nullptr;
+}
+
+Vec3 Builder::mid_point(const Passage& p, double span) const {
+  if (!p.chamber) {
+    const auto& def = c_.cooling.passages.radial_passages.at(static_cast<std::size_t>(p.number - 1));
+    const features::SpanSurface s = features::span_surfaces(*in_.model, {span}).front();
+    return {def.position.x(), def.position.y(), s.origin.z()};
+  }
+  const features::CoreDefinition& cd = *core_of(c_);
+  const std::size_t k = static_cast<std::size_t>(p.number);
+  const double s0 = k == 1 ? 0 : cd.ribs[k - 2].suction_chord, s1 = k > cd.ribs.size() ? 1 : cd.ribs[k - 1].suction_chord;
+  const double p0 = k == 1 ? 0 : cd.ribs[k - 2].pressure_chord, p1 = k > cd.ribs.size() ? -1 : cd.ribs[k - 1].pressure_chord;
+  return 0.5 * (coords_->frame(span, 0.5 * (s0 + s1)).point + coords_->frame(span, 0.5 * (p0 + p1)).point);
+}
+
+double Builder::end_span(SpanEnd end) const {
+  const features::CoreDefinition* cd = core_of(c_);
+  const double len = in_.model->span_length;
+  if (end == SpanEnd::Hub) return cd && !cd->hub_floor.open ? cd->hub_floor.thickness / len : 0.0;
+  return cd && !cd->tip_cap.open ? 1 - cd->tip_cap.thickness / len : 1.0;
+}
+
+void Builder::gas() {
+  net_.gas.gas_constant = bc_.gas_constant;
+  net_.gas.cp = bc_.cp > 0 ? bc_.cp : air_cp(bc_.supply_total_temperature);
+  net_.gas.viscosity = bc_.viscosity > 0 ? bc_.viscosity : air_viscosity(bc_.supply_total_temperature);
+  rotor_ = in_.model->net.has_value();
+  net_.omega = rotor_ ? bc_.rotational_speed_rpm * 2 * kPi / 60 : 0;
+  if (!rotor_ && bc_.rotational_speed_rpm > 0)
+    net_.notes.push_back("coolant.rotational_speed_rpm ignored: a straight vane does not rotate");
+}
+
+// The passages with their measured sections (hub -> tip), and end stations where the passage ends at an
+// end wall or an open end (not at a turnaround: the bend starts at the last section).
+void Builder::passages() {
+  const features::CoreDefinition* cd = core_of(c_);
+  for (const features::PassageMeasure& m : in_.passages->passages) {
+    Passage p;
+    p.name = m.name;
+    p.chamber = m.name.rfind("chamber_", 0) == 0;
+    p.number = std::stoi(m.name.substr(m.name.rfind('_') + 1));
+    std::vector<features::CrossSection> secs = m.sections;
+    std::sort(secs.begin(), secs.end(), [](const auto& a, const auto& b) { return a.span < b.span; });
+    if (secs.size() < 2) throw NetworkError(m.name + ": fewer than 2 measured sections, no network segments");
+    if (p.chamber && cd) {
+      const std::size_t k = static_cast<std::size_t>(p.number);
+      for (std::size_t r : {k - 1, k - 2})
+        if (r < cd->ribs.size() && cd->ribs[r].turnaround)
+          (cd->ribs[r].turnaround->end == SpanEnd::Hub ? p.hub_turn : p.tip_turn) = true;
+    }
+    if (!p.hub_turn) p.stations.push_back({end_span(SpanEnd::Hub), secs.front().area, secs.front().wetted_perimeter, false});
+    for (const auto& s : secs) p.stations.push_back({s.span, s.area, s.wetted_perimeter, true});
+    if (!p.tip_turn) p.stations.push_back({end_span(SpanEnd::Tip), secs.back().area, secs.back().wetted_perimeter, false});
+    for (Station& st : p.stations) st.point = mid_point(p, st.span);
+    passages_.push_back(std::move(p));
+  }
+  if (passages_.empty()) throw NetworkError("the part has no measured coolant passage");
+}
+
+// Which end each passage is fed at: inlets and open ends first, then through turnarounds.
+void Builder::orient() {
+  const features::CoreDefinition* cd = core_of(c_);
+  for (Passage& p : passages_) {
+    if (!p.chamber) p.feed = 0;  // radial passages: from the hub
+    if (cd && p.chamber) {
+      for (const auto& inl : cd->inlets)
+        if (inl.chamber == p.number) p.feed = inl.end == SpanEnd::Hub ? 0 : static_cast<int>(p.stations.size()) - 1;
+      if (p.feed < 0 && cd->hub_floor.open) p.feed = 0;
+      if (p.feed < 0 && cd->tip_cap.open) p.feed = static_cast<int>(p.stations.size()) - 1;
+    }
+  }
+  // Through turnarounds: the chamber joined at the end a fed chamber's flow arrives at.
+  for (bool changed = true; changed;) {
+    changed = false;
+    if (!cd) break;
+    for (std::size_t r = 0; r < cd->ribs.size(); ++r) {
+      if (!cd->ribs[r].turnaround) continue;
+      Passage *a = find("chamber_" + std::to_string(r + 1)), *b = find("chamber_" + std::to_string(r + 2));
+      if (!a || !b) continue;
+      const bool at_hub = cd->ribs[r].turnaround->end == SpanEnd::Hub;
+      for (auto [up, down] : {std::pair{a, b}, std::pair{b, a}}) {
+        const int arrive = up->feed == 0 ? static_cast<int>(up->stations.size()) - 1 : 0;
+        if (up->feed < 0 || down->feed >= 0 || (arrive == 0) != at_hub) continue;
+        down->feed = at_hub ? 0 : static_cast<int>(down->stations.size()) - 1;
+        changed = true;
+      }
+    }
+  }
+  for (const Passage& p : passages_)
+    if (p.feed < 0) throw NetworkError(p.name + ": no inlet, open end or turnaround from a fed chamber feeds it");
+}
+
+std::string Builder::segment_at(const Passage& p, double span) const {
+  for (std::size_t i = 0; i + 1 < p.stations.size(); ++i)
+    if (span <= p.stations[i + 1].span || i + 2 == p.stations.size())
+      return net_.elements.at(static_cast<std::size_t>(p.segment_elements[i] - 1)).name;
+  return "";
+}
+
+char station_label(std::size_t i) { return static_cast<char>('0' + i % 10); }
+
+void Builder::stations_to_nodes(Passage& p) {
+  const features::CoreDefinition* cd = core_of(c_);
+  for (std::size_t i = 0; i < p.stations.size(); ++i) {
+    Station& st = p.stations[i];
+    const bool hub_end = i == 0 && !p.hub_turn, tip_end = i + 1 == p.stations.size() && !p.tip_turn;
+    const bool hub_open = !p.chamber || (cd && cd->hub_floor.open), tip_open = !p.chamber || (cd && cd->tip_cap.open);
+    // An open end the coolant enters at is the supply; one it leaves through is the tip sink (an open
+    // hub too: the sinks have no hub kind, noted).
+    const int last = static_cast<int>(p.stations.size()) - 1;
+    if ((hub_end && hub_open) || (tip_end && tip_open)) {
+      const bool entry = hub_end ? p.feed == 0 : p.feed == last;
+      st.node = entry ? supply_ : sink(config::SinkKind::Tip);
+      if (!entry && hub_end) net_.notes.push_back(p.name + " leaves through the open hub at coolant.sinks.tip_pa");
+      continue;
+    }
+    Node n;
+    n.name = p.name + "_s" + std::string(1, station_label(i / 10)) + station_label(i);
+    n.chamber = p.name;
+    n.span = st.span;
+    n.radius = radius(st.point);
+    st.node = add_node(n);
+  }
+}
+
+void Builder::segments(Passage& p) {
+  const features::TurbulatorDefinition* turb = nullptr;
+  if (const auto* cd = core_of(c_); cd && p.chamber)
+    for (const auto& t : cd->turbulators)
+      if (t.chamber == p.number) turb = &t;
+  for (std::size_t i = 0; i + 1 < p.stations.size(); ++i) {
+    // Along the flow: away from the feed station.
+    const bool up_hub = static_cast<int>(i) >= p.feed;
+    const Station& a = p.stations[up_hub ? i : i + 1];
+    const Station& b = p.stations[up_hub ? i + 1 : i];
+    Element e;
+    e.name = p.name + "_seg_" + std::string(1, station_label(i / 10)) + station_label(i);
+    e.kind = ElementKind::Segment;
+    e.chamber = p.name;
+    e.upstream = a.node;
+    e.downstream = b.node;
+    e.length = (b.point - a.point).norm();
+    e.area_in = a.area;
+    e.area_out = b.area;
+    e.perimeter_in = a.perimeter;
+    e.perimeter_out = b.perimeter;
+    e.hydraulic_diameter = 0.5 * (4 * a.area / a.perimeter + 4 * b.area / b.perimeter);
+    e.aspect_ratio = aspect_ratio(0.5 * (a.area + b.area), 0.5 * (a.perimeter + b.perimeter));
+    e.span_in = a.span;
+    e.span_out = b.span;
+    e.radius_in = radius(a.point);
+    e.radius_out = radius(b.point);
+    e.faces = {p.chamber ? p.name + "_wall" : p.name};
+    if (turb && a.measured && b.measured) {
+      e.turbulators = turbulation(*turb, e.hydraulic_diameter, e.aspect_ratio, e.length);
+      e.roughness = equivalent_roughness(*e.turbulators, e.hydraulic_diameter);
+      e.faces.push_back("turbulator_*");
+    }
+    if (net_.omega > 0 && e.upstream != supply_) {
+      // Fanno pipe to a node at the downstream radius, then the forced vortex (centrifugal pumping).
+      Node n;
+      n.name = net_.node(b.node).name + "_pipe";
+      n.chamber = p.name;
+      n.span = b.span;
+      n.radius = e.radius_in;
+      const int mid = add_node(n);
+      Element rot;
+      rot.name = p.name + "_rot_" + std::string(1, station_label(i / 10)) + station_label(i);
+      rot.kind = ElementKind::Rotation;
+      rot.chamber = p.name;
+      rot.upstream = mid;
+      rot.downstream = b.node;
+      rot.radius_in = e.radius_in;
+      rot.radius_out = e.radius_out;
+      rot.span_in = a.span;
+      rot.span_out = b.span;
+      e.downstream = mid;
+      p.segment_elements.push_back(add_element(e).id);
+      add_element(rot);
+    } else {
+      p.segment_elements.push_back(add_element(e).id);
+    }
+  }
+}
+
+int Builder::sink(config::SinkKind kind) {
+  const auto it = sinks_.find(kind);
+  if (it != sinks_.end()) return it->second;
+  Node n;
+  n.name = std::string("sink_") + config::CoolantConfig::sink_field(kind);
+  n.name = n.name.substr(0, n.name.size() - 3);  // without "_pa"
+  n.kind = NodeKind::Sink;
+  n.pressure = bc_.sink(kind);
+  n.temperature = bc_.supply_total_temperature;
+  return sinks_[kind] = add_node(n);
+}
+
+void Builder::inlets() {
+  const features::CoreDefinition* cd = core_of(c_);
+  if (!cd) return;
+  for (std::size_t m = 0; m < cd->inlets.size(); ++m) {
+    const auto& inl = cd->inlets[m];
+    Passage* p = find("chamber_" + std::to_string(inl.chamber));
+    if (!p) continue;
+    const Station& st = inl.end == SpanEnd::Hub ? p->stations.front() : p->stations.back();
+    Element e;
+    e.name = "inlet_" + std::to_string(m + 1);
+    e.kind = ElementKind::Inlet;
+    e.chamber = p->name;
+    e.upstream = supply_;
+    e.downstream = st.node;
+    Opening o;
+    o.row = e.name;
+    o.shape = "cylindrical";
+    o.diameter = inl.diameter;
+    o.metering_length = inl.end == SpanEnd::Hub ? cd->hub_floor.thickness : cd->tip_cap.thickness;
+    o.length_d = o.metering_length / o.diameter;
+    o.metering_area = o.exit_area = kPi * inl.diameter * inl.diameter / 4;
+    e.opening = o;
+    e.length = o.metering_length;
+    e.area_in = e.area_out = o.metering_area;
+    e.hydraulic_diameter = inl.diameter;
+    e.radius_in = e.radius_out = radius(st.point);
+    e.span_in = e.span_out = st.span;
+    e.faces = {e.name};
+    add_element(e);
+  }
+}
+
+void Builder::bends() {
+  const features::CoreDefinition* cd = core_of(c_);
+  if (!cd) return;
+  int n = 0;
+  for (std::size_t r = 0; r < cd->ribs.size(); ++r) {
+    if (!cd->ribs[r].turnaround) continue;
+    ++n;
+    Passage *a = find("chamber_" + std::to_string(r + 1)), *b = find("chamber_" + std::to_string(r + 2));
+    if (!a || !b) continue;
+    const bool at_hub = cd->ribs[r].turnaround->end == SpanEnd::Hub;
+    // Upstream: the chamber whose flow arrives at this end.
+    const bool a_up = (a->feed == 0) != at_hub;
+    Passage& up = a_up ? *a : *b;
+    Passage& down = a_up ? *b : *a;
+    const Station& s0 = at_hub ? up.stations.front() : up.stations.back();
+    const Station& s1 = at_hub ? down.stations.front() : down.stations.back();
+    Element e;
+    e.name = "turnaround_" + std::to_string(n);
+    e.kind = ElementKind::Bend;
+    e.chamber = up.name;
+    e.upstream = s0.node;
+    e.downstream = s1.node;
+    e.area_in = s0.area;
+    e.area_out = s1.area;
+    e.perimeter_in = s0.perimeter;
+    e.perimeter_out = s1.perimeter;
+    e.hydraulic_diameter = 0.5 * (4 * s0.area / s0.perimeter + 4 * s1.area / s1.perimeter);
+    e.aspect_ratio = aspect_ratio(0.5 * (s0.area + s1.area), 0.5 * (s0.perimeter + s1.perimeter));
+    e.bend_angle_deg = 180;
+    e.bend_radius = 0.5 * (s1.point - s0.point).norm();
+    e.length = kPi * e.bend_radius;
+    e.span_in = s0.span;
+    e.span_out = s1.span;
+    e.radius_in = radius(s0.point);
+    e.radius_out = radius(s1.point);
+    e.faces = {"rib_" + std::to_string(r + 1), e.name, up.name + "_wall", down.name + "_wall"};
+    add_element(e);
+  }
+}
+
+// An insert's interior is a plenum between the chamber's inlets and its jets; the jets (one element,
+// every jet hole of the insert) feed the chamber's middle station.
+void Builder::inserts() {
+  if (!in_.film) return;
+  for (const features::InsertMeasure& im : in_.film->inserts) {
+    Passage* p = find(im.chamber);
+    if (!p || im.jet_holes <= 0) continue;
+    Node n;
+    n.name = im.name + "_inside";
+    n.chamber = p->name;
+    const int inside = add_node(n);
+    // The chamber's inlets feed the insert instead.
+    for (Element& e : net_.elements)
+      if (e.kind == ElementKind::Inlet && e.chamber == p->name) e.downstream = inside;
+    const std::size_t mid = p->stations.size() / 2;
+    Element e;
+    e.name = im.name + "_jets";
+    e.kind = ElementKind::Jets;
+    e.chamber = p->name;
+    e.upstream = inside;
+    e.downstream = p->stations[mid].node;
+    Opening o;
+    o.row = im.name;
+    o.shape = "cylindrical";
+    o.count = im.jet_holes;
+    o.metering_area = o.exit_area = im.jet_area;
+    o.diameter = std::sqrt(4 * im.jet_area / im.jet_holes / kPi);
+    o.metering_length = im.sheet_thickness;
+    o.length_d = o.metering_length / o.diameter;
+    o.z_d = im.gap / o.diameter;
+    for (const auto& d : c_.cooling.film.inserts)
+      if ("chamber_" + std::to_string(d.chamber) == p->name) {
+        o.x_d = d.jet_spacing_x_d;
+        o.y_d = d.jet_spacing_y_d;
+      }
+    e.opening = o;
+    e.length = o.metering_length;
+    e.area_in = e.area_out = im.jet_area;
+    e.hydraulic_diameter = o.diameter;
+    e.span_in = e.span_out = p->stations[mid].span;
+    e.faces = {im.name};
+    add_element(e);
+  }
+}
+
+// One element per film and showerhead hole, from the station nearest its inlet (on the cavity wall) to
+// the sink of its kind.
+void Builder::holes() {
+  if (!in_.film) return;
+  for (std::size_t k = 0; k < in_.film->holes.size(); ++k) {
+    const features::HoleMeasure& h = in_.film->holes[k];
+    Passage* p = find(h.chamber);
+    if (!p) throw NetworkError(h.name + ": its chamber \"" + h.chamber + "\" has no measured sections");
+    const Vec3 exit(h.exit[0], h.exit[1], h.exit[2]), axis(h.axis[0], h.axis[1], h.axis[2]);
+    const Vec3 inlet = exit + h.length * axis;
+    const blade::BladeLocateResult loc = coords_->locate(inlet);
+    const double span = loc.found ? loc.coordinate.span : h.span;
+    const bool shower = h.row.rfind("showerhead", 0) == 0;
+    const config::SinkKind kind = shower ? config::SinkKind::Showerhead
+                                         : (h.chord > 0 ? config::SinkKind::SuctionSide : config::SinkKind::PressureSide);
+    const Station& st = p->stations[static_cast<std::size_t>(nearest_station(*p, span))];
+    Element e;
+    e.name = h.name;
+    e.kind = ElementKind::FilmHole;
+    e.chamber = p->name;
+    e.enters_from = segment_at(*p, span);
+    e.upstream = st.node;
+    e.downstream = sink(kind);
+    Opening o;
+    o.row = h.row;
+    o.shape = h.shape;
+    o.diameter = h.diameter;
+    o.metering_length = h.metering_length;
+    o.length_d = h.metering_length_d;
+    o.inclination_deg = h.inclination_deg;
+    o.compound_deg = compound_angle(h);
+    o.metering_area = h.metering_area;
+    o.exit_area = h.exit_area;
+    o.area_ratio = h.area_ratio;
+    o.sink = net_.node(e.downstream).name.substr(5);
+    o.hole_index = static_cast<int>(k);
+    e.opening = o;
+    e.length = h.length;
+    e.area_in = h.metering_area;
+    e.area_out = h.exit_area;
+    e.hydraulic_diameter = h.diameter;
+    e.span_in = span;
+    e.span_out = h.span;
+    e.radius_in = radius(inlet);
+    e.radius_out = radius(exit);
+    e.faces = {h.name};
+    add_element(e);
+  }
+}
+
+double Builder::compound_angle(const features::HoleMeasure& h) const {
+  const std::string prefix = "film_row_";
+  if (h.row.rfind(prefix, 0) == 0) {
+    const std::size_t k = static_cast<std::size_t>(std::stoi(h.row.substr(prefix.size())));
+    if (k >= 1 && k <= c_.cooling.film.rows.size()) return c_.cooling.film.rows[k - 1].compound_deg;
+  }
+  if (h.row.rfind("showerhead", 0) == 0 && c_.cooling.film.showerhead)
+    return c_.cooling.film.showerhead->toward_tip ? 90 : -90;  // the axis leans along the span
+  return kUnset;
+}
+
+// Trailing-edge slots: one element per slot (faces te_slot_<nn> on the blade), from the last chamber's
+// station nearest the slot's span to the trailing-edge sink; pin fins upstream as a pin bank.
+void Builder::slots() {
+  const features::CoreDefinition* cd = core_of(c_);
+  if (!cd || !cd->trailing_edge || in_.part->empty()) return;
+  const features::TrailingEdgeDefinition& te = *cd->trailing_edge;
+  Passage* p = find("chamber_" + std::to_string(cd->ribs.size() + 1));
+  if (!p) return;
+  std::map<std::string, Bnd_Box> boxes;
+  for (const brep::NamedFace& f : in_.part->front().geometry.faces)
+    if (f.name.rfind("te_slot_", 0) == 0) BRepBndLib::Add(f.face, boxes[f.name]);
+  int pins = 0;
+  std::set<std::string> pin_names;
+  for (const brep::NamedFace& f : in_.part->front().geometry.faces)
+    if (f.name.rfind("pin_fin_", 0) == 0) pin_names.insert(f.name);
+  pins = static_cast<int>(pin_names.size());
+  for (const auto& [name, box] : boxes) {
+    double x0, y0, z0, x1, y1, z1;
+    box.Get(x0, y0, z0, x1, y1, z1);
+    const blade::BladeLocateResult loc = coords_->locate(Vec3(0.5 * (x0 + x1), 0.5 * (y0 + y1), 0.5 * (z0 + z1)));
+    const double span = loc.found ? loc.coordinate.span : 0.5;
+    const Station& st = p->stations[static_cast<std::size_t>(nearest_station(*p, span))];
+    Element e;
+    e.name = name;
+    e.kind = ElementKind::Slot;
+    e.chamber = p->name;
+    e.enters_from = segment_at(*p, span);
+    e.upstream = st.node;
+    e.downstream = sink(config::SinkKind::TrailingEdge);
+    Opening o;
+    o.row = "te_slots";
+    o.shape = "slot";
+    o.metering_area = o.exit_area = te.slot_height * te.slot_width;
+    o.diameter = 2 * te.slot_height * te.slot_width / (te.slot_height + te.slot_width);
+    o.sink = "trailing_edge";
+    e.opening = o;
+    e.area_in = e.area_out = o.metering_area;
+    e.hydraulic_diameter = o.diameter;
+    e.span_in = e.span_out = span;
+    e.faces = {name};
+    if (te.pin_fins) {
+      e.pins = pin_bank(*te.pin_fins, pins);
+      e.faces.push_back("pin_fin_*");
+    }
+    add_element(e);
+  }
+}
+
+// A closed end beyond the last hole carries no flow (and CalculiX refuses a node with one element):
+// junctions with a single element are removed with it, repeatedly; ids are renumbered.
+void Builder::prune_dead_ends() {
+  for (bool removed = true; removed;) {
+    removed = false;
+    std::vector<int> degree(net_.nodes.size() + 1, 0);
+    for (const Element& e : net_.elements) ++degree[static_cast<std::size_t>(e.upstream)], ++degree[static_cast<std::size_t>(e.downstream)];
+    std::vector<int> node_id(net_.nodes.size() + 1, 0);
+    std::vector<Node> nodes;
+    for (Node& n : net_.nodes)
+      if (n.kind != NodeKind::Junction || degree[static_cast<std::size_t>(n.id)] > 1) {
+        node_id[static_cast<std::size_t>(n.id)] = static_cast<int>(nodes.size()) + 1;
+        nodes.push_back(n);
+        nodes.back().id = static_cast<int>(nodes.size());
+      } else {
+        removed = true;
+      }
+    std::vector<Element> elements;
+    for (Element& e : net_.elements) {
+      const int u = node_id[static_cast<std::size_t>(e.upstream)], d = node_id[static_cast<std::size_t>(e.downstream)];
+      if (!u || !d) continue;
+      e.upstream = u;
+      e.downstream = d;
+      e.id = static_cast<int>(elements.size()) + 1;
+      elements.push_back(e);
+    }
+    net_.nodes = std::move(nodes);
+    net_.elements = std::move(elements);
+  }
+}
+
+Network Builder::run() {
+  gas();
+  Node s;
+  s.name = "supply";
+  s.kind = NodeKind::Supply;
+  s.pressure = bc_.supply_total_pressure;
+  s.temperature = bc_.supply_total_temperature;
+  supply_ = add_node(s);
+  passages();
+  orient();
+  if (in_.film)  // a chamber with an insert is fed by the jets at its middle station
+    for (const features::InsertMeasure& im : in_.film->inserts)
+      if (Passage* p = find(im.chamber); p && im.jet_holes > 0) p->feed = static_cast<int>(p->stations.size() / 2);
+  for (Passage& p : passages_) {
+    stations_to_nodes(p);
+    segments(p);
+  }
+  inlets();
+  inserts();
+  bends();
+  holes();
+  slots();
+  prune_dead_ends();
+  if (net_.omega > 0)
+    net_.notes.push_back("rotation: forced vortex per segment (pressure rise exact for isentropic rotation); node "
+                         "temperatures stay at the supply's (the relative-frame rise is not carried)");
+  return std::move(net_);
+}
+
+}  // namespace
+
+Network build_network(const NetworkInput& in) {
+  if (!in.config || !in.config->coolant || !in.model || !in.part || !in.passages)
+    throw NetworkError("network: the build has no coolant section or no measured passages");
+  return Builder(in).run();
+}
+
+}  // namespace cg::network

@@ -1,0 +1,39 @@
+#include "src/network/network_stage.hpp"
+
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <filesystem>
+
+#include "src/network/ccx_deck.hpp"
+#include "src/network/film_holes_csv.hpp"
+#include "src/network/network_json.hpp"
+
+namespace cg::network {
+namespace fs = std::filesystem;
+
+NetworkRun run_network(const NetworkInput& in) {
+  const auto t0 = std::chrono::steady_clock::now();
+  NetworkRun r;
+  r.network = build_network(in);
+  r.deck = ccx_deck(r.network);
+  r.json = network_json(r.network);
+  static std::atomic<int> counter{0};
+  SolveOptions so;
+  so.time_limit_s = in.config->coolant->time_limit_s;
+  so.work_dir = fs::temp_directory_path() /
+                ("coolinggen-network-" + std::to_string(getpid()) + "-" + std::to_string(counter.fetch_add(1)));
+  r.solution = solve_network(r.network, r.deck, so);
+  std::error_code ec;
+  fs::remove_all(so.work_dir, ec);
+  r.results = results_json(r.network, r.solution);
+  r.summary = results_summary(r.results);
+  if (r.solution.status != SolveStatus::Converged) r.warnings.push_back("network: " + r.solution.message);
+  if (in.film && !in.film->holes.empty()) r.film_holes = film_holes_csv(*in.film, &r.network, &r.solution);
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  r.summary["seconds"] = r.seconds;
+  return r;
+}
+
+}  // namespace cg::network
