@@ -316,6 +316,9 @@ def main():
             r = f.result()
             r.update(base=base, inside=inside)
             results[i] = r
+            if a.keep:  # each result as it comes, so a stopped run still leaves what it measured
+                with open(os.path.join(work, "results.jsonl"), "a") as log:
+                    log.write(json.dumps(r) + "\n")
     rows = [results[i] for i in sorted(results)]
     if not a.keep:
         shutil.rmtree(work, ignore_errors=True)
