@@ -2,14 +2,15 @@
 // `coolinggen build` refuses in its first stage (the plan, before the solid: its progress on a terminal
 // shows no other stage), naming the same field; run as processes on small variants of the examples whose
 // refusal used to come only from the build, after its cooling stage or from the film stage's holes
-// (times: printed with --log_level=message; bench/README.md has them on a quiet machine):
+// (their times are printed with --log_level=message):
 //  - the C3X film vane with a film row written without "chamber" over the chamber that holds the insert:
 //    its holes' tools would reach past the insert's gap (build refused it in its film stage);
 //  - the built-in example with a turnaround gap of 80 mm, longer than the blade's span (~53 mm): the
 //    build refused it when its rib tubes were built, after the inner wall and the core solid;
 //  - the C3X film vane with a film row (no "chamber") whose holes enter the cavity within the ligament
 //    of the rib (mid-surface +- thickness / 2 and the fillets' width): build refused it after its cooling
-//    stage.
+//    stage;
+//  - a rotor variant whose turbulators find no room between the rib fillets (placed by the plan).
 // The build refuses each with exit 2, one line starting with the same field, and writes nothing.
 #define BOOST_TEST_MODULE cli_plan
 #include <boost/test/unit_test.hpp>
@@ -101,4 +102,12 @@ BOOST_AUTO_TEST_CASE(film_row_entering_at_a_rib) {
     r["chord"] = 0.35;  // its holes enter the cavity within the ligament of rib_1 (at 0.3, 3 mm thick, 1 mm fillets)
   });
   expect_planned_refusal(d, "cooling.film_rows[0].chord", "rib_1");
+}
+
+// A light rotor variant of bench/random_designs.py (seed 11, variant 32, data/repro/
+// turbulator_between_fillets.json): its 45 deg turbulators find no room between the rib fillets at one
+// span; build refused it only after the core's cells (0.5 of a median build), validate said valid.
+BOOST_AUTO_TEST_CASE(turbulator_without_room_between_the_fillets) {
+  const json d = variant(fs::path(COOLINGGEN_SOURCE_DIR) / "data" / "repro" / "turbulator_between_fillets.json", [](json&) {});
+  expect_planned_refusal(d, "cooling.core.turbulators[0].end_gap", "no room between the rib fillets");
 }

@@ -142,8 +142,10 @@ BOOST_AUTO_TEST_CASE(slot_and_pin_sizes) {
 }
 
 BOOST_AUTO_TEST_CASE(turbulator_taller_than_its_chamber) {
+  // The plan places the turbulators on the core's walls (features/plan/cooling_plan.hpp): refused by validate.
   expect_geometry_error([](json& d) { core_of(d)["turbulators"][0]["height"] = 2.5; },
-                        "cooling.core.turbulators[0].height", {"taller than its chamber", "at span", "must be <"});
+                        "cooling.core.turbulators[0].height", {"taller than its chamber", "at span", "must be <"},
+                        RefusedBy::Validate);
 }
 
 BOOST_AUTO_TEST_CASE(trailing_edge_that_does_not_fit) {
