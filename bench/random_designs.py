@@ -9,16 +9,21 @@ Half the variants are drawn "inside" (positions and sizes inside the ranges the 
 rows fed from the chamber they sit over, turbulators between two ribs, ...), half "free" (wider ranges,
 no such care).
 
-Each variant is built by the coolinggen binary as a separate process (a crash cannot take the bench down)
-with `--timeout` and classified:
+Film rows are drawn without `chamber` too (NO_CHAMBER of them, inside and free), as a user who does not
+care writes them. Each variant goes through `coolinggen validate`, then `coolinggen build` (both run, so
+that every refusal of validate is compared with build's), each by the coolinggen binary as a separate
+process (a crash cannot take the bench down), the build with `--timeout`, and the build is classified:
   built    exit 0, report.json says valid, every body valid;
   refused  exit 2 with a one-line error that names a config field (`cooling.core.ribs[1].thickness: ...`);
   failed   anything else (exit 3: a boolean or check CoolingGen could not complete, said as such; exit
            4/5, a signal, a timeout, a multi-line or field-less refusal, an invalid report): a bug to fix.
 Printed: the counts (overall and for the "inside" half: goal 0 failed, >= 90 % of "inside" built), the
 refusal reasons grouped by field, the failures with their messages, and the time to refusal against the
-median build time (goal: a refusal within 5 % of a build). Exit 1 when any variant failed, or when fewer
-than --min-built of the variants built (a bench whose variants are all refused shows nothing).
+median build time (goal: a refusal within 5 % of a build; a refusal's time is validate's when validate
+refused it, else build's), and validate against build: a refused variant agrees when validate refused it
+naming the same field; "late refusals" are those validate accepted (checks that need the built cavity).
+Exit 1 when any variant failed, or when fewer than --min-built of the variants built (a bench whose
+variants are all refused shows nothing).
 
 Usage: random_designs.py --binary build/coolinggen [--count 200] [--seed 1] [--jobs 2] [--light]
                          [--timeout 900] [--keep DIR] [--min-built 0.5]
@@ -52,6 +57,10 @@ def load(name):
         if "file" in points and not os.path.isabs(points["file"]):
             points["file"] = os.path.normpath(os.path.join(EXAMPLES, points["file"]))
     return doc
+
+
+# Film rows drawn without "chamber" (the row is fed from the chamber its holes enter), inside and free.
+NO_CHAMBER = 0.4
 
 
 def chamber_at(chord, ribs):
@@ -151,6 +160,8 @@ def vary_rotor(rng, inside, light):
         row = {"diameter": round(rng.uniform(0.3, 0.5), 4), "chord": round(chord, 4),
                "inclination_deg": round(rng.uniform(25, 40) if inside else rng.uniform(5, 80), 4),
                "span_start": span[0], "span_end": span[1], "chamber": ch}
+        if rng.random() < NO_CHAMBER:  # as a user who does not care writes it: fed from where it enters
+            del row["chamber"]
         if rng.random() < 0.3:
             row["shape"] = "7-7-7"
         else:
@@ -186,6 +197,8 @@ def vary_c3x(rng, inside, light):
         r["span_start"], r["span_end"] = span
         r["pitch_d"] = round(rng.uniform(3.5, 6) if inside else rng.uniform(1.1, 10), 4)
         r["chord"] = round((1 if r["chord"] > 0 else -1) * (rng.uniform(s + 0.1, 0.6) if inside else rng.uniform(0.05, 0.95)), 4)
+        if rng.random() < NO_CHAMBER:
+            del r["chamber"]
     sh = c["showerhead"]
     sh["span_start"], sh["span_end"] = span
     sh["rows"] = rng.randint(1, 3) if light else rng.randint(1, 5)
@@ -224,20 +237,28 @@ def field_group(field):
     return re.sub(r"\[\d+\]", "[]", field)
 
 
+def run_command(binary, args, timeout):
+    """(exit code, stderr, seconds) of one coolinggen command in its own process."""
+    t0 = time.monotonic()
+    try:
+        p = subprocess.run([binary] + args, capture_output=True, text=True, timeout=timeout)
+        code, err = p.returncode, p.stderr
+    except subprocess.TimeoutExpired:
+        code, err = -999, "killed: no exit within %g s" % timeout
+    return code, err, time.monotonic() - t0
+
+
 def run_variant(binary, work, index, doc, timeout):
+    """`coolinggen validate`, then `coolinggen build` of one variant (build runs either way: a design
+    validate refuses must be refused by build naming the same field)."""
     cfg = os.path.join(work, "v%03d.json" % index)
     out = os.path.join(work, "v%03d" % index)
     doc.setdefault("output", {})["formats"] = []  # report.json alone: the build and its checks are the test
     with open(cfg, "w") as f:
         json.dump(doc, f, indent=1)
-    t0 = time.monotonic()
-    try:
-        p = subprocess.run([binary, "build", cfg, "-q", "-o", out, "--timeout", str(timeout)],
-                           capture_output=True, text=True, timeout=timeout + 120)
-        code, err = p.returncode, p.stderr
-    except subprocess.TimeoutExpired:
-        code, err = -999, "killed: no exit within --timeout + 120 s"
-    seconds = time.monotonic() - t0
+    vcode, verr, vseconds = run_command(binary, ["validate", cfg], 120)
+    vstatus, vdetail, _ = classify(vcode, verr, None) if vcode != 0 else ("valid", "", "")
+    code, err, seconds = run_command(binary, ["build", cfg, "-q", "-o", out, "--timeout", str(timeout)], timeout + 120)
     report = None
     try:
         with open(os.path.join(out, "report.json")) as f:
@@ -245,7 +266,27 @@ def run_variant(binary, work, index, doc, timeout):
     except (OSError, ValueError):
         pass
     status, detail, message = classify(code, err, report)
-    return {"index": index, "status": status, "detail": detail, "message": message, "seconds": seconds, "exit": code}
+    return {"index": index, "status": status, "detail": detail, "message": message, "seconds": seconds, "exit": code,
+            "validate": vstatus, "validate_detail": vdetail, "validate_seconds": vseconds}
+
+
+def agreement(r):
+    """How `validate` and `build` agree on a variant: "agree", "late" (validate said valid, build refused:
+    a check that needs the built cavity), "field" (both refused, other fields), "false" (validate refused a
+    design build accepted or failed on), "validate_failed" (validate neither accepted nor refused cleanly)."""
+    v, b = r["validate"], r["status"]
+    if v == "failed":
+        return "validate_failed"
+    if v == "refused":
+        if b != "refused":
+            return "false"
+        return "agree" if r["validate_detail"] == r["detail"] else "field"
+    return "late" if b == "refused" else "agree"
+
+
+def refusal_seconds(r):
+    """Time of the refusing command: validate's when it refused, else build's."""
+    return r["validate_seconds"] if r["validate"] == "refused" else r["seconds"]
 
 
 def main():
@@ -280,6 +321,9 @@ def main():
             r = f.result()
             r.update(base=base, inside=inside)
             results[i] = r
+            if a.keep:  # each result as it comes, so a stopped run still leaves what it measured
+                with open(os.path.join(work, "results.jsonl"), "a") as log:
+                    log.write(json.dumps(r) + "\n")
     rows = [results[i] for i in sorted(results)]
     if not a.keep:
         shutil.rmtree(work, ignore_errors=True)
@@ -307,11 +351,34 @@ def main():
         for k, v in sorted(reasons.items(), key=lambda kv: -len(kv[1])):
             print("    %3d  %s" % (len(v), k))
     built = [r["seconds"] for r in rows if r["status"] == "built"]
-    refused = [r["seconds"] for r in rows if r["status"] == "refused"]
+    refused_rows = [r for r in rows if r["status"] == "refused"]
+    refused = [refusal_seconds(r) for r in refused_rows]
     if built and refused:
         mb = statistics.median(built)
         print("  time to refusal / median build time (%.1f s): median %.3f, worst %.3f (goal <= 0.05)" %
               (mb, statistics.median(refused) / mb, max(refused) / mb))
+    kinds = {}
+    for r in rows:
+        kinds.setdefault(agreement(r), []).append(r)
+    by_validate = [r for r in refused_rows if r["validate"] == "refused"]
+    print("  validate vs build: %d of %d refused variants refused by validate naming the same field; "
+          "disagreements %d (goal 0): %d late refusals (validate valid, build refused), %d other field, "
+          "%d refused by validate only, %d validate failed" %
+          (sum(1 for r in refused_rows if agreement(r) == "agree"), len(refused_rows), sum(len(kinds.get(k, [])) for k in ("late", "field", "false", "validate_failed")),
+           len(kinds.get("late", [])), len(kinds.get("field", [])), len(kinds.get("false", [])),
+           len(kinds.get("validate_failed", []))))
+    if by_validate:
+        vs = [r["validate_seconds"] for r in by_validate]
+        print("  validate's refusals: median %.2f s, worst %.2f s" % (statistics.median(vs), max(vs)))
+    if built and kinds.get("late"):
+        late = [r["seconds"] for r in kinds["late"]]
+        print("  late refusals / median build time: median %.3f, worst %.3f" %
+              (statistics.median(late) / mb, max(late) / mb))
+    for k in ("late", "field", "false", "validate_failed"):
+        for r in kinds.get(k, []):
+            print("  DISAGREE (%s) v%03d (%s, %s): validate %s %s in %.2f s; build %s in %.1f s: %s" %
+                  (k, r["index"], r["base"], "inside" if r["inside"] else "free", r["validate"], r["validate_detail"],
+                   r["validate_seconds"], r["status"], r["seconds"], (r["message"] or r["detail"])[:300]))
     for r in rows:
         if a.show_refusals and r["status"] == "refused" and r["inside"]:
             print("  refused v%03d (%s, inside): %s" % (r["index"], r["base"], r["message"][:400]))

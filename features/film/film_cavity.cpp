@@ -130,9 +130,8 @@ void add_wall_feature_obstacles(HoleTarget& target, const WallFeatureBuild& wall
   add(walls.trailing_edge.slot_tools);
 }
 
-FilmCavity film_cavity_of_core(const blade::BladeModel& model, const CoreDefinition& def, const CoreBuild& core) {
-  FilmCavity cav;
-  HoleTarget& t = cav.target;
+HoleTarget hole_target_of_core(const blade::BladeModel& model, const CoreDefinition& def, const CoreBuild& core) {
+  HoleTarget t;
   t.model = &model;
   t.cavity_wall = core.inner_wall.surface;
   const double s0 = core.inner_wall.surface.first_v(), s1 = core.inner_wall.surface.last_v();
@@ -159,6 +158,13 @@ FilmCavity film_cavity_of_core(const blade::BladeModel& model, const CoreDefinit
     auto w = std::make_shared<EndWall>(*core.tip_cap);
     t.obstacles.push_back({"tip_cap", [w](const Vec3& p) { return w->signed_distance(p); }, true, ".span_end"});
   }
+  return t;
+}
+
+FilmCavity film_cavity_of_core(const blade::BladeModel& model, const CoreDefinition& def, const CoreBuild& core) {
+  FilmCavity cav;
+  cav.target = hole_target_of_core(model, def, core);
+  const double s0 = core.inner_wall.surface.first_v(), s1 = core.inner_wall.surface.last_v();
 
   // Insert chambers.
   const blade::BladeModel* m = &model;

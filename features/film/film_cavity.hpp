@@ -21,7 +21,13 @@
 
 namespace cg::features {
 
-/// The film cavity of a core built by build_core_tools. `model` must outlive the result (the target
+/// The hole target of a core: its inner wall, one TargetChamber per ChamberInfo, the ribs and the closed
+/// end walls as obstacles. Needs only what build_core_walls makes (inner wall, end walls, chambers), so
+/// the plan (features/plan/cooling_plan.hpp) and the film stage (film_cavity_of_core) make it alike.
+/// `model` must outlive the result.
+HoleTarget hole_target_of_core(const blade::BladeModel& model, const CoreDefinition& def, const CoreBuild& core);
+
+/// The film cavity of a core built by build_core_tools (target: hole_target_of_core). `model` must outlive the result (the target
 /// points to it); `core` and `def` are copied where needed.
 FilmCavity film_cavity_of_core(const blade::BladeModel& model, const CoreDefinition& def, const CoreBuild& core);
 

@@ -9,23 +9,10 @@
 
 namespace cg::features {
 
-FilmCoolingResult build_film_cooling(const blade::BladeModel& model, const brep::NamedShape& blade, FilmCavity cavity,
-                                     const FilmCoolingDefinition& def, const FeatureOptions& stage) {
-  ProgressSink* const progress = stage.progress;
+FilmPlan plan_film(const blade::BladeModel& model, FilmCavity& cavity, const FilmCoolingDefinition& def) {
   require(cavity.target.model == &model, "film cooling: the cavity belongs to another blade model");
-  FilmCoolingResult out;
-  out.blade = blade;
-  FilmReport& rep = out.report;
-  rep.configured_min_ligament = def.limits.min_ligament;
-  auto t0 = std::chrono::steady_clock::now();
-  const auto lap = [&](const std::string& stage) {
-    const auto t = std::chrono::steady_clock::now();
-    rep.seconds.emplace_back(stage, std::chrono::duration<double>(t - t0).count());
-    t0 = t;
-  };
-
+  FilmPlan plan;
   // The inserts' chambers first: an insert limits how far hole tools may reach into its chamber.
-  std::vector<const InsertChamber*> insert_chambers;
   for (std::size_t i = 0; i < def.inserts.size(); ++i) {
     const InsertDefinition& d = def.inserts[i];
     const std::string field = "inserts[" + std::to_string(i) + "]";
@@ -39,15 +26,34 @@ FilmCoolingResult build_film_cooling(const blade::BladeModel& model, const brep:
       if (def.inserts[j].chamber == d.chamber)
         throw FilmInputError(field + ".chamber", "chamber_" + std::to_string(d.chamber) + " already holds insert_" + std::to_string(j + 1));
     check_insert_input(*it, d, static_cast<int>(i) + 1, field);
-    insert_chambers.push_back(&*it);
-    for (TargetChamber& c : cavity.target.chambers)
-      if (c.number == d.chamber) c.reach = d.gap - std::max(0.05, 0.25 * d.gap);
+    plan.insert_chambers.push_back(static_cast<std::size_t>(it - cavity.chambers.begin()));
   }
+  limit_reach_by_inserts(cavity.target, def.inserts);
+  if (def.has_holes()) plan.holes = analyse_film_holes(cavity.target, place_film_holes(model, def), def.limits);
+  return plan;
+}
 
-  // Film holes placed, analysed and checked before any solid is built (errors name the field).
-  FilmHoleTools tools;
+FilmCoolingResult build_film_cooling(const blade::BladeModel& model, const brep::NamedShape& blade, FilmCavity cavity,
+                                     const FilmCoolingDefinition& def, const FeatureOptions& stage) {
+  ProgressSink* const progress = stage.progress;
+  FilmCoolingResult out;
+  out.blade = blade;
+  FilmReport& rep = out.report;
+  rep.configured_min_ligament = def.limits.min_ligament;
+  auto t0 = std::chrono::steady_clock::now();
+  const auto lap = [&](const std::string& stage) {
+    const auto t = std::chrono::steady_clock::now();
+    rep.seconds.emplace_back(stage, std::chrono::duration<double>(t - t0).count());
+    t0 = t;
+  };
+
+  // The plan: inserts' chambers and input, reach, holes analysed (errors name the field).
+  FilmPlan plan = plan_film(model, cavity, def);
+  std::vector<const InsertChamber*> insert_chambers;
+  for (std::size_t k : plan.insert_chambers) insert_chambers.push_back(&cavity.chambers[k]);
+  FilmHoleTools& tools = plan.holes;
   if (def.has_holes()) {
-    tools = make_film_hole_tools(cavity.target, place_film_holes(model, def), def.limits);
+    add_hole_tools(tools);
     lap("hole_tools");
   }
 

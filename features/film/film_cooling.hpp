@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "features/film/film_definition.hpp"
+#include "features/film/film_holes.hpp"
 #include "features/film/film_report.hpp"
 #include "features/film/hole_target.hpp"
 #include "features/film/insert.hpp"
@@ -35,6 +36,21 @@ struct FilmCoolingResult {
   std::vector<brep::SolidCheck> insert_checks;
 };
 
+/// What the film stage places before any solid: each insert's chamber (index into FilmCavity::chambers)
+/// with its input checked (check_insert_input), and every film / showerhead hole placed on its row and
+/// analysed against the cavity (the wall it crosses, the chamber it reaches, its tool extent, ligaments
+/// to the obstacles and to the other holes; no tools yet).
+struct FilmPlan {
+  std::vector<std::size_t> insert_chambers;  ///< per insert of the definition
+  FilmHoleTools holes;
+};
+
+/// The film plan on `cavity` (whose chambers' reach it limits by the inserts): the first part of
+/// build_film_cooling, and all of it that needs no solid, so the planning stage
+/// (features/plan/cooling_plan.hpp) runs the same code. Throws FilmInputError.
+FilmPlan plan_film(const blade::BladeModel& model, FilmCavity& cavity, const FilmCoolingDefinition& def);
+
+/// The film plan, then the hole tools, inserts and booleans.
 /// Throws FilmInputError (field below "cooling") for input the blade cannot take, FeatureFailure when a
 /// boolean or a check fails. `cavity.target.model` must be `model`.
 /// `options.verification` FinalOnly, None: the holes' boolean step skips verify_solid (as build_passages);

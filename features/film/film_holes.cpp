@@ -46,8 +46,8 @@ double hole_ligament(const HoleGeometry& a, const HoleGeometry& b) {
   return best;
 }
 
-FilmHoleTools make_film_hole_tools(const HoleTarget& target, const std::vector<HoleSpec>& holes, const FilmLimits& limits,
-                                   const HoleQuadrature& quadrature) {
+FilmHoleTools analyse_film_holes(const HoleTarget& target, const std::vector<HoleSpec>& holes, const FilmLimits& limits,
+                                 const HoleQuadrature& quadrature) {
   FilmHoleTools out;
   out.holes = holes;
   HoleAnalyser analyser(target, limits, quadrature);
@@ -89,8 +89,20 @@ FilmHoleTools make_film_hole_tools(const HoleTarget& target, const std::vector<H
     if (a.row == b.row) throw FilmInputError(later.field + later.spacing_field, "pitch too small: " + what);
     throw FilmInputError(later.field + later.position_field, "overlapping rows " + a.row + " and " + b.row + ": " + what);
   }
+  return out;
+}
 
-  for (std::size_t i = 0; i < n; ++i) {
+FilmHoleTools make_film_hole_tools(const HoleTarget& target, const std::vector<HoleSpec>& holes, const FilmLimits& limits,
+                                   const HoleQuadrature& quadrature) {
+  FilmHoleTools out = analyse_film_holes(target, holes, limits, quadrature);
+  add_hole_tools(out);
+  return out;
+}
+
+void add_hole_tools(FilmHoleTools& out) {
+  const std::vector<HoleSpec>& holes = out.holes;
+  out.tools.clear();
+  for (std::size_t i = 0; i < holes.size(); ++i) {
     const HoleSpec& h = holes[i];
     const HoleGeometry& g = out.geometry[i];
     FeatureTool t;
@@ -103,7 +115,6 @@ FilmHoleTools make_film_hole_tools(const HoleTarget& target, const std::vector<H
     }
     out.tools.push_back(std::move(t));
   }
-  return out;
 }
 
 BooleanOptions film_boolean_options(ProgressSink* progress) {

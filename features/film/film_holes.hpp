@@ -29,11 +29,20 @@ struct FilmHoleTools {
   std::vector<std::string> ligament_to;
 };
 
-/// Analyses every hole and makes its tool. Throws FilmInputError (field + hole) for a hole that does not
+/// Analyses every hole (hole_analysis.hpp) and checks the ligaments between them, without making tools
+/// (`tools` stays empty): the film holes' part of the plan (features/plan/cooling_plan.hpp), which needs
+/// the hole target and no solid. Throws FilmInputError as make_film_hole_tools.
+FilmHoleTools analyse_film_holes(const HoleTarget& target, const std::vector<HoleSpec>& holes, const FilmLimits& limits,
+                                 const HoleQuadrature& quadrature = {});
+
+/// analyse_film_holes, then every hole's tool. Throws FilmInputError (field + hole) for a hole that does not
 /// fit (hole_analysis.hpp) and for two holes closer than limits.min_ligament: within a row (field
 /// "<row>.pitch_d" or ".count") or between rows ("overlapping rows", field "<later row>.chord" / ".arc_length").
 FilmHoleTools make_film_hole_tools(const HoleTarget& target, const std::vector<HoleSpec>& holes, const FilmLimits& limits,
                                    const HoleQuadrature& quadrature = {});
+
+/// The tool of every analysed hole of `holes` (into holes.tools, one per hole).
+void add_hole_tools(FilmHoleTools& holes);
 
 /// Least ligament between the hole envelopes of two analysed holes (see the header comment), mm.
 double hole_ligament(const HoleGeometry& a, const HoleGeometry& b);

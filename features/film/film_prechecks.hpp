@@ -1,6 +1,6 @@
 #pragma once
 // The film and insert checks that need only the blade model and the feature definitions: run by
-// `coolinggen validate` and by a build before its first boolean (pipeline::validate_cooling), so a design
+// `coolinggen validate` and by a build before its first boolean (pipeline::plan_cooling), so a design
 // the late checks would refuse after minutes of booleans is refused in milliseconds. Each is a necessary
 // condition of what the hole analysis (hole_analysis.hpp) and the insert build check later on the built
 // cavity, so it never refuses a design those accept:

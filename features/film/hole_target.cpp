@@ -1,5 +1,6 @@
 #include "features/film/hole_target.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -15,6 +16,14 @@ int HoleTarget::chamber_at(double chord) const {
   for (std::size_t i = 0; i < chambers.size(); ++i)
     if (chambers[i].contains(chord)) return static_cast<int>(i);
   return -1;
+}
+
+double insert_reach(double gap) { return gap - std::max(0.05, 0.25 * gap); }
+
+void limit_reach_by_inserts(HoleTarget& target, const std::vector<InsertDefinition>& inserts) {
+  for (const InsertDefinition& d : inserts)
+    for (TargetChamber& c : target.chambers)
+      if (c.number == d.chamber) c.reach = insert_reach(d.gap);
 }
 
 std::function<double(const Eigen::Vector3d&)> end_wall_distance(const brep::EndTrim& trim, const Eigen::Vector3d& inside) {

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "features/film/film_definition.hpp"
 #include "src/blade/blade_surface.hpp"
 #include "src/brep/blade_solid.hpp"
 #include "src/core/bspline_surface.hpp"
@@ -55,6 +56,13 @@ struct HoleTarget {
   /// Index into chambers of the chamber holding `chord` (-1: none).
   int chamber_at(double chord) const;
 };
+
+/// How far a hole tool may reach into a chamber that holds an insert of gap Z: Z less a margin,
+/// max(0.05 mm, Z / 4) (film_cooling.hpp).
+double insert_reach(double gap);
+
+/// Sets the reach of every chamber of `target` that holds one of `inserts` (insert_reach).
+void limit_reach_by_inserts(HoleTarget& target, const std::vector<InsertDefinition>& inserts);
 
 /// Signed distance to an end wall given as an end trim (src/brep/blade_solid.hpp): a plane, or the
 /// surface of revolution of a meridional curve about the x axis (distance in the (x, r) plane, which is

@@ -16,6 +16,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <functional>
@@ -24,6 +25,7 @@
 #include <memory>
 #include <set>
 #include <sstream>
+#include <tuple>
 
 #include "adaptors/occt_convert.hpp"
 #include "src/brep/naming/face_names.hpp"
@@ -333,11 +335,59 @@ void check_inlet_sizes(const blade::BladeCoordinates& coords, const CoreDefiniti
 
 }  // namespace
 
+namespace {
+
+// Where the core's ribs end: through ends beyond the inner wall's span range, turnarounds against the
+// closed end walls `hub` / `tip` (null when open).
+RibEnds rib_ends(const CoreBuild& core, const EndWall* hub, const EndWall* tip) {
+  RibEnds ends;
+  ends.hub_through_span = core.inner_wall.surface.first_v();
+  ends.tip_through_span = core.inner_wall.surface.last_v();
+  ends.hub_wall = hub;
+  ends.tip_wall = tip;
+  return ends;
+}
+
+PassageInputError rib_error(const CoreDefinition& def, std::size_t i, const InvalidGeometry& e) {
+  return PassageInputError("core.ribs[" + std::to_string(i) + "]" + (def.ribs[i].turnaround ? ".turnaround" : ""), e.what());
+}
+
+blade::InnerWallOptions inner_wall_options(const CoreDefinition& def) {
+  blade::InnerWallOptions o;
+  o.tolerance = def.tolerance;
+  return o;
+}
+
+// The turnaround ends placed by their gaps as the rib tubes will place them (check_rib_ends, between the
+// inner wall's span range and the closed end walls): a gap the span cannot take is refused before any
+// fit or solid.
+void check_turnarounds(const blade::BladeModel& model, const blade::BladeCoordinates& coords, const CoreDefinition& def) {
+  if (std::none_of(def.ribs.begin(), def.ribs.end(), [](const RibDefinition& r) { return r.turnaround.has_value(); })) return;
+  std::optional<EndWall> hub, tip;
+  if (!def.hub_floor.open) hub.emplace(model, SpanEnd::Hub, def.hub_floor.thickness);
+  if (!def.tip_cap.open) tip.emplace(model, SpanEnd::Tip, def.tip_cap.thickness);
+  RibEnds ends;
+  std::tie(ends.hub_through_span, ends.tip_through_span) = blade::inner_wall_span_range(model, inner_wall_options(def));
+  ends.hub_wall = hub ? &*hub : nullptr;
+  ends.tip_wall = tip ? &*tip : nullptr;
+  for (std::size_t i = 0; i < def.ribs.size(); ++i) {
+    if (!def.ribs[i].turnaround) continue;
+    try {
+      check_rib_ends(coords, def.wall_thickness, def.ribs[i], static_cast<int>(i) + 1, ends);
+    } catch (const InvalidGeometry& e) {
+      throw rib_error(def, i, e);
+    }
+  }
+}
+
+}  // namespace
+
 void check_core_definition(const blade::BladeModel& model, const CoreDefinition& def) {
   check_definition(def);
   const blade::BladeCoordinates coords(model);
   try {
     check_rib_placement(coords, def);  // computes the crossing on five spans
+    check_turnarounds(model, coords, def);
     check_inlet_sizes(coords, def);
   } catch (const blade::InnerWallError& e) {
     throw PassageInputError("core.wall_thickness", e.what());
@@ -358,16 +408,16 @@ CoreBuild build_core_walls(const blade::BladeModel& model, const CoreDefinition&
   const blade::BladeCoordinates coords(model);
 
   // 1. Inner wall and core solid.
-  blade::InnerWallOptions iwo;
-  iwo.tolerance = def.tolerance;
   try {
-    out.inner_wall = blade::build_inner_wall(model, def.wall_thickness, iwo);
     check_rib_placement(coords, def);
+    check_turnarounds(model, coords, def);
+    out.inner_wall = blade::build_inner_wall(model, def.wall_thickness, inner_wall_options(def));
   } catch (const blade::InnerWallError& e) {
     throw PassageInputError("core.wall_thickness", e.what());
   }
   if (!def.hub_floor.open) out.hub_floor.emplace(model, SpanEnd::Hub, def.hub_floor.thickness);
   if (!def.tip_cap.open) out.tip_cap.emplace(model, SpanEnd::Tip, def.tip_cap.thickness);
+  out.chambers = chambers_of(coords, def);
   out.seconds.emplace_back("inner_wall", sw.lap());
   return out;
 }
@@ -409,10 +459,7 @@ void build_rib_tubes(const blade::BladeModel& model, const CoreDefinition& def, 
     w.coords = std::make_unique<blade::BladeCoordinates>(model);
     if (out.hub_floor) w.hub.emplace(*out.hub_floor);
     if (out.tip_cap) w.tip.emplace(*out.tip_cap);
-    w.ends.hub_through_span = out.inner_wall.surface.first_v();
-    w.ends.tip_through_span = out.inner_wall.surface.last_v();
-    w.ends.hub_wall = w.hub ? &*w.hub : nullptr;
-    w.ends.tip_wall = w.tip ? &*w.tip : nullptr;
+    w.ends = rib_ends(out, w.hub ? &*w.hub : nullptr, w.tip ? &*w.tip : nullptr);
   }
   std::vector<std::optional<RibTube>> tubes(def.ribs.size());
   parallel_for(static_cast<int>(def.ribs.size()), rib_workers, [&](int k, int wk) {
@@ -422,8 +469,7 @@ void build_rib_tubes(const blade::BladeModel& model, const CoreDefinition& def, 
       tubes[i] = build_rib_tube(*w.coords, def.wall_thickness, def.ribs[i], k + 1, turnaround_of[i], w.ends,
                                 def.tolerance);
     } catch (const InvalidGeometry& e) {
-      throw PassageInputError("core.ribs[" + std::to_string(i) + "]" + (def.ribs[i].turnaround ? ".turnaround" : ""),
-                              e.what());
+      throw rib_error(def, i, e);
     }
   });
   for (auto& t : tubes) {
@@ -705,8 +751,7 @@ void build_core_cells(const blade::BladeModel& model, const CoreDefinition& def,
   const brep::BladeSolid core = build_core_solid(model, def, out, delta, names);
   out.seconds.emplace_back("core_solid", sw.lap());
 
-  // 2. Ribs and chambers.
-  out.chambers = chambers_of(coords, def);
+  // 2. Ribs (the chambers are build_core_walls').
   build_rib_tubes(model, def, out, names);
   out.seconds.emplace_back("ribs", sw.lap());
 

@@ -326,46 +326,84 @@ TopoDS_Face turnaround_sheet(const RibMidSurface& mid, const RibDefinition& rib,
 
 }  // namespace
 
+namespace {
+
+// The rib's end specifications (hub, tip) from its definition and `ends`; InvalidGeometry / require
+// for sizes build_rib_tube cannot take.
+void end_specs(const RibDefinition& rib, const std::string& who, const RibEnds& ends, EndSpec& hub, EndSpec& tip) {
+  require(rib.thickness > 0, who + ": thickness must be > 0 mm");
+  require(rib.fillet_radius >= 0, who + ": fillet radius must be >= 0 mm");
+  hub.through_span = ends.hub_through_span;
+  tip.through_span = ends.tip_through_span;
+  hub.radius = tip.radius = 0.5 * rib.thickness;
+  if (!rib.turnaround) return;
+  const TurnaroundDefinition& t = *rib.turnaround;
+  require(t.gap > 0, who + ": turnaround gap must be > 0 mm");
+  require(t.tip_radius > 0 && t.tip_radius <= 0.5 * rib.thickness * (1 + 1e-12),
+          who + ": tip radius must be in (0, thickness / 2 = " + format_limit(0.5 * rib.thickness, Allowed::below) + "] mm, got " +
+              format_value_limit(t.tip_radius, 0.5 * rib.thickness, Allowed::below).value);
+  EndSpec& e = t.end == SpanEnd::Tip ? tip : hub;
+  e.kind = EndKind::Turnaround;
+  e.radius = std::min(t.tip_radius, 0.5 * rib.thickness);
+  e.gap = t.gap;
+  e.wall = t.end == SpanEnd::Tip ? ends.tip_wall : ends.hub_wall;
+  require(e.wall != nullptr, who + ": a turnaround needs the end wall it stops short of (the end is open)");
+}
+
+// The first extent of the tube along the rib line (fraction of its length at mid-span past each wall):
+// the rib's thickness, fillets and the wall, so the open ends lie outside the core.
+double first_extent(const RibMidSurface& mid, const RibDefinition& rib, const blade::ThicknessField& wall,
+                    const std::string& who) {
+  const double len = (mid.pressure_point(0.5) - mid.suction_point(0.5)).norm();
+  require(len > 0, who + ": its suction and pressure points coincide");
+  return (rib.thickness + 2 * rib.fillet_radius + wall.max_value() + 0.5) / len;
+}
+
+std::vector<double> tube_stations(double ext, int n) {
+  std::vector<double> st;
+  for (int k = 0; k < n; ++k) st.push_back(-ext + (1 + 2 * ext) * k / (n - 1));
+  return st;
+}
+
+constexpr int kFirstStations = 7;
+
+}  // namespace
+
+std::vector<std::pair<double, double>> check_rib_ends(const blade::BladeCoordinates& coords, const blade::ThicknessField& wall,
+                                                      const RibDefinition& rib, int index, const RibEnds& ends) {
+  const std::string who = "rib " + std::to_string(index);
+  const RibMidSurface mid(coords, wall, rib);
+  EndSpec hub, tip;
+  end_specs(rib, who, ends, hub, tip);
+  const TubeBuilder tb(mid, rib, index, 0, hub, tip);
+  std::vector<std::pair<double, double>> junctions;
+  for (double a : tube_stations(first_extent(mid, rib, wall, who), kFirstStations)) {
+    const TubeBuilder::Profile p = tb.profile(a);
+    junctions.emplace_back(p.sb, p.st);
+  }
+  return junctions;
+}
+
 RibTube build_rib_tube(const blade::BladeCoordinates& coords, const blade::ThicknessField& wall,
                        const RibDefinition& rib, int index, int turnaround_index, const RibEnds& ends,
                        double tolerance) {
   const std::string who = "rib " + std::to_string(index);
-  require(rib.thickness > 0, who + ": thickness must be > 0 mm");
-  require(rib.fillet_radius >= 0, who + ": fillet radius must be >= 0 mm");
   const RibMidSurface mid(coords, wall, rib);
   EndSpec hub, tip;
-  hub.through_span = ends.hub_through_span;
-  tip.through_span = ends.tip_through_span;
-  hub.radius = tip.radius = 0.5 * rib.thickness;
-  if (rib.turnaround) {
-    const TurnaroundDefinition& t = *rib.turnaround;
-    require(t.gap > 0, who + ": turnaround gap must be > 0 mm");
-    require(t.tip_radius > 0 && t.tip_radius <= 0.5 * rib.thickness * (1 + 1e-12),
-            who + ": tip radius must be in (0, thickness / 2 = " + format_limit(0.5 * rib.thickness, Allowed::below) + "] mm, got " +
-                format_value_limit(t.tip_radius, 0.5 * rib.thickness, Allowed::below).value);
-    EndSpec& e = t.end == SpanEnd::Tip ? tip : hub;
-    e.kind = EndKind::Turnaround;
-    e.radius = std::min(t.tip_radius, 0.5 * rib.thickness);
-    e.gap = t.gap;
-    e.wall = t.end == SpanEnd::Tip ? ends.tip_wall : ends.hub_wall;
-    require(e.wall != nullptr, who + ": a turnaround needs the end wall it stops short of (the end is open)");
-  }
+  end_specs(rib, who, ends, hub, tip);
   const TubeBuilder tb(mid, rib, index, turnaround_index, hub, tip);
 
   // Extent along the rib line: past both inner walls by the rib's thickness, fillets and the wall, so
   // the open ends lie outside the core (checked below, extended if not).
-  const double len = (mid.pressure_point(0.5) - mid.suction_point(0.5)).norm();
-  require(len > 0, who + ": its suction and pressure points coincide");
-  double ext = (rib.thickness + 2 * rib.fillet_radius + wall.max_value() + 0.5) / len;
+  double ext = first_extent(mid, rib, wall, who);
   RibTube out;
   out.index = index;
   out.turnaround = rib.turnaround ? turnaround_index : 0;
 
   for (int attempt = 0;; ++attempt) {
     bool refine = false;
-    for (int n = 7; n <= 49; n = 2 * n - 1) {
-      std::vector<double> st;
-      for (int k = 0; k < n; ++k) st.push_back(-ext + (1 + 2 * ext) * k / (n - 1));
+    for (int n = kFirstStations; n <= 49; n = 2 * n - 1) {
+      const std::vector<double> st = tube_stations(ext, n);
       std::vector<TubeBuilder::Profile> prof;
       for (double a : st) prof.push_back(tb.profile(a));
       const std::size_t np = prof[0].pieces.size();

@@ -28,6 +28,7 @@
 #include <Eigen/Core>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "features/passages/end_walls.hpp"
@@ -79,6 +80,13 @@ struct RibTube {
   std::vector<double> hub_junction, tip_junction;  ///< junction span per station
   std::vector<double> stations;
 };
+
+/// The rib's ends placed as build_rib_tube places them on its first stations (a turnaround end by its
+/// gap against its end wall), without building a surface: the (hub, tip) junction spans per station.
+/// Throws InvalidGeometry as build_rib_tube does (the gap leaves no rib, the end cannot be placed, the
+/// ends overlap), so the plan refuses what the rib build would. Milliseconds.
+std::vector<std::pair<double, double>> check_rib_ends(const blade::BladeCoordinates& coords, const blade::ThicknessField& wall,
+                                                      const RibDefinition& rib, int index, const RibEnds& ends);
 
 /// Builds rib `index` (1-based) of the core. Throws InvalidGeometry (with the rib named) when the rib
 /// cannot be placed: gap leaves no rib, tip radius > thickness / 2, non-positive sizes.

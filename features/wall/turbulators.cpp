@@ -279,7 +279,7 @@ RuledBlock turbulator_block(const WallDevelopment& wd, double xa, double xb, dou
 // wall's turbulators, 0 without): its ends, block, height check, tool and info in `out`.
 void build_turbulator(const std::string& name, std::size_t i, const TurbulatorDefinition& td, const WallSide& side, double s,
                       double other_height, const blade::BladeCoordinates& coords, const CoreDefinition& def,
-                      const OffsetWall& wall, WallLines& lines, TurbulatorBuild& out) {
+                      const OffsetWall& wall, WallLines& lines, TurbulatorOutput output, TurbulatorBuild& out) {
   const std::size_t k = static_cast<std::size_t>(td.chamber);  // ribs k-2 (LE side) and k-1 (TE side)
   const RibDefinition& ra = def.ribs[k - 2];
   const RibDefinition& rb = def.ribs[k - 1];
@@ -293,7 +293,6 @@ void build_turbulator(const std::string& name, std::size_t i, const TurbulatorDe
   if (!(xb - xa > td.width))
     throw PassageInputError(field(i, "end_gap"), name + ": no room between the rib fillets at span " + format_number(s));
   const double xm = 0.5 * (xa + xb);
-  RuledBlock block = turbulator_block(wd, xa, xb, xm, cot_a, sin_a, td, wall);
   // Taller than the chamber: the clear height above the top, from its centre line, must leave room
   // for the opposite wall's turbulators and 0.1 mm.
   for (double x : {xa, xm, xb}) {
@@ -309,14 +308,6 @@ void build_turbulator(const std::string& name, std::size_t i, const TurbulatorDe
                                   format_number(td.height + other_height) + " mm and 0.1 mm clear; height must be < " +
                                   format_limit(0.5 * (clear + td.height - 0.1), Allowed::below) + " mm here");
   }
-  const BlockIntegral vi = integrate_block(block, lines, Region::Material, Region::Chamber, Region::Chamber);
-  if (!vi.ok)
-    throw PassageInputError(field(i, "height"), name + " does not stand on the chamber wall as placed (its top "
-                                                       "leaves the chamber); reduce the height or move it");
-  FeatureTool tool;
-  tool.feature = name;
-  tool.shape = ruled_block_solid(block, name);
-  tool.expected_volume = vi.in_region;
   TurbulatorInfo info;
   info.name = name;
   info.chamber = td.chamber;
@@ -328,6 +319,19 @@ void build_turbulator(const std::string& name, std::size_t i, const TurbulatorDe
   info.height = td.height;
   info.width = td.width;
   info.length = (xb - xa) / sin_a;
+  if (output == TurbulatorOutput::kPlacement) {
+    out.turbulators.push_back(info);
+    return;
+  }
+  RuledBlock block = turbulator_block(wd, xa, xb, xm, cot_a, sin_a, td, wall);
+  const BlockIntegral vi = integrate_block(block, lines, Region::Material, Region::Chamber, Region::Chamber);
+  if (!vi.ok)
+    throw PassageInputError(field(i, "height"), name + " does not stand on the chamber wall as placed (its top "
+                                                       "leaves the chamber); reduce the height or move it");
+  FeatureTool tool;
+  tool.feature = name;
+  tool.shape = ruled_block_solid(block, name);
+  tool.expected_volume = vi.in_region;
   info.added_volume = vi.in_region;
   out.turbulators.push_back(info);
   out.tools.push_back(std::move(tool));
@@ -336,7 +340,7 @@ void build_turbulator(const std::string& name, std::size_t i, const TurbulatorDe
 }  // namespace
 
 TurbulatorBuild build_turbulators(const blade::BladeModel& model, const CoreDefinition& def, const CoreBuild& core,
-                                  WallLines& lines) {
+                                  WallLines& lines, TurbulatorOutput output) {
   check_turbulator_definitions(def);
   TurbulatorBuild out;
   if (def.turbulators.empty()) return out;
@@ -360,7 +364,7 @@ TurbulatorBuild build_turbulators(const blade::BladeModel& model, const CoreDefi
       const double other_height = sides.size() == 2 ? td.height : 0.0;
       for (double s : shifted ? spans.shifted_spans : spans.inline_spans)
         build_turbulator("turbulator_" + std::to_string(td.chamber) + "_" + number3(++number), i, td, side, s, other_height,
-                         coords, def, wall, lines, out);
+                         coords, def, wall, lines, output, out);
     }
   }
   return out;

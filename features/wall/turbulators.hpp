@@ -48,9 +48,14 @@ struct TurbulatorBuild {
 /// [30, 90] deg, pitch > width / sin(angle). Throws PassageInputError ("core.turbulators[i].<field>").
 void check_turbulator_definitions(const CoreDefinition& def);
 
+/// What build_turbulators makes: the tools (and their expected volumes), or only the placement (spans,
+/// ends between the ribs' fillets, height against the chamber: `turbulators` without volumes, no tools),
+/// which needs only the core's walls and no B-rep (the plan, features/plan/cooling_plan.hpp).
+enum class TurbulatorOutput { kTools, kPlacement };
+
 /// Builds the turbulator tools of `def` in the chambers of `core`. Throws PassageInputError when they do
 /// not fit (taller than the chamber, no room between the end walls), FeatureFailure for OCCT failures.
 TurbulatorBuild build_turbulators(const blade::BladeModel& model, const CoreDefinition& def, const CoreBuild& core,
-                                  WallLines& lines);
+                                  WallLines& lines, TurbulatorOutput output = TurbulatorOutput::kTools);
 
 }  // namespace cg::features

@@ -400,11 +400,7 @@ BSplineSurface<3> to_periodic_u(const BSplineSurface<3>& S) {
 
 }  // namespace
 
-InnerWall build_inner_wall(const BladeModel& model, const ThicknessField& thickness, const InnerWallOptions& options) {
-  require(options.tolerance > 0 && std::isfinite(options.tolerance),
-          "inner wall: tolerance must be > 0 mm, got " + format_number(options.tolerance));
-  require(thickness.max_value() > 0, "inner wall: the thickness field is empty");
-  const Workers workers(model);
+std::pair<double, double> inner_wall_span_range(const BladeModel& model, const InnerWallOptions& options) {
   const SpanRange dom = span_domain(model);
   const double ob = std::min(0.0 - dom.lo, dom.hi - 1.0);
   const double lo = std::isnan(options.span_min) ? dom.lo + 0.2 * ob : options.span_min;
@@ -412,6 +408,15 @@ InnerWall build_inner_wall(const BladeModel& model, const ThicknessField& thickn
   require(lo >= dom.lo && hi <= dom.hi && hi > lo, "inner wall: span range [" + format_number(lo) + ", " + format_number(hi) +
                                                        "] must lie inside the blade's [" + format_number(dom.lo) + ", " +
                                                        format_number(dom.hi) + "]");
+  return {lo, hi};
+}
+
+InnerWall build_inner_wall(const BladeModel& model, const ThicknessField& thickness, const InnerWallOptions& options) {
+  require(options.tolerance > 0 && std::isfinite(options.tolerance),
+          "inner wall: tolerance must be > 0 mm, got " + format_number(options.tolerance));
+  require(thickness.max_value() > 0, "inner wall: the thickness field is empty");
+  const Workers workers(model);
+  const auto [lo, hi] = inner_wall_span_range(model, options);
   const double tol = options.tolerance;
 
   std::vector<double> spans;

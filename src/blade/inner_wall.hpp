@@ -31,6 +31,7 @@
 #include <Eigen/Core>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "src/blade/blade_coordinates.hpp"
@@ -60,6 +61,10 @@ struct InnerWallOptions {
   double span_min = std::numeric_limits<double>::quiet_NaN();
   double span_max = std::numeric_limits<double>::quiet_NaN();
 };
+
+/// The span range [lo, hi] of the inner wall build_inner_wall fits for `options` (no fit: cheap), so
+/// placements that depend on it (rib ends) can be planned before the fit.
+std::pair<double, double> inner_wall_span_range(const BladeModel& model, const InnerWallOptions& options);
 
 /// Where the inner wall's crease (trailing-edge trim) lies on one fitted span.
 struct InnerWallSection {

@@ -1,5 +1,6 @@
-// coolinggen validate CONFIG: parse the config, build the blade model and run every cooling check that
-// needs no solid (pipeline::validate); write nothing, and say what only a build checks.
+// coolinggen validate CONFIG: parse the config, build the blade model and plan the cooling features
+// (pipeline::validate: every placement and check that needs no solid); write nothing, and say what only a
+// build checks.
 // coolinggen example: print the built-in example config.
 #include <cstdio>
 
@@ -20,8 +21,10 @@ Command add_validate_command(CLI::App& app) {
             std::printf("%s: valid (%s flow path, %zu sections)\n", path->c_str(),
                         m.trim.straight ? "straight" : "meridional", c.blade.sections.size());
             if (!c.cooling.empty())
-              std::printf("not checked before a build: the film holes against the built cavity (length, wall crossing, "
-                          "ligaments to other holes, ribs and end walls), the inlets' rims, the booleans and the solid checks\n");
+              std::printf("planned and checked: the core's walls, chambers, turnaround ends and turbulators, every film and showerhead "
+                          "hole (wall crossing, chamber, ligaments to other holes, ribs and end walls), the inserts' input; "
+                          "not checked before a build: the turbulator, pin and slot tools, the inlets' rims in their chambers, film holes against turbulators, "
+                          "pin fins and trailing-edge slots, the booleans and the solid checks\n");
             return int{kOk};
           }};
 }

@@ -69,7 +69,7 @@ features::PassagesResult cooling_stage(const config::Config& c, BuildResult& r, 
 
 blade::BladeModel validate(const config::Config& config, ProgressSink* progress) {
   blade::BladeModel model = config::build_model(config, progress);
-  if (!config.cooling.empty()) validate_cooling(config.cooling, model);  // ms: no solid needed
+  if (!config.cooling.empty()) plan_cooling(config.cooling, model);  // the plan: no solid needed
   return model;
 }
 

@@ -6,6 +6,7 @@
 // failed booleans and design checks stay features::FeatureFailure.
 #include "features/film/film_cooling.hpp"
 #include "features/internal_cooling.hpp"
+#include "features/plan/cooling_plan.hpp"
 #include "src/blade/blade_surface.hpp"
 #include "src/brep/boolean/feature_options.hpp"
 #include "src/brep/named_shape.hpp"
@@ -13,9 +14,10 @@
 
 namespace cg::pipeline {
 
-/// The cooling checks that need the blade model but no solid (features::validate_passages, film holes
-/// placed on their rows: span range, positions, pitch), as ConfigError.
-void validate_cooling(const config::CoolingConfig& cooling, const blade::BladeModel& model);
+/// The planning stage of the cooling features (features/plan/cooling_plan.hpp): every placement and
+/// check that needs the blade model but no solid; its input errors as ConfigError. `model` must outlive
+/// the result.
+features::CoolingPlan plan_cooling(const config::CoolingConfig& cooling, const blade::BladeModel& model);
 
 /// `verification`: see features::build_passages.
 features::PassagesResult apply_cooling(const config::CoolingConfig& cooling, const blade::BladeModel& model,

@@ -168,7 +168,7 @@ bool starts_with(const std::string& s, const std::string& prefix) { return s.rfi
 std::string refusal(const json& doc, const blade::BladeModel& model) {
   try {
     const config::Config c = config::parse_config(doc, COOLINGGEN_SOURCE_DIR "/data/examples", "hostile");
-    pipeline::validate_cooling(c.cooling, model);
+    pipeline::plan_cooling(c.cooling, model);
   } catch (const config::ConfigError& e) {
     return e.what();
   }

@@ -49,7 +49,7 @@ void expect_config_error(const std::function<void(json&)>& edit, const std::stri
   edit(doc);
   try {
     const config::Config c = config::parse_config(doc, COOLINGGEN_SOURCE_DIR "/data/examples", "t");
-    pipeline::validate_cooling(c.cooling, model());
+    pipeline::plan_cooling(c.cooling, model());
     BOOST_ERROR("no error for " << path);
   } catch (const config::ConfigError& e) {
     check_message(e.what(), path, details);
@@ -63,7 +63,7 @@ const features::CoreBuild& core_build() {
   return b;
 }
 
-// Where a geometry error is found: by the checks before any solid (pipeline::validate_cooling) or only
+// Where a geometry error is found: by the checks before any solid (pipeline::plan_cooling) or only
 // by the wall features' build on the core.
 enum class RefusedBy { Validate, Build };
 
@@ -74,8 +74,8 @@ void expect_geometry_error(const std::function<void(json&)>& edit, const std::st
   const config::Config c = config::parse_config(doc, COOLINGGEN_SOURCE_DIR "/data/examples", "t");
   const features::CoreDefinition& def = *c.cooling.passages.core;
   try {
-    pipeline::validate_cooling(c.cooling, model());
-    BOOST_TEST((by == RefusedBy::Build), "validate_cooling accepted what it should refuse: " << path);
+    pipeline::plan_cooling(c.cooling, model());
+    BOOST_TEST((by == RefusedBy::Build), "plan_cooling accepted what it should refuse: " << path);
   } catch (const config::ConfigError& e) {
     BOOST_TEST((by == RefusedBy::Validate), "refused before the build, expected only by it: " << e.what());
     check_message(e.what(), path, details);
@@ -142,8 +142,10 @@ BOOST_AUTO_TEST_CASE(slot_and_pin_sizes) {
 }
 
 BOOST_AUTO_TEST_CASE(turbulator_taller_than_its_chamber) {
+  // The plan places the turbulators on the core's walls (features/plan/cooling_plan.hpp): refused by validate.
   expect_geometry_error([](json& d) { core_of(d)["turbulators"][0]["height"] = 2.5; },
-                        "cooling.core.turbulators[0].height", {"taller than its chamber", "at span", "must be <"});
+                        "cooling.core.turbulators[0].height", {"taller than its chamber", "at span", "must be <"},
+                        RefusedBy::Validate);
 }
 
 BOOST_AUTO_TEST_CASE(trailing_edge_that_does_not_fit) {

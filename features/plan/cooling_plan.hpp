@@ -1,0 +1,54 @@
+#pragma once
+// The planning stage: every placement of the cooling features that the build knows before its first
+// boolean, from the blade model and the feature definitions alone, and every check that needs no
+// boolean run on it. `coolinggen validate` is the plan; `coolinggen build` is the plan, then the
+// booleans (src/pipeline/build.hpp), and its stages place through the same functions, so what the plan
+// refuses the build refuses, naming the same field:
+//  - passages: the definition checks (validate_passages: ribs on five spans, inlet sizes, wall
+//    features' definitions, trailing-edge placement);
+//  - core (build_core_walls): every turnaround end placed by its gap against its end wall (a gap the
+//    span cannot take; before the fit, also in validate_passages), the inner wall, the closed end walls
+//    and the chambers' chordwise extents;
+//  - turbulators (build_turbulators' placement on those walls): spans, ends between the ribs' fillets,
+//    height against the chamber (the tools and their volumes are the build's);
+//  - film (plan_film on film_cavity_of_core): each insert's chamber and input, the reach an insert
+//    leaves the hole tools, every film and showerhead hole placed on its row with its axis, exit, the
+//    wall it crosses and the chamber it reaches, its tool extent, and the ligaments to the ribs (mid-surface
+//    +- thickness / 2 and the fillets' width), to the end walls and to the other holes.
+// What the plan leaves to the build (the turbulator, pin and slot tools, which cost seconds to make, the
+// slots' and pins' placement, and film holes against them; the inlets' rims in their chambers; the
+// booleans with their volume checks; the design checks on the built solid; the inserts' offsets) is
+// listed in docs/verification.md with its cost.
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "features/film/film_cooling.hpp"
+#include "features/film/film_definition.hpp"
+#include "features/passages/core_passages.hpp"
+#include "features/passages/passage_definition.hpp"
+#include "features/wall/turbulators.hpp"
+#include "src/blade/blade_surface.hpp"
+
+namespace cg::features {
+
+struct CoolingPlan {
+  /// The core's walls, chambers and turnaround ends (build_core_walls; no cells, no solid); none
+  /// without a core.
+  std::optional<CoreBuild> core;
+  /// Every turbulator placed on the planned walls (span, ends between the ribs' fillets, height against
+  /// the chamber; build_turbulators' placement, no tools).
+  std::vector<TurbulatorInfo> turbulators;
+  /// The inserts' chambers and the film holes analysed against the planned core; none without film
+  /// input or without a core.
+  std::optional<FilmPlan> film;
+  /// Seconds per part ("passages", "core", "turbulators", "film").
+  std::vector<std::pair<std::string, double>> seconds;
+};
+
+/// Plans `passages` and `film` on `model` (which the result points to: it must outlive it). Throws
+/// PassageInputError or FilmInputError naming the field below "cooling".
+CoolingPlan plan_cooling(const blade::BladeModel& model, const PassagesDefinition& passages, const FilmCoolingDefinition& film);
+
+}  // namespace cg::features

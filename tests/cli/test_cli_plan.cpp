@@ -1,0 +1,113 @@
+// `coolinggen validate` plans the cooling features (features/plan/cooling_plan.hpp) and refuses what
+// `coolinggen build` refuses in its first stage (the plan, before the solid: its progress on a terminal
+// shows no other stage), naming the same field; run as processes on small variants of the examples whose
+// refusal used to come only from the build, after its cooling stage or from the film stage's holes
+// (their times are printed with --log_level=message):
+//  - the C3X film vane with a film row written without "chamber" over the chamber that holds the insert:
+//    its holes' tools would reach past the insert's gap (build refused it in its film stage);
+//  - the built-in example with a turnaround gap of 80 mm, longer than the blade's span (~53 mm): the
+//    build refused it when its rib tubes were built, after the inner wall and the core solid;
+//  - the C3X film vane with a film row (no "chamber") whose holes enter the cavity within the ligament
+//    of the rib (mid-surface +- thickness / 2 and the fillets' width): build refused it after its cooling
+//    stage;
+//  - a rotor variant whose turbulators find no room between the rib fillets (placed by the plan).
+// The build refuses each with exit 2, one line starting with the same field, and writes nothing.
+#define BOOST_TEST_MODULE cli_plan
+#include <boost/test/unit_test.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <nlohmann/json.hpp>
+
+#include "brep/temp_files.hpp"
+#include "cli/run_cli.hpp"
+
+namespace fs = std::filesystem;
+using namespace cg;
+using nlohmann::json;
+
+namespace {
+
+const fs::path kExamples = fs::path(COOLINGGEN_SOURCE_DIR) / "data" / "examples";
+
+// An example config with its point files made absolute, no outputs but report.json, edited.
+json variant(const fs::path& file, const std::function<void(json&)>& edit) {
+  json d = json::parse(test::read_text(file));
+  for (json& s : d["sections"])
+    if (s.contains("points") && s["points"].contains("file")) {
+      const fs::path p = s["points"]["file"].get<std::string>();
+      if (p.is_relative()) s["points"]["file"] = (file.parent_path() / p).lexically_normal().string();
+    }
+  d["output"]["formats"] = json::array();
+  edit(d);
+  return d;
+}
+
+// validate, then build: both exit 2 with one line starting with `field`, nothing written.
+void expect_planned_refusal(const json& doc, const std::string& field, const std::string& detail) {
+  test::TempDir dir("cli_plan");
+  const fs::path cfg = dir.path / "design.json";
+  std::ofstream(cfg) << doc.dump(1);
+  const test::Run v = test::run_cli("validate " + test::q(cfg), dir.path);
+  BOOST_TEST_MESSAGE(field << ": validate " << v.seconds << " s: " << v.err);
+  BOOST_TEST(v.exit_code == 2, field << ": " << v.out << v.err);
+  BOOST_TEST(test::count_lines(v.err) == 1, v.err);
+  BOOST_TEST(v.err.find("coolinggen: error: " + field + ": ") == 0u, v.err);
+  BOOST_TEST(v.err.find(detail) != std::string::npos, v.err);
+  // The build on a terminal shows its stages: refused in its first one (the plan), before the solid.
+  const test::Run b = test::run_cli("build " + test::q(cfg) + " -o " + test::q(dir.path / "out"), dir.path, true);
+  BOOST_TEST_MESSAGE(field << ": build " << b.seconds << " s: " << b.err);
+  BOOST_TEST(b.exit_code == 2, field << ": " << b.err);
+  BOOST_TEST(test::count_lines(b.err) == 1, b.err);
+  BOOST_TEST(b.err.find("coolinggen: error: " + field + ": ") == 0u, b.err);
+  BOOST_TEST(b.out.find("blade model") != std::string::npos, b.out);
+  BOOST_TEST(b.out.find("solid (") == std::string::npos, "build got past its plan: " << b.out);
+  BOOST_TEST(!fs::exists(dir.path / "out"));
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(film_row_without_chamber_reaching_past_the_insert) {
+  const json d = variant(kExamples / "c3x_film_vane.json", [](json& d) {
+    json& c = d["cooling"];
+    for (json& r : c["film_rows"]) {
+      r["span_start"] = 0.5;
+      r["span_end"] = 0.55;
+      r.erase("chamber");
+    }
+    c["film_rows"][0]["chord"] = 0.2;  // over chamber_1 (the rib is at 0.3), which holds the insert
+    c["showerhead"]["span_start"] = 0.5;
+    c["showerhead"]["span_end"] = 0.55;
+  });
+  // The insert's gap 1.5 mm leaves the tools 1.5 - 1.5 / 4 = 1.125 mm; they would reach 2.65 mm.
+  expect_planned_refusal(d, "cooling.film_rows[0].chord", "an insert lies behind the gap");
+}
+
+BOOST_AUTO_TEST_CASE(turnaround_gap_longer_than_the_span) {
+  const json d = variant(kExamples / "hpt_rotor.json", [](json& d) { d["cooling"]["core"]["ribs"][1]["turnaround"]["gap"] = 80; });
+  expect_planned_refusal(d, "cooling.core.ribs[1].turnaround", "the turnaround gap 80 mm leaves no rib");
+}
+
+BOOST_AUTO_TEST_CASE(film_row_entering_at_a_rib) {
+  const json d = variant(kExamples / "c3x_film_vane.json", [](json& d) {
+    json& c = d["cooling"];
+    c.erase("inserts");
+    c.erase("showerhead");
+    c["film_rows"].erase(1);
+    json& r = c["film_rows"][0];
+    r["span_start"] = 0.5;
+    r["span_end"] = 0.55;
+    r.erase("chamber");
+    r["chord"] = 0.35;  // its holes enter the cavity within the ligament of rib_1 (at 0.3, 3 mm thick, 1 mm fillets)
+  });
+  expect_planned_refusal(d, "cooling.film_rows[0].chord", "rib_1");
+}
+
+// A light rotor variant of bench/random_designs.py (seed 11, variant 32, data/repro/
+// turbulator_between_fillets.json): its 45 deg turbulators find no room between the rib fillets at one
+// span; build refused it only after the core's cells (0.5 of a median build), validate said valid.
+BOOST_AUTO_TEST_CASE(turbulator_without_room_between_the_fillets) {
+  const json d = variant(fs::path(COOLINGGEN_SOURCE_DIR) / "data" / "repro" / "turbulator_between_fillets.json", [](json&) {});
+  expect_planned_refusal(d, "cooling.core.turbulators[0].end_gap", "no room between the rib fillets");
+}
