@@ -15,6 +15,7 @@
 #include "export/triangulation.hpp"
 #include "export/vtk_writer.hpp"
 #include "export/x_display.hpp"
+#include "src/blade_import/geomturbo_writer.hpp"
 #include "src/core/background.hpp"
 #include "src/core/constants.hpp"
 #include "src/pipeline/report.hpp"
@@ -152,6 +153,10 @@ std::vector<OutputFormat> handoff_formats() {
          need_part(r, "sections");
          const auto& cuts = sections(c, r);
          d.write("sections.svg", [&](const fs::path& t) { io::write_sections_svg(t, cuts, product(c)); });
+       }},
+      {"geomturbo", "blade.geomTurbo: the outer blade and its channel (linear cascade for straight vanes)", {"blade.geomTurbo"},
+       [](OutputDirectory& d, const config::Config&, const BuildResult& r, ProgressSink*) {
+         d.write("blade.geomTurbo", [&](const fs::path& t) { blade_import::write_geomturbo_file(t.string(), r.model); });
        }},
       {"report_md", "report.md (rendered from report.json)", {"report.md"},
        [](OutputDirectory& d, const config::Config& c, const BuildResult& r, ProgressSink*) {
