@@ -95,10 +95,13 @@ double signed_area(const std::vector<Eigen::Vector2d>& p) {
 }
 
 // A cut in its section frame as a point section, placed back where it was cut.
+// The LE and TE are the file's: where its suction and pressure sides meet (samples 0 and M).
 blade::BladeSectionDefinition section_of_cut(const ImportedBlade& b, std::vector<Eigen::Vector2d> ab, double s,
                                              double theta_ref, const blade::BladeOptions& options) {
   blade::BladeSectionDefinition sd;
   blade::PointSectionDefinition p;
+  p.le_index = 0;
+  p.te_index = static_cast<int>(ab.size() / 2);
   p.points = std::move(ab);
   p.suction_side = signed_area(p.points) > 0 ? blade::SuctionSide::CounterClockwise : blade::SuctionSide::Clockwise;
   blade::SectionProfile raw;

@@ -5,8 +5,9 @@
 // 0..1; each cut is a point section on its stream surface, placed so that the blade model puts it
 // back where it was cut: annular rows in the conformal coordinates of blade_surface.hpp
 // (a = r_ref (m' - m'_LE), b = r_ref theta, offset = the detected LE's a and the stacking point's b),
-// cascades in the plane z = span * s. The blade model then detects LE/TE, interpolates between the
-// cuts and fits the wall as for any point sections, so every feature, check and output works on it.
+// cascades in the plane z = span * s. LE and TE are the file's (where its two sides meet). The blade
+// model then interpolates between the cuts and fits the wall as for any point sections, so every
+// feature, check and output works on it.
 #include <memory>
 
 #include "src/blade/blade_surface.hpp"
