@@ -13,14 +13,15 @@ Each variant is built by the coolinggen binary as a separate process (a crash ca
 with `--timeout` and classified:
   built    exit 0, report.json says valid, every body valid;
   refused  exit 2 with a one-line error that names a config field (`cooling.core.ribs[1].thickness: ...`);
-  failed   anything else (exit 3/4/5, a signal, a timeout, a multi-line or field-less refusal, an invalid
-           report): a bug to fix.
+  failed   anything else (exit 3: a boolean or check CoolingGen could not complete, said as such; exit
+           4/5, a signal, a timeout, a multi-line or field-less refusal, an invalid report): a bug to fix.
 Printed: the counts (overall and for the "inside" half: goal 0 failed, >= 90 % of "inside" built), the
 refusal reasons grouped by field, the failures with their messages, and the time to refusal against the
-median build time (goal: a refusal within 5 % of a build). Exit 1 when any variant failed.
+median build time (goal: a refusal within 5 % of a build). Exit 1 when any variant failed, or when fewer
+than --min-built of the variants built (a bench whose variants are all refused shows nothing).
 
 Usage: random_designs.py --binary build/coolinggen [--count 200] [--seed 1] [--jobs 2] [--light]
-                         [--timeout 900] [--keep DIR]
+                         [--timeout 900] [--keep DIR] [--min-built 0.5]
 --light: film rows and showerhead over 5 % of the span, coarser turbulator/slot/pin pitches (a build
 takes a few seconds; CI runs --count 10 --light).
 """
@@ -207,6 +208,8 @@ def classify(exit_code, err, report):
     if exit_code == 0:
         ok = report is not None and report.get("valid") is True and all(b.get("valid") for b in report.get("bodies", []))
         return ("built", "", "") if ok else ("failed", "exit 0 but the report says invalid", "")
+    if exit_code == 3:
+        return "failed", "CoolingGen failure (exit 3): " + " | ".join(lines)[:300], ""
     if exit_code == 2:
         if len(lines) == 1:
             m = FIELD.match(lines[0].removeprefix("coolinggen: error: "))
@@ -254,6 +257,8 @@ def main():
     ap.add_argument("--light", action="store_true")
     ap.add_argument("--timeout", type=float, default=900)
     ap.add_argument("--keep", help="keep the variants' configs and outputs in this directory")
+    ap.add_argument("--min-built", type=float, default=0.0,
+                    help="exit 1 when fewer than this fraction of the variants built (CI: 0.5)")
     ap.add_argument("--show-refusals", action="store_true", help="print the message of every refusal inside the ranges")
     a = ap.parse_args()
     rng = random.Random(a.seed)
@@ -312,6 +317,9 @@ def main():
             print("  refused v%03d (%s, inside): %s" % (r["index"], r["base"], r["message"][:400]))
         if r["status"] == "failed":
             print("  FAILED v%03d (%s, %s): %s" % (r["index"], r["base"], "inside" if r["inside"] else "free", r["detail"]))
+    if allc["built"] < a.min_built * len(rows):
+        print("  TOO FEW BUILT: %d of %d, fewer than --min-built %.2f" % (allc["built"], len(rows), a.min_built))
+        return 1
     return 1 if allc["failed"] else 0
 
 

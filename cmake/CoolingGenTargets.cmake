@@ -36,6 +36,11 @@ cg_add_library(coolinggen_brep DIRS src/brep features DEPS coolinggen_model cool
 cg_add_library(coolinggen_export DIRS export DEPS coolinggen_brep coolinggen_vtk_deps coolinggen_cgns_deps nlohmann_json::nlohmann_json)
 vtk_module_autoinit(TARGETS coolinggen_export MODULES ${VTK_LIBRARIES})
 target_compile_definitions(coolinggen_export PRIVATE COOLINGGEN_VERSION="${PROJECT_VERSION}")
+# report.html's viewer (three.js, bundled once and committed), page script and style (export/web/).
+include(${PROJECT_SOURCE_DIR}/cmake/EmbedText.cmake)
+cg_embed_text(coolinggen_export OUTPUT ${PROJECT_BINARY_DIR}/generated/web_assets.cpp NAMESPACE cg::io::web
+  ENTRIES kViewerBundle export/web/viewer.bundle.js kReportPage export/web/report_page.js
+  kStudyPage export/web/study_page.js kPageStyle export/web/report.css)
 # Meshing through gmsh's C++ API (gmsh takes the OCCT shape); mesh.cgns with export's CGNS file helpers.
 cg_add_library(coolinggen_mesh DIRS src/mesh DEPS coolinggen_brep coolinggen_export coolinggen_gmsh_deps coolinggen_vtk_deps)
 vtk_module_autoinit(TARGETS coolinggen_mesh MODULES ${VTK_LIBRARIES})

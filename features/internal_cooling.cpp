@@ -115,8 +115,8 @@ PassagesResult build_passages(const blade::BladeModel& model, const brep::NamedS
   std::string failed;
   for (const auto& t : out.report.thickness)
     if (!t.passed)
-      failed += (failed.empty() ? "" : "; ") + t.feature + " measures " + format_number(t.min) + " mm, configured " +
-                format_number(t.configured) + " mm";
+      failed += (failed.empty() ? "" : "; ") + t.feature + " measures " + format_value_limit(t.min, t.configured, Allowed::near).value +
+                " mm, configured " + format_value_limit(t.min, t.configured, Allowed::near).limit + " mm";
   if (!out.report.all_chambers_fed)
     failed += (failed.empty() ? "" : "; ") + std::to_string(out.report.closed_cavities) + " closed cavities (no inlet)";
   if (!failed.empty()) throw FeatureFailure("design checks of the cooling passages failed: " + failed);

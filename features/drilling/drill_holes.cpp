@@ -296,9 +296,11 @@ void check_drilled_hole(DrilledHole& dh, const HolePlan& p, const HoleShape& s, 
   const auto agrees = [&] { return std::abs(dh.volume - dh.independent_volume) <= allowed && dh.closure <= allowed; };
   // The fixed rule first (fast); before a disagreement counts, BRepGProp's adaptive rule at 1e-9.
   if (!agrees()) measure(true);
-  if (!agrees())
-    f = "hole '" + dh.name + "': removed volume " + format_number(dh.volume) + " mm^3 by its faces, " +
-        format_number(dh.independent_volume) + " mm^3 by quadrature, closure " + format_number(dh.closure);
+  if (!agrees()) {
+    const ValueLimitText t = format_value_limit(dh.volume, dh.independent_volume, Allowed::near);
+    f = "hole '" + dh.name + "': removed volume " + t.value + " mm^3 by its faces, " + t.limit + " mm^3 by quadrature, closure " +
+        format_number(dh.closure);
+  }
   if (!f.empty()) return;
   if (!BRepCheck_Analyzer(s.face).IsValid()) {
     f = "hole '" + dh.name + "': its face fails BRepCheck";
@@ -336,9 +338,11 @@ void check_rebuilt_wall(int face, const Part& part, const Topology& topo, const 
   const double before = face_flux(fi.oriented, c), after = face_flux(nf.Oriented(fi.oriented.Orientation()), c);
   balance = after - before + caps;
   // Tolerance: the integrations' relative accuracy (1e-9 each, x10) plus 1e-6 of the caps.
-  if (!(std::abs(after - before + caps) <= 1e-8 * (std::abs(before) + std::abs(after)) + 1e-6 * cap_sum_abs + 1e-9))
-    f = "face '" + fi.name + "': integral with holes " + format_number(after) + " != without " + format_number(before) +
-        " - caps " + std::to_string(caps);
+  if (!(std::abs(after - before + caps) <= 1e-8 * (std::abs(before) + std::abs(after)) + 1e-6 * cap_sum_abs + 1e-9)) {
+    const ValueLimitText t = format_value_limit(after, before - caps, Allowed::near);
+    f = "face '" + fi.name + "': integral with holes " + t.value + " != without " + format_number(before) + " - caps " +
+        format_number(caps) + " = " + t.limit;
+  }
 }
 
 // 4. Local checks (parallel): per hole, volume by the divergence theorem over its faces against the

@@ -87,8 +87,8 @@ FilmCoolingResult build_film_cooling(const blade::BladeModel& model, const brep:
     const InsertMeasure& m = inserts[i].measure;
     const double tol = 5e-3;
     if (m.measured_gap < m.gap - tol)
-      throw FeatureFailure(m.name + ": the gap to the blade measures " + format_number(m.measured_gap) +
-                           " mm on the built solids, configured " + format_number(m.gap) + " mm");
+      throw FeatureFailure(m.name + ": the gap to the blade measures " + format_value_limit(m.measured_gap, m.gap, Allowed::near).value +
+                           " mm on the built solids, configured " + format_value_limit(m.measured_gap, m.gap, Allowed::near).limit + " mm");
     if (std::abs(m.measured_sheet_min - m.sheet_thickness) > tol || std::abs(m.measured_sheet_max - m.sheet_thickness) > tol)
       throw FeatureFailure(m.name + ": the sheet measures " + format_number(m.measured_sheet_min) + " to " +
                            format_number(m.measured_sheet_max) + " mm on the built solid, configured " +

@@ -81,9 +81,11 @@ FilmHoleTools make_film_hole_tools(const HoleTarget& target, const std::vector<H
     const HoleSpec& a = holes[i];
     const HoleSpec& b = *other;
     const HoleSpec& later = static_cast<std::size_t>(other - holes.begin()) > i ? b : a;
-    const std::string what = "ligament between " + a.name + " and " + b.name + " is " + format_number(out.ligament[i]) +
-                             " mm (least metal between the holes, a lower bound), below film_limits.min_ligament = " +
-                             format_number(limits.min_ligament) + " mm";
+    const ValueLimitText t = format_value_limit(out.ligament[i], limits.min_ligament, Allowed::above);
+    const std::string what = (out.ligament[i] < 0 ? a.name + " and " + b.name + " overlap by " + format_number(-out.ligament[i]) + " mm"
+                                                  : "ligament between " + a.name + " and " + b.name + " is " + t.value +
+                                                        " mm (least metal between the holes, a lower bound)") +
+                             ", the ligament must be at least film_limits.min_ligament = " + t.limit + " mm";
     if (a.row == b.row) throw FilmInputError(later.field + later.spacing_field, "pitch too small: " + what);
     throw FilmInputError(later.field + later.position_field, "overlapping rows " + a.row + " and " + b.row + ": " + what);
   }

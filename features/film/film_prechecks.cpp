@@ -42,11 +42,14 @@ void check_count_and_ligaments(const FilmCoolingDefinition& def, const std::vect
   }
   for (const HoleSpec& h : holes) {
     const double metal = h.pitch - h.shape.diameter;
-    if (h.pitch > 0 && metal < def.limits.min_ligament)
+    if (h.pitch > 0 && metal < def.limits.min_ligament) {
+      const ValueLimitText t = format_value_limit(metal, def.limits.min_ligament, Allowed::above);
       throw FilmInputError(h.field + h.spacing_field,
                            h.row + ": holes of " + format_number(h.shape.diameter) + " mm at a pitch of " + format_number(h.pitch) +
-                               " mm leave at most " + format_number(metal) + " mm of metal between neighbours, less than "
-                               "film_limits.min_ligament = " + format_number(def.limits.min_ligament) + " mm");
+                               (metal < 0 ? " mm overlap by " + format_number(-metal) + " mm"
+                                          : " mm leave at most " + t.value + " mm of metal between neighbours") +
+                               ", the ligament must be at least film_limits.min_ligament = " + t.limit + " mm");
+    }
   }
 }
 
@@ -88,11 +91,13 @@ void check_rows_apart(const blade::BladeCoordinates& coords, const CoreDefinitio
       if ((a.frame.exit - b.frame.exit).norm() > depth[i] + depth[j] + D + def.limits.min_ligament) continue;
       const double d = segment_distance(a.frame.exit, a.frame.exit + depth[i] * a.frame.axis, b.frame.exit,
                                         b.frame.exit + depth[j] * b.frame.axis);
-      if (d - D < def.limits.min_ligament)
+      if (d - D < def.limits.min_ligament) {
+        const ValueLimitText t = format_value_limit(d - D, def.limits.min_ligament, Allowed::above);
         throw FilmInputError(b.field + b.position_field,
-                             "overlapping rows " + a.row + " and " + b.row + ": " + a.name + " and " + b.name + " leave at most " +
-                                 format_number(d - D) + " mm of metal between them, below film_limits.min_ligament = " +
-                                 format_number(def.limits.min_ligament) + " mm");
+                             "overlapping rows " + a.row + " and " + b.row + ": " + a.name + " and " + b.name +
+                                 (d < D ? " overlap by " + format_number(D - d) + " mm" : " leave at most " + t.value + " mm of metal between them") +
+                                 ", the ligament must be at least film_limits.min_ligament = " + t.limit + " mm");
+      }
     }
 }
 

@@ -88,8 +88,10 @@ std::vector<double> hole_positions(double len, double pitch, int count, double s
 
 void check_span_range(double s0, double s1, const std::string& field) {
   if (!(s0 >= 0 && s0 < 1)) throw FilmInputError(field + ".span_start", "span_start " + format_number(s0) + " is outside the blade's span range [0, 1)");
-  if (!(s1 > s0 && s1 <= 1))
-    throw FilmInputError(field + ".span_end", "span_end " + format_number(s1) + " must lie in (span_start, 1] = (" + format_number(s0) + ", 1]");
+  if (!(s1 > s0 && s1 <= 1)) {
+    const ValueRangeText t = format_value_range(s1, s0, 1);
+    throw FilmInputError(field + ".span_end", "span_end " + t.value + " must lie in (span_start, 1] = (" + t.lo + ", 1]");
+  }
 }
 
 }  // namespace
@@ -119,10 +121,10 @@ std::vector<HoleSpec> place_row(const blade::BladeCoordinates& coords, RowPositi
   const double D = row.shape.diameter;
   if ((row.count > 0) == (row.pitch_d > 0)) throw FilmInputError(field, "give exactly one of count and pitch_d");
   if (row.pitch_d > 0 && row.pitch_d < 1)
-    throw FilmInputError(field + ".pitch_d", "pitch " + format_number(row.pitch_d) + " D is below the diameter: holes would overlap");
+    throw FilmInputError(field + ".pitch_d", "pitch " + format_value_limit(row.pitch_d, 1, Allowed::above).value + " D is below the diameter: holes would overlap");
   const RowPosition& at = row.position;
   if (at.kind == RowPosition::Kind::Chord && !(std::abs(at.value) < 1))
-    throw FilmInputError(field + ".chord", "chord " + format_number(at.value) + " must lie in (-1, 1)");
+    throw FilmInputError(field + ".chord", "chord " + format_value_range(at.value, -1, 1).value + " must lie in (-1, 1)");
   RowCurve rc;
   try {
     rc = row_curve(coords, positioner, at, row.span_start, row.span_end);
@@ -130,9 +132,11 @@ std::vector<HoleSpec> place_row(const blade::BladeCoordinates& coords, RowPositi
     throw FilmInputError(field + ".arc_length", e.what());
   }
   const double pitch = row.count > 0 ? rc.length() / row.count : row.pitch_d * D;
-  if (pitch < D)
-    throw FilmInputError(field + ".count", format_number(row.count) + " holes over the row's " + format_number(rc.length()) + " mm give a pitch of " +
-                                               format_number(pitch) + " mm, below the diameter " + format_number(D) + " mm");
+  if (pitch < D) {
+    const ValueLimitText t = format_value_limit(pitch, D, Allowed::above);
+    throw FilmInputError(field + ".count", std::to_string(row.count) + " holes over the row's " + format_number(rc.length()) + " mm give a pitch of " +
+                                               t.value + " mm, below the diameter " + t.limit + " mm");
+  }
   const std::string name = "film_row_" + std::to_string(row_number);
   std::vector<HoleSpec> holes;
   const std::vector<double> xs = hole_positions(rc.length(), pitch, row.count, row.stagger);
@@ -162,9 +166,9 @@ std::vector<HoleSpec> place_row(const blade::BladeCoordinates& coords, RowPositi
 std::vector<HoleSpec> place_showerhead(const blade::BladeCoordinates& coords, RowPositioner& positioner,
                                        const ShowerheadDefinition& sh, const std::string& field) {
   check_span_range(sh.span_start, sh.span_end, field);
-  if (sh.pitch_d < 1) throw FilmInputError(field + ".pitch_d", "pitch " + format_number(sh.pitch_d) + " D is below the diameter");
+  if (sh.pitch_d < 1) throw FilmInputError(field + ".pitch_d", "pitch " + format_value_limit(sh.pitch_d, 1, Allowed::above).value + " D is below the diameter");
   if (sh.row_spacing_d < 1)
-    throw FilmInputError(field + ".row_spacing_d", "row spacing " + format_number(sh.row_spacing_d) + " D is below the diameter: rows would overlap");
+    throw FilmInputError(field + ".row_spacing_d", "row spacing " + format_value_limit(sh.row_spacing_d, 1, Allowed::above).value + " D is below the diameter: rows would overlap");
   std::vector<HoleSpec> holes;
   const double D = sh.diameter;
   for (int k = 1; k <= sh.rows; ++k) {

@@ -203,9 +203,10 @@ void HoleAnalyser::Impl::Analysis::diffuser() {
     if (ld >= g.length)
       fail(h, dsub, "larger than the wall allows: its diffuser (" + format_number(ld) + " mm along the axis) is longer than the "
                     "hole through the wall (" + format_number(g.length) + " mm at inclination " + format_number(g.inclination_deg) + " deg)");
-    if (h.shape.fan.edge_radius_d * D > max_edge_radius(h.shape, ld))
-      fail(h, ".fan.edge_radius_d", "edge radius " + format_number(h.shape.fan.edge_radius_d * D) + " mm exceeds the largest the "
-                                "diffuser allows, " + format_number(max_edge_radius(h.shape, ld)) + " mm");
+    if (h.shape.fan.edge_radius_d * D > max_edge_radius(h.shape, ld)) {
+      const ValueLimitText t = format_value_limit(h.shape.fan.edge_radius_d * D, max_edge_radius(h.shape, ld), Allowed::below);
+      fail(h, ".fan.edge_radius_d", "edge radius " + t.value + " mm exceeds the largest the diffuser allows, " + t.limit + " mm");
+    }
     prof = std::make_unique<FanProfile>(h.shape, ld);
     sd = ld;
     g.diffuser_length = ld;
@@ -375,9 +376,11 @@ void HoleAnalyser::Impl::Analysis::tool_extent() {
     reach = std::max(reach, s_end_rim[q] - rim_si[q]);
     end_rim[q] += (s_out + s_end_rim[q]) * d;
   }
-  if (reach > chamber->reach)
-    fail(h, h.position_field, "its tool would reach " + format_number(reach) + " mm into " + chamber->name + ", which allows " +
-                             format_number(chamber->reach) + " mm (an insert lies behind the gap)");
+  if (reach > chamber->reach) {
+    const ValueLimitText t = format_value_limit(reach, chamber->reach, Allowed::below);
+    fail(h, h.position_field, "its tool would reach " + t.value + " mm into " + chamber->name + ", which allows " + t.limit +
+                             " mm (an insert lies behind the gap)");
+  }
 }
 
 // Chamber of the whole inlet, obstacles.
@@ -395,9 +398,12 @@ void HoleAnalyser::Impl::Analysis::inlet_and_obstacles() {
     double touch = lig;
     for (const Eigen::Vector3d& p : end_rim) touch = std::min(touch, ob.distance(p));
     if (ob.needs_ligament) {
-      if (lig < limits.min_ligament)
-        fail(h, ob.field.empty() ? h.position_field : ob.field, "comes " + format_number(lig) + " mm close to " + ob.name + " where it enters the cavity; the ligament "
-                             "must be at least film_limits.min_ligament = " + format_number(limits.min_ligament) + " mm");
+      if (lig < limits.min_ligament) {
+        const ValueLimitText t = format_value_limit(lig, limits.min_ligament, Allowed::above);
+        fail(h, ob.field.empty() ? h.position_field : ob.field,
+             (lig < 0 ? "overlaps " + ob.name + " by " + format_number(-lig) + " mm" : "comes " + t.value + " mm close to " + ob.name) +
+                 " where it enters the cavity; the ligament must be at least film_limits.min_ligament = " + t.limit + " mm");
+      }
       if (lig < g.obstacle_ligament) g.obstacle_ligament = lig, g.nearest_obstacle = ob.name;
     }
     if (touch <= 0) fail(h, ob.field.empty() ? h.position_field : ob.field, "its tool would cut " + ob.name);

@@ -26,7 +26,7 @@ FanProfile::FanProfile(const HoleShape& shape, double diffuser_length)
   require(shape.kind == HoleKind::FanShaped, "FanProfile: not a fan-shaped hole");
   require(ld_ > 0, "fan-shaped hole: the diffuser length must be > 0");
   require(re_ > 0 && re_ <= max_edge_radius(shape, ld_) * (1 + 1e-12),
-          "fan-shaped hole: edge radius must be in (0, " + format_number(max_edge_radius(shape, ld_)) + "] mm");
+          "fan-shaped hole: edge radius must be in (0, " + format_limit(max_edge_radius(shape, ld_), Allowed::below) + "] mm");
 }
 
 FanSection FanProfile::at(double t) const {

@@ -93,9 +93,11 @@ void check_insert_input(const InsertChamber& chamber, const InsertDefinition& de
                                                  "'s wall is tabulated)");
   if (!chamber.refusal.empty()) throw FilmInputError(field + ".chamber", name + ": " + chamber.refusal);
   if (!(Z > 0)) throw FilmInputError(field + ".gap", name + ": the gap must be > 0");
-  if (Z < chamber.min_gap)
-    throw FilmInputError(field + ".gap", name + ": the gap " + format_number(Z) + " mm is below " + chamber.min_gap_reason + " (" +
-                                             format_number(chamber.min_gap) + " mm): the gap in the corners would fall below Z");
+  if (Z < chamber.min_gap) {
+    const ValueLimitText t = format_value_limit(Z, chamber.min_gap, Allowed::above);
+    throw FilmInputError(field + ".gap", name + ": the gap " + t.value + " mm is below " + chamber.min_gap_reason + " (" + t.limit +
+                                             " mm): the gap in the corners would fall below Z");
+  }
   if (!(def.sheet_thickness > 0)) throw FilmInputError(field + ".sheet_thickness", name + ": the sheet thickness must be > 0");
   if (def.jet_spacing_x_d < 2) throw FilmInputError(field + ".jets.spacing_x_d", name + ": x/D must be >= 2");
   if (def.jet_spacing_y_d < 2) throw FilmInputError(field + ".jets.spacing_y_d", name + ": y/D must be >= 2");

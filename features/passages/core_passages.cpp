@@ -112,16 +112,17 @@ void check_definition(const CoreDefinition& def) {
   const std::size_t n = def.ribs.size();
   for (std::size_t i = 0; i < n; ++i) {
     const RibDefinition& r = def.ribs[i];
-    if (i > 0 && !(r.suction_chord > def.ribs[i - 1].suction_chord))
-      throw PassageInputError(rib_field(i, "suction_chord"),
-                              "ribs must be listed from the LE to the TE: must be > " +
-                                  format_number(def.ribs[i - 1].suction_chord) + " (ribs[" + std::to_string(i - 1) + "]), got " +
-                                  format_number(r.suction_chord));
-    if (i > 0 && !(r.pressure_chord < def.ribs[i - 1].pressure_chord))
-      throw PassageInputError(rib_field(i, "pressure_chord"),
-                              "ribs must be listed from the LE to the TE: must be < " +
-                                  format_number(def.ribs[i - 1].pressure_chord) + " (ribs[" + std::to_string(i - 1) +
-                                  "], pressure-side chords are negative), got " + format_number(r.pressure_chord));
+    if (i > 0 && !(r.suction_chord > def.ribs[i - 1].suction_chord)) {
+      const ValueLimitText t = format_value_limit(r.suction_chord, def.ribs[i - 1].suction_chord, Allowed::above);
+      throw PassageInputError(rib_field(i, "suction_chord"), "ribs must be listed from the LE to the TE: must be > " + t.limit +
+                                                                 " (ribs[" + std::to_string(i - 1) + "]), got " + t.value);
+    }
+    if (i > 0 && !(r.pressure_chord < def.ribs[i - 1].pressure_chord)) {
+      const ValueLimitText t = format_value_limit(r.pressure_chord, def.ribs[i - 1].pressure_chord, Allowed::below);
+      throw PassageInputError(rib_field(i, "pressure_chord"), "ribs must be listed from the LE to the TE: must be < " + t.limit +
+                                                                  " (ribs[" + std::to_string(i - 1) +
+                                                                  "], pressure-side chords are negative), got " + t.value);
+    }
     if (r.turnaround) {
       const TurnaroundDefinition& t = *r.turnaround;
       const bool open = t.end == SpanEnd::Tip ? def.tip_cap.open : def.hub_floor.open;
@@ -130,10 +131,10 @@ void check_definition(const CoreDefinition& def) {
                                 std::string("a turnaround needs an end wall, but the ") +
                                     (t.end == SpanEnd::Tip ? "tip (core.tip_cap.open)" : "hub (core.hub_floor.open)") +
                                     " is open");
-      if (t.tip_radius > 0.5 * r.thickness * (1 + 1e-12))
-        throw PassageInputError(rib_field(i, "turnaround.tip_radius"),
-                                "must be in (0, thickness / 2 = " + format_number(0.5 * r.thickness) + "] mm, got " +
-                                    format_number(t.tip_radius));
+      if (t.tip_radius > 0.5 * r.thickness * (1 + 1e-12)) {
+        const ValueLimitText v = format_value_limit(t.tip_radius, 0.5 * r.thickness, Allowed::below);
+        throw PassageInputError(rib_field(i, "turnaround.tip_radius"), "must be in (0, thickness / 2 = " + v.limit + "] mm, got " + v.value);
+      }
     }
   }
   const int chambers = static_cast<int>(n) + 1;
@@ -193,11 +194,13 @@ void check_rib_placement(const blade::BladeCoordinates& coords, const CoreDefini
       // fillet radius cannot take the fillets.
       const double length = (blade::inner_wall_point(coords, def.wall_thickness, s, r.suction_chord) -
                              blade::inner_wall_point(coords, def.wall_thickness, s, r.pressure_chord)).norm();
-      if (r.fillet_radius > 0 && length < r.fillet_radius)
+      if (r.fillet_radius > 0 && length < r.fillet_radius) {
+        const ValueLimitText t = format_value_limit(r.fillet_radius, length, Allowed::below);
         throw PassageInputError(rib_field(i, "fillet_radius"),
-                                "rib " + std::to_string(i + 1) + " is " + format_number(length) + " mm long between the walls at span " +
-                                    format_number(s) + ", too short for fillets of radius " + format_number(r.fillet_radius) +
-                                    " mm at both of its ends: must be < " + format_number(length) + " mm");
+                                "rib " + std::to_string(i + 1) + " is " + t.limit + " mm long between the walls at span " +
+                                    format_number(s) + ", too short for fillets of radius " + t.value +
+                                    " mm at both of its ends: must be < " + t.limit + " mm");
+      }
       const double reach = 0.5 * r.thickness + r.fillet_radius + 0.1;  // mm the rib needs beyond its chord
       if (r.suction_chord + reach / ls >= cr.suction_chord)
         throw PassageInputError(rib_field(i, "suction_chord"),
@@ -223,12 +226,15 @@ void check_rib_placement(const blade::BladeCoordinates& coords, const CoreDefini
                               blade::inner_wall_point(coords, def.wall_thickness, s, q.pressure_chord)).norm() -
                              0.5 * (r.thickness + q.thickness);
       const bool ss = clear_s < need;
-      if (ss || clear_p < need)
+      if (ss || clear_p < need) {
+        const double clear = ss ? clear_s : clear_p;
+        const ValueLimitText t = format_value_limit(clear, need, Allowed::above);
         throw PassageInputError(rib_field(i, ss ? "suction_chord" : "pressure_chord"),
                                 "ribs " + std::to_string(i) + " and " + std::to_string(i + 1) + " overlap or are closer "
-                                "than their thickness on the " + (ss ? "suction" : "pressure") + " side at span " +
-                                    format_number(s) + ": clear width " + format_number(ss ? clear_s : clear_p) + " mm, at least " + format_number(need) +
-                                    " mm needed");
+                                "than their thickness on the " + (ss ? "suction" : "pressure") + " side at span " + format_number(s) +
+                                    (clear < 0 ? ": they overlap by " + format_number(-clear) + " mm" : ": clear width " + t.value + " mm") +
+                                    ", at least " + t.limit + " mm needed");
+      }
       // The fillets of both ribs on one wall take about their radii of the clear width (at least half).
       const double fillets = 0.5 * (r.fillet_radius + q.fillet_radius), clear = std::min(clear_s, clear_p);
       if (fillets > 0 && clear < fillets) {
@@ -315,12 +321,13 @@ void check_inlet_sizes(const blade::BladeCoordinates& coords, const CoreDefiniti
     const ChamberInfo& c = chambers[static_cast<std::size_t>(in.chamber - 1)];
     const double span = in.end == SpanEnd::Hub ? 0.0 : 1.0;
     const double width = std::max(chamber_width(coords, def, c, span), chamber_width(coords, def, c, in.end == SpanEnd::Hub ? 0.1 : 0.9));
-    if (in.diameter > width)
+    if (in.diameter > width) {
+      const ValueLimitText t = format_value_limit(in.diameter, width, Allowed::below);
       throw PassageInputError("core.inlets[" + std::to_string(m) + "].diameter",
-                              "inlet_" + std::to_string(m + 1) + " of " + format_number(in.diameter) + " mm is wider than chamber_" +
+                              "inlet_" + std::to_string(m + 1) + " of " + t.value + " mm is wider than chamber_" +
                                   std::to_string(in.chamber) + " at its " + (in.end == SpanEnd::Hub ? "hub" : "tip") +
-                                  " end (at most " + format_number(width) + " mm across between its ribs' centre lines): must be < " +
-                                  format_number(width) + " mm");
+                                  " end (at most " + t.limit + " mm across between its ribs' centre lines): must be < " + t.limit + " mm");
+    }
   }
 }
 

@@ -120,8 +120,8 @@ brep::NamedShape apply_passage_tools(const brep::NamedShape& part, const std::ve
       tr.passed = ok;
       report.voids.push_back(tr);
       if (!ok)
-        throw FeatureFailure(t.feature + ": as a void it removes " + format_number(r.removed) + " mm^3, expected " +
-                             format_number(t.expected_volume) + " mm^3");
+        throw FeatureFailure(t.feature + ": as a void it removes " + format_value_limit(r.removed, t.expected_volume, Allowed::near).value +
+                             " mm^3, expected " + format_value_limit(r.removed, t.expected_volume, Allowed::near).limit + " mm^3");
     }
     current.shape = result;
     for (const FeatureTool& t : interior)

@@ -341,8 +341,8 @@ RibTube build_rib_tube(const blade::BladeCoordinates& coords, const blade::Thick
     const TurnaroundDefinition& t = *rib.turnaround;
     require(t.gap > 0, who + ": turnaround gap must be > 0 mm");
     require(t.tip_radius > 0 && t.tip_radius <= 0.5 * rib.thickness * (1 + 1e-12),
-            who + ": tip radius must be in (0, thickness / 2 = " + format_number(0.5 * rib.thickness) + "] mm, got " +
-                format_number(t.tip_radius));
+            who + ": tip radius must be in (0, thickness / 2 = " + format_limit(0.5 * rib.thickness, Allowed::below) + "] mm, got " +
+                format_value_limit(t.tip_radius, 0.5 * rib.thickness, Allowed::below).value);
     EndSpec& e = t.end == SpanEnd::Tip ? tip : hub;
     e.kind = EndKind::Turnaround;
     e.radius = std::min(t.tip_radius, 0.5 * rib.thickness);

@@ -167,6 +167,9 @@ Inlet inlet_station(WallLines& lines, const TeFrame& f, double x_from, double y0
   return {};
 }
 
+// The width of a slot that the lands' taper closed, without a negative width: "the lands overlap by 0.2 mm".
+std::string closed_width(double w) { return w < 0 ? "the lands overlap by " + format_number(-w) + " mm" : "width 0 mm"; }
+
 // A tapered centreline slot: still open where it leaves the blade (w_out > 0 at the tool's end, 1 mm past
 // the TE) and apart from its neighbours at the inlet, where it is widest (w_in < pitch).
 void check_centreline_widths(const TrailingEdgeDefinition& te, const std::string& name, double s, double pitch,
@@ -174,15 +177,15 @@ void check_centreline_widths(const TrailingEdgeDefinition& te, const std::string
   const double w = te.slot_width;
   if (!(w_out > 0))
     throw PassageInputError(field("land_taper_deg"), name + ": the lands' taper closes the slot before it leaves the "
-                                                             "blade at span " + format_number(s) + " (width " + format_number(w_out) +
-                                                             " mm there); must be < " +
-                                                             format_number(std::atan(w / (2 * x_out)) * 180 / kPi) + " deg here");
+                                                             "blade at span " + format_number(s) + " (" + closed_width(w_out) +
+                                                             " there); must be < " +
+                                                             format_limit(std::atan(w / (2 * x_out)) * 180 / kPi, Allowed::below) + " deg here");
   if (count > 1 && !(w_in < pitch - 0.05))
     throw PassageInputError(field("land_taper_deg"),
                             name + ": with the taper the slots' inlets in the chamber (" + format_number(-x_in) +
                                 " mm upstream of the crease, " + format_number(w_in) + " mm wide) touch their neighbours at span " +
                                 format_number(s) + "; must be < " +
-                                format_number(std::atan((pitch - 0.05 - w) / (2 * -x_in)) * 180 / kPi) + " deg here");
+                                format_limit(std::atan((pitch - 0.05 - w) / (2 * -x_in)) * 180 / kPi, Allowed::below) + " deg here");
 }
 
 }  // namespace
@@ -192,44 +195,49 @@ void check_trailing_edge_definition(const CoreDefinition& def) {
   const TrailingEdgeDefinition& te = *def.trailing_edge;
   auto in_range = [](double v, double lo, double hi, const std::string& name, const char* unit) {
     if (!(v > lo && v <= hi))
-      throw PassageInputError(field(name), "must be in (" + format_number(lo) + ", " + format_number(hi) + "] " + unit + ", got " + format_number(v));
+      throw PassageInputError(field(name), "must be in (" + format_limit(lo, Allowed::above) + ", " + format_limit(hi, Allowed::below) + "] " +
+                                               unit + ", got " + format_value_range(v, lo, hi).value);
   };
   in_range(te.slot_height, 0, 10, "slot_height", "mm");
   in_range(te.slot_width, 0, 50, "slot_width", "mm");
   if (te.pitch > 0) {
-    if (!(te.pitch > te.slot_width))
-      throw PassageInputError(field("pitch"), "slot pitch must be > slot_width = " + format_number(te.slot_width) +
-                                                  " mm (the lands between the slots need width), got " + format_number(te.pitch));
+    if (!(te.pitch > te.slot_width)) {
+      const ValueLimitText t = format_value_limit(te.pitch, te.slot_width, Allowed::above);
+      throw PassageInputError(field("pitch"), "slot pitch must be > slot_width = " + t.limit +
+                                                  " mm (the lands between the slots need width), got " + t.value);
+    }
   } else if (te.count < 1) {
     throw PassageInputError(field("count"), "give the slot pitch or a count >= 1");
   }
   if (!(te.span_margin >= 0 && te.span_margin <= 50))
-    throw PassageInputError(field("span_margin"), "must be in [0, 50] mm, got " + format_number(te.span_margin));
+    throw PassageInputError(field("span_margin"), "must be in [0, 50] mm, got " + format_value_range(te.span_margin, 0, 50).value);
   if (!(te.land_taper_deg >= 0 && te.land_taper_deg < 45))
-    throw PassageInputError(field("land_taper_deg"), "must be in [0, 45) deg, got " + format_number(te.land_taper_deg));
+    throw PassageInputError(field("land_taper_deg"), "must be in [0, 45) deg, got " + format_value_range(te.land_taper_deg, 0, 45).value);
   if (te.type == TrailingEdgeType::PressureSideCutback) {
     in_range(te.lip_thickness, 0, 10, "lip_thickness", "mm");
     in_range(te.cutback_length, 0, 50, "cutback_length", "mm");
     const double w_te = te.slot_width - 2 * (te.cutback_length + 1.0) * std::tan(te.land_taper_deg * kPi / 180);
     if (!(w_te > 0))
       throw PassageInputError(field("land_taper_deg"),
-                              "the lands' taper closes the slots before the TE (slot width there " + format_number(w_te) +
-                                  " mm): must be < " +
-                                  format_number(std::atan(te.slot_width / (2 * (te.cutback_length + 1.0))) * 180 / kPi) + " deg");
+                              "the lands' taper closes the slots before the TE (" + closed_width(w_te) + " there): must be < " +
+                                  format_limit(std::atan(te.slot_width / (2 * (te.cutback_length + 1.0))) * 180 / kPi, Allowed::below) +
+                                  " deg");
   }
   if (te.pin_fins) {
     const PinFinDefinition& p = *te.pin_fins;
     in_range(p.diameter, 0, 10, "pin_fins.diameter", "mm");
-    if (!(p.spanwise_pitch > p.diameter))
-      throw PassageInputError(field("pin_fins.spanwise_pitch"), "must be > diameter = " + format_number(p.diameter) + " mm, got " +
-                                                                    format_number(p.spanwise_pitch));
-    if (!(p.streamwise_pitch > p.diameter))
-      throw PassageInputError(field("pin_fins.streamwise_pitch"), "must be > diameter = " + format_number(p.diameter) +
-                                                                      " mm, got " + format_number(p.streamwise_pitch));
+    if (!(p.spanwise_pitch > p.diameter)) {
+      const ValueLimitText t = format_value_limit(p.spanwise_pitch, p.diameter, Allowed::above);
+      throw PassageInputError(field("pin_fins.spanwise_pitch"), "must be > diameter = " + t.limit + " mm, got " + t.value);
+    }
+    if (!(p.streamwise_pitch > p.diameter)) {
+      const ValueLimitText t = format_value_limit(p.streamwise_pitch, p.diameter, Allowed::above);
+      throw PassageInputError(field("pin_fins.streamwise_pitch"), "must be > diameter = " + t.limit + " mm, got " + t.value);
+    }
     if (p.rows < 1 || p.rows > 20)
       throw PassageInputError(field("pin_fins.rows"), "must be in [1, 20], got " + std::to_string(p.rows));
     if (!(p.slot_gap >= 0 && p.slot_gap <= 20))
-      throw PassageInputError(field("pin_fins.slot_gap"), "must be in [0, 20] mm, got " + format_number(p.slot_gap));
+      throw PassageInputError(field("pin_fins.slot_gap"), "must be in [0, 20] mm, got " + format_value_range(p.slot_gap, 0, 20).value);
   }
 }
 
@@ -260,12 +268,13 @@ SlotLayout slot_layout(const blade::BladeModel& model, const blade::BladeCoordin
     count = static_cast<int>(std::floor((hi - lo) / out.pitch + 1e-9)) + 1;
   } else {
     out.pitch = count > 1 ? (hi - lo) / (count - 1) : 0.0;
-    if (count > 1 && !(out.pitch > te.slot_width))
-      throw PassageInputError(field("count"), std::to_string(count) + " slots give a pitch of " + format_number(out.pitch) +
-                                                  " mm, not more than slot_width " + format_number(te.slot_width) +
-                                                  " mm: at most " +
+    if (count > 1 && !(out.pitch > te.slot_width)) {
+      const ValueLimitText t = format_value_limit(out.pitch, te.slot_width, Allowed::above);
+      throw PassageInputError(field("count"), std::to_string(count) + " slots give a pitch of " + t.value +
+                                                  " mm, not more than slot_width " + t.limit + " mm: at most " +
                                                   std::to_string(static_cast<int>(std::floor((hi - lo) / te.slot_width))) +
                                                   " slots fit");
+    }
   }
   for (double yc : centred(lo, hi, out.pitch, count)) out.spans.push_back(line.span_at(yc));
   return out;
@@ -273,10 +282,11 @@ SlotLayout slot_layout(const blade::BladeModel& model, const blade::BladeCoordin
 
 // A cutback's lip must lie downstream of the last chamber's end (0.1 mm clear).
 void check_lip(const TrailingEdgeDefinition& te, const TeFrame& f, double s) {
-  if (!(f.te_x - te.cutback_length > f.crease_x + 0.1))
-    throw PassageInputError(field("cutback_length"),
-                            "must be < " + format_number(f.te_x - f.crease_x - 0.1) + " mm at span " + format_number(s) +
-                                " (the lip must lie downstream of the last chamber's end), got " + format_number(te.cutback_length));
+  if (!(f.te_x - te.cutback_length > f.crease_x + 0.1)) {
+    const ValueLimitText t = format_value_limit(te.cutback_length, f.te_x - f.crease_x - 0.1, Allowed::below);
+    throw PassageInputError(field("cutback_length"), "must be < " + t.limit + " mm at span " + format_number(s) +
+                                                         " (the lip must lie downstream of the last chamber's end), got " + t.value);
+  }
 }
 
 }  // namespace
@@ -331,11 +341,14 @@ void place_slot(const TrailingEdgeDefinition& te, bool cutback, WallLines& lines
     for (int k = 0; k <= 8; ++k) {
       const double x = info.x_lip + (f.te_x - 1.0 - info.x_lip) * k / 8.0;
       const Across c = across(lines, f, x, 0.0, true);
-      if (!c.ok || info.floor_y - c.lo < 0.1)
+      const double left = c.ok ? info.floor_y - c.lo : 0.0;
+      if (!c.ok || left < 0.1)
         throw PassageInputError(field("slot_height"),
-                                name + ": slot_height + lip_thickness leave " + format_number(c.ok ? info.floor_y - c.lo : 0.0) +
-                                    " mm of suction-side wall under the cutback at span " + format_number(s) +
-                                    " (at least 0.1 mm); must be <= " + format_number(b.hi - b.lo - 0.1) + " mm together here");
+                                name + ": slot_height + lip_thickness " +
+                                    (left < 0 ? "reach " + format_number(-left) + " mm past the suction-side wall"
+                                              : "leave " + format_number(left) + " mm of suction-side wall") +
+                                    " under the cutback at span " + format_number(s) + " (at least 0.1 mm must be left); must be <= " +
+                                    format_limit(b.hi - b.lo - 0.1, Allowed::below) + " mm together here");
     }
     check_floor_off_the_tip(te, lines, f, s, info);
   } else {
@@ -351,11 +364,12 @@ void place_slot(const TrailingEdgeDefinition& te, bool cutback, WallLines& lines
       if (!c.ok) throw FeatureFailure(name + ": cannot find the blade's walls across the slot");
       h_max = std::min(h_max, 2 * (std::min(-c.lo, c.hi) - 0.1));
     }
-    if (!(te.slot_height <= h_max))
+    if (!(te.slot_height <= h_max)) {
+      const ValueLimitText t = format_value_limit(te.slot_height, std::max(h_max, 0.0), Allowed::below);
       throw PassageInputError(field("slot_height"), name + ": the slot leaves less than 0.1 mm of wall on a side between "
                                                            "the chamber's end and the TE at span " + format_number(s) +
-                                                           "; must be <= " + format_number(std::max(h_max, 0.0)) +
-                                                           " mm here, got " + format_number(te.slot_height));
+                                                           "; must be <= " + t.limit + " mm here, got " + t.value);
+    }
   }
 }
 

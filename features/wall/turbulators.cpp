@@ -2,6 +2,7 @@
 
 #include <Eigen/Dense>
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 
 #include "features/wall/ruled_block.hpp"
@@ -80,22 +81,25 @@ void check_turbulator_definitions(const CoreDefinition& def) {
     seen[static_cast<std::size_t>(t.chamber)] = true;
     auto positive = [&](double v, const char* name, double hi) {
       if (!(v > 0 && v <= hi))
-        throw PassageInputError(field(i, name), "must be in (0, " + format_number(hi) + "] mm, got " + format_number(v));
+        throw PassageInputError(field(i, name), "must be in (0, " + format_limit(hi, Allowed::below) + "] mm, got " +
+                                                    format_value_range(v, 0, hi).value);
     };
     positive(t.height, "height", 5);
     positive(t.width, "width", 10);
     positive(t.pitch, "pitch", 100);
     if (!(t.angle_deg >= 30 && t.angle_deg <= 90))
-      throw PassageInputError(field(i, "angle_deg"), "must be in [30, 90] deg, got " + format_number(t.angle_deg));
+      throw PassageInputError(field(i, "angle_deg"), "must be in [30, 90] deg, got " + format_value_range(t.angle_deg, 30, 90).value);
     if (!(t.end_gap >= 0 && t.end_gap <= 10))
-      throw PassageInputError(field(i, "end_gap"), "must be in [0, 10] mm, got " + format_number(t.end_gap));
+      throw PassageInputError(field(i, "end_gap"), "must be in [0, 10] mm, got " + format_value_range(t.end_gap, 0, 10).value);
     if (!(t.span_margin >= 0 && t.span_margin <= 50))
-      throw PassageInputError(field(i, "span_margin"), "must be in [0, 50] mm, got " + format_number(t.span_margin));
+      throw PassageInputError(field(i, "span_margin"), "must be in [0, 50] mm, got " + format_value_range(t.span_margin, 0, 50).value);
     // Along the passage axis a turbulator covers width / sin(angle): neighbours must not touch.
     const double along = t.width / std::sin(t.angle_deg * kPi / 180);
-    if (!(t.pitch > along))
-      throw PassageInputError(field(i, "pitch"), "must be > width / sin(angle) = " + format_number(along) +
-                                                     " mm (neighbouring turbulators would touch), got " + format_number(t.pitch));
+    if (!(t.pitch > along)) {
+      const ValueLimitText p = format_value_limit(t.pitch, along, Allowed::above);
+      throw PassageInputError(field(i, "pitch"), "must be > width / sin(angle) = " + p.limit +
+                                                     " mm (neighbouring turbulators would touch), got " + p.value);
+    }
   }
 }
 
@@ -202,11 +206,20 @@ WallDevelopment develop_wall(const blade::BladeCoordinates& coords, const CoreDe
   return d;
 }
 
-// Each end lies `clearance` from the rib's mid-surface (distance normal to it, measured on the
-// wall point of the centre line): an inclined rib's foot and its fillet reach further on the acute
-// side, (thickness / 2) / sin(b) + r cot(b / 2) + end_gap, b the acute rib/wall angle. The end's x
-// next to rib r (foot: its wall point), NaN without room.
-double turbulator_end(const WallDevelopment& wd, const RibDefinition& r, const Vec3& foot, double s, double cot_a,
+// Each end keeps its clearance from the rib's mid-surface M(a, s) = A(s) + a (B(s) - A(s)) (rib_geometry.hpp),
+// measured along the mid-surface's normal at the rib's foot on this wall (across x the foot line's span
+// tangent: the foot line is not along the passage axis of the development, e2, where the blade twists or
+// tapers), at both corners of the end (the turbulator is `width` wide, so a rib inclined to its end comes
+// closest at a corner) and at the bottom and the top of the end:
+//  - on the wall, (thickness / 2) / sin(b) + r cot(b / 2) + end_gap, b the acute rib/wall angle: an
+//    inclined rib's foot and its fillet reach further on the acute side;
+//  - at the top, `height` above the wall, where the rib leans over the turbulator on the acute side,
+//    thickness / 2 + the fillet's reach at that height + end_gap.
+// Measured on the centre line only, an end came up to ~0.03 mm into the rib (data/repro/
+// turbulator_volume_mismatch.json: the fuse then added less than the independent volume, which counts
+// the whole block above the wall, and the volume check failed on every retry).
+// The end's x next to rib r (foot_chord: the rib's chord on this wall), NaN without room.
+double turbulator_end(const WallDevelopment& wd, const RibDefinition& r, double foot_chord, double s, double cot_a, double sin_a,
                       const TurbulatorDefinition& td, const blade::BladeCoordinates& coords, const CoreDefinition& def,
                       const OffsetWall& wall) {
   const double xm0 = 0.0;
@@ -214,10 +227,21 @@ double turbulator_end(const WallDevelopment& wd, const RibDefinition& r, const V
                        blade::inner_wall_point(coords, def.wall_thickness, s, r.pressure_chord)).normalized();
   const double beta = 0.5 * kPi - std::acos(std::min(1.0, std::abs(across.dot(wd.nrm))));
   const double clear = 0.5 * r.thickness / std::sin(beta) + r.fillet_radius / std::tan(0.5 * beta) + td.end_gap;
-  const Vec3 plane_n = across.cross(wd.e2).normalized();
+  const double rf = r.fillet_radius, h = td.height;
+  const double clear_top = 0.5 * r.thickness + (h < rf ? rf - std::sqrt(rf * rf - (rf - h) * (rf - h)) : 0.0) + td.end_gap;
+  const Vec3 foot = blade::inner_wall_point(coords, def.wall_thickness, s, foot_chord);
+  const double ds = 1e-4;
+  const Vec3 foot_tangent = blade::inner_wall_point(coords, def.wall_thickness, std::min(1.0, s + ds), foot_chord) -
+                            blade::inner_wall_point(coords, def.wall_thickness, std::max(0.0, s - ds), foot_chord);
+  const Vec3 plane_n = across.cross(foot_tangent).normalized();
   auto gap = [&](double x) {
-    const Eigen::Vector2d uv = wd.params(x, (x - xm0) * cot_a);
-    return std::abs((wall.point(uv.x(), uv.y(), wd.t) - foot).dot(plane_n)) - clear;
+    double g = HUGE_VAL;
+    for (double side : {-0.5, 0.5}) {
+      const Eigen::Vector2d uv = wd.params(x, (x - xm0) * cot_a + side * td.width / sin_a);
+      g = std::min({g, std::abs((wall.point(uv.x(), uv.y(), wd.t) - foot).dot(plane_n)) - clear,
+                    std::abs((wall.point(uv.x(), uv.y(), wd.t + h) - foot).dot(plane_n)) - clear_top});
+    }
+    return g;
   };
   const double x_foot = (foot - wd.centre).dot(wd.e1);
   if (gap(0.0) <= 0) return std::nan("");
@@ -262,8 +286,8 @@ void build_turbulator(const std::string& name, std::size_t i, const TurbulatorDe
   const double sin_a = std::sin(td.angle_deg * kPi / 180), cot_a = std::cos(td.angle_deg * kPi / 180) / sin_a;
   const WallDevelopment wd = develop_wall(coords, def, wall, side, s);
   const double t = wd.t;
-  const double xa = turbulator_end(wd, ra, wd.ra_pt, s, cot_a, td, coords, def, wall);
-  const double xb = turbulator_end(wd, rb, wd.rb_pt, s, cot_a, td, coords, def, wall);
+  const double xa = turbulator_end(wd, ra, side.chord_from, s, cot_a, sin_a, td, coords, def, wall);
+  const double xb = turbulator_end(wd, rb, side.chord_to, s, cot_a, sin_a, td, coords, def, wall);
   if (std::isnan(xa) || std::isnan(xb))
     throw PassageInputError(field(i, "end_gap"), name + ": no room between the rib fillets at span " + format_number(s));
   if (!(xb - xa > td.width))
@@ -283,7 +307,7 @@ void build_turbulator(const std::string& name, std::size_t i, const TurbulatorDe
                               name + " is taller than its chamber at span " + format_number(s) + ": " + format_number(clear + td.height) +
                                   " mm from the wall to the opposite wall, the turbulators need " +
                                   format_number(td.height + other_height) + " mm and 0.1 mm clear; height must be < " +
-                                  format_number(0.5 * (clear + td.height - 0.1)) + " mm here");
+                                  format_limit(0.5 * (clear + td.height - 0.1), Allowed::below) + " mm here");
   }
   const BlockIntegral vi = integrate_block(block, lines, Region::Material, Region::Chamber, Region::Chamber);
   if (!vi.ok)

@@ -21,20 +21,6 @@ class Lap {
   std::chrono::steady_clock::time_point t0_ = std::chrono::steady_clock::now();
 };
 
-// A turbulator whose fuse misses its independent volume after the retries (the repro design
-// turbulator_volume_mismatch: ~1e-4 relative on every position tried, tolerance 1e-6; not yet explained):
-// refused naming the failed turbulator's definition, the part of the design the user can change.
-[[noreturn]] void refuse_turbulators(const TurbulatorBuild& t, const FeatureFailure& e) {
-  const std::string what = e.what();
-  for (const TurbulatorInfo& info : t.turbulators)
-    if (what.find("feature " + info.name + " ") != std::string::npos) {
-      const std::string f = "core.turbulators[" + std::to_string(info.definition) + "]";
-      throw PassageInputError(f, what + "; the fused " + info.name + " cannot be verified on this blade: "
-                                                "change the size of these turbulators or leave them out");
-    }
-  throw e;
-}
-
 }  // namespace
 
 void check_wall_feature_definitions(const CoreDefinition& def) {
@@ -90,12 +76,7 @@ brep::NamedShape apply_wall_feature_tools(const brep::NamedShape& blade, WallFea
       options.perturbed_retries = retries;
       BooleanStep step(g.op, options);
       for (const FeatureTool& t : *g.tools) step.add(t);
-      try {
-        current = step.apply(current);
-      } catch (const FeatureFailure& e) {
-        if (g.tools == &b.turbulators.tools) refuse_turbulators(b.turbulators, e);
-        throw;
-      }
+      current = step.apply(current);
       b.steps.push_back(step.report());
       b.step_names.push_back(g.name);
       for (const ToolReport& t : step.report().tools)

@@ -56,7 +56,7 @@ void apply_outputs(config::Config& c, const py::handle& outputs) {
     throw config::ConfigError("outputs: must be None, \"none\", a format name or a list of format names, got " +
                               std::string(Py_TYPE(outputs.ptr())->tp_name));
   }
-  c.output.formats = formats;
+  c.output.formats = config::parse_output_formats(formats, "output.formats");
   c.source["output"]["formats"] = formats;  // the report's copy of the config says what was asked
 }
 
@@ -123,7 +123,6 @@ std::shared_ptr<Built> build(const py::handle& config, const py::handle& outputs
   auto b = std::make_shared<Built>();
   b->config = load_config(config);
   apply_outputs(b->config, outputs);
-  pipeline::check_output_options(b->config);  // fail now, not after a build of minutes
   PythonProgress progress(progress_callback);
   run_job(progress, timeout_seconds(timeout), "; nothing built",
           [&](ProgressSink* sink) { b->result = pipeline::run_build(b->config, {}, sink); });

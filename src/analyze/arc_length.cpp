@@ -130,9 +130,10 @@ double ArcLength<Dim>::length_to(double u) const {
   const double a = breaks_.front(), b = breaks_.back();
   const double eps = 1e-12 * (b - a);
   // Per-query check: the message is only built when it fails (no allocation on the hot path).
-  if (!(u >= a - eps && u <= b + eps))
-    throw InvalidGeometry("parameter " + format_number(u) + " outside the curve domain [" + format_number(a) + ", " +
-                          format_number(b) + "]");
+  if (!(u >= a - eps && u <= b + eps)) {
+    const ValueRangeText t = format_value_range(u, a, b);
+    throw InvalidGeometry("parameter " + t.value + " outside the curve domain [" + t.lo + ", " + t.hi + "]");
+  }
   u = std::clamp(u, a, b);
   if (u == b) return cumulative_.back();
   const std::size_t i =
@@ -143,8 +144,10 @@ double ArcLength<Dim>::length_to(double u) const {
 template <int Dim>
 double ArcLength<Dim>::param_at(double s) const {
   const double L = total();
-  if (!(s >= -tol_ && s <= L + tol_))
-    throw InvalidGeometry("arc length " + format_number(s) + " outside [0, " + format_number(L) + "]");
+  if (!(s >= -tol_ && s <= L + tol_)) {
+    const ValueRangeText t = format_value_range(s, 0, L);
+    throw InvalidGeometry("arc length " + t.value + " outside [0, " + t.hi + "]");
+  }
   if (s <= 0) return breaks_.front();
   if (s >= L) return breaks_.back();
   std::size_t i =

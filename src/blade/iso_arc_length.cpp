@@ -150,8 +150,10 @@ double IsoArcLength::length_to(double u) const {
 
 double IsoArcLength::param_at(double s) const {
   const double L = total();
-  if (!(s >= -tol_ && s <= L + tol_))
-    throw InvalidGeometry("arc length " + format_number(s) + " outside [0, " + format_number(L) + "]");
+  if (!(s >= -tol_ && s <= L + tol_)) {
+    const ValueRangeText t = format_value_range(s, 0, L);
+    throw InvalidGeometry("arc length " + t.value + " outside [0, " + t.hi + "]");
+  }
   if (s <= 0) return first();
   if (s >= L) return last();
   std::size_t c =

@@ -54,18 +54,19 @@ double Streamline::m_prime(double u) const { return mp_.at(curve_, curve_.check_
 
 double Streamline::param_at_m_prime(double m_prime) const {
   const double tol = 1e-12 * (1.0 + mp_.total());
-  if (!(m_prime >= -tol && m_prime <= mp_.total() + tol))  // (message built only on failure: hot path)
-    throw InvalidGeometry(
-          span_name(span_) + ": m' = " + format_number(m_prime) + " is outside the streamline, allowed [0, " +
-              format_number(mp_.total()) + "]");
+  if (!(m_prime >= -tol && m_prime <= mp_.total() + tol)) {  // (message built only on failure: hot path)
+    const ValueRangeText t = format_value_range(m_prime, 0, mp_.total());
+    throw InvalidGeometry(span_name(span_) + ": m' = " + t.value + " is outside the streamline, allowed [0, " + t.hi + "]");
+  }
   return mp_.inverse(curve_, m_prime);
 }
 
 double Streamline::param_at_length(double m) const {
   const double tol = 1e-12 * (1.0 + m_.total());
-  if (!(m >= -tol && m <= m_.total() + tol))
-    throw InvalidGeometry(span_name(span_) + ": m = " + format_number(m) +
-                                                  " mm is outside the streamline, allowed [0, " + format_number(m_.total()) + "]");
+  if (!(m >= -tol && m <= m_.total() + tol)) {
+    const ValueRangeText t = format_value_range(m, 0, m_.total());
+    throw InvalidGeometry(span_name(span_) + ": m = " + t.value + " mm is outside the streamline, allowed [0, " + t.hi + "]");
+  }
   return m_.inverse(curve_, m);
 }
 

@@ -29,7 +29,7 @@ int run_command(const std::function<int()>& command) {
   } catch (const Cancelled& e) {  // a command that did not add the reason
     return error_exit(kStopped, e.what());
   } catch (const Error& e) {  // InvalidGeometry / AlgorithmFailure from the model or solid, ChecksFailed
-    return error_exit(kModelFailure, e.what());
+    return error_exit(kModelFailure, std::string(kToolFailure) + e.what());
   } catch (const Standard_Failure& e) {
     return error_exit(kUnexpected, std::string("OCCT: ") + e.GetMessageString());
   } catch (const std::exception& e) {

@@ -12,11 +12,15 @@ enum ExitCode {
   kOk = 0,
   kUsage = 1,           ///< command line
   kBadConfig = 2,       ///< invalid configuration (config::ConfigError, names the field)
-  kModelFailure = 3,    ///< the model or solid could not be made, or a check failed
+  kModelFailure = 3,    ///< CoolingGen failed: the model or solid could not be made, or a check failed
   kOutputFailure = 4,   ///< an output file could not be written
   kUnexpected = 5,      ///< anything else (a bug)
   kStopped = 6,         ///< --timeout reached or Ctrl-C: stopped cleanly at a check point
 };
+
+/// How the one line of exit 3 starts: a boolean, a check or a model step the tool could not complete is
+/// CoolingGen's failure, never blamed on a field (an input out of range is a ConfigError, exit 2).
+inline constexpr const char* kToolFailure = "CoolingGen failure (not an input error; please report it): ";
 
 /// A command's checks failed after report.json was written (exit 3).
 class ChecksFailed : public Error {

@@ -46,9 +46,10 @@ blade::MeridionalNetDefinition meridional_net(const Field& f) {
       const Field e = s.item(i);
       if (e.is_number()) {
         const double span = e.number(open(0, 1));
-        if (!net.interpolated_spans.empty() && span <= net.interpolated_spans.back())
-          fail(e.path(), "streamline span fractions must be strictly increasing, got " + format_number(span) +
-                             " after " + format_number(net.interpolated_spans.back()));
+        if (!net.interpolated_spans.empty() && span <= net.interpolated_spans.back()) {
+          const ValueLimitText t = format_value_limit(span, net.interpolated_spans.back(), Allowed::above);
+          fail(e.path(), "streamline span fractions must be strictly increasing, got " + t.value + " after " + t.limit);
+        }
         net.interpolated_spans.push_back(span);
         continue;
       }
@@ -56,9 +57,10 @@ blade::MeridionalNetDefinition meridional_net(const Field& f) {
                                               json_type_name(e.json()));
       e.expect_object({"span", "points"});
       const double span = e.at("span").number(open(0, 1));
-      if (!net.streamline_spans.empty() && span <= net.streamline_spans.back())
-        fail(e.path() + ".span", "explicit streamlines must be listed with strictly increasing span, got " +
-                                     format_number(span) + " after " + format_number(net.streamline_spans.back()));
+      if (!net.streamline_spans.empty() && span <= net.streamline_spans.back()) {
+        const ValueLimitText t = format_value_limit(span, net.streamline_spans.back(), Allowed::above);
+        fail(e.path() + ".span", "explicit streamlines must be listed with strictly increasing span, got " + t.value + " after " + t.limit);
+      }
       net.streamline_spans.push_back(span);
       net.streamlines.push_back(polyline(e.at("points"), 2));
     }
@@ -94,7 +96,7 @@ blade::LengthUnit length_unit(const Field& f) {
 Eigen::Vector2d pair_in_mm(const Field& f, double mm_per_unit) {
   const Eigen::Vector2d p = f.pair();
   if (!std::isfinite(mm_per_unit * p.x()) || !std::isfinite(mm_per_unit * p.y()))
-    fail(f.path(), "must be at most " + format_number(std::numeric_limits<double>::max() / mm_per_unit) +
+    fail(f.path(), "must be at most " + format_limit(std::numeric_limits<double>::max() / mm_per_unit, Allowed::below) +
                        " in magnitude in this unit (finite in mm), got [" + format_number(p.x()) + ", " +
                        format_number(p.y()) + "]");
   return mm_per_unit * p;
@@ -246,9 +248,10 @@ Config parse_config(const nlohmann::json& document, const std::filesystem::path&
     c.blade.sections.push_back(section(sections.item(i), base_dir, c.point_sources.back()));
     if (i > 0) {
       const double prev = c.blade.sections[i - 1].placement.span, cur = c.blade.sections[i].placement.span;
-      if (cur <= prev)
-        fail(sections.item(i).path() + ".span", "sections must have strictly increasing span: must be > " +
-                                                  format_number(prev) + ", got " + format_number(cur));
+      if (cur <= prev) {
+        const ValueLimitText t = format_value_limit(cur, prev, Allowed::above);
+        fail(sections.item(i).path() + ".span", "sections must have strictly increasing span: must be > " + t.limit + ", got " + t.value);
+      }
     }
   }
   if (root.has("cooling")) c.cooling = parse_cooling(root.at("cooling"), base_dir);
@@ -266,8 +269,9 @@ Config parse_config(const nlohmann::json& document, const std::filesystem::path&
     if (out.has("formats")) {
       const Field formats = out.at("formats");
       const std::size_t n = formats.expect_array(0);
-      c.output.formats.clear();
-      for (std::size_t i = 0; i < n; ++i) c.output.formats.push_back(formats.item(i).string());
+      std::vector<std::string> names;
+      for (std::size_t i = 0; i < n; ++i) names.push_back(formats.item(i).string());
+      c.output.formats = parse_output_formats(names, formats.path());
     }
     if (out.has("step_schema"))
       c.output.step_schema = out.at("step_schema").choice({"AP214", "AP242"}) == 1 ? "AP242" : "AP214";

@@ -18,14 +18,15 @@
 #include "src/config/config_error.hpp"
 #include "src/config/cooling_config.hpp"
 #include "src/config/grid_config.hpp"
+#include "src/config/output_format.hpp"
 #include "src/core/progress.hpp"
 
 namespace cg::config {
 
-/// "output": plain options; the pipeline (src/pipeline/outputs.hpp) checks the format names and writes.
+/// "output": plain options; the pipeline (src/pipeline/outputs.hpp) writes them.
 struct OutputOptions {
   /// Model files to write (report.json is always written); default all (README, Outputs).
-  std::vector<std::string> formats{"step", "iges", "brep", "stl", "vtk", "preview", "sections", "report_md"};
+  std::vector<OutputFormat> formats = default_output_formats();
   std::string step_schema = "AP242";         ///< "AP214" | "AP242"
   std::string iges_mode = "faces";           ///< "faces" (144 trimmed surfaces) | "brep" (186 MSBO solids)
   std::string product_name;                  ///< name of the product in the STEP file (default: the config's name)

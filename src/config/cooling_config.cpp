@@ -67,9 +67,10 @@ features::RibDefinition rib(const Field& f) {
     d.end = span_end(t.at("end"));
     d.gap = t.at("gap").number(positive(200), "mm");
     d.tip_radius = t.number_or("tip_radius", 0.5 * r.thickness, open(0, 10), "mm");
-    if (d.tip_radius > 0.5 * r.thickness)
-      fail(t.path() + ".tip_radius", "must be <= thickness / 2 = " + format_number(0.5 * r.thickness) + " mm, got " +
-                                         format_number(d.tip_radius));
+    if (d.tip_radius > 0.5 * r.thickness) {
+      const ValueLimitText v = format_value_limit(d.tip_radius, 0.5 * r.thickness, Allowed::below);
+      fail(t.path() + ".tip_radius", "must be <= thickness / 2 = " + v.limit + " mm, got " + v.value);
+    }
     r.turnaround = d;
   }
   return r;

@@ -14,8 +14,9 @@ using features::HoleShape;
 // A pitch in D: >= 1 (below the diameter the holes overlap), at most 100.
 double pitch_d(const Field& f) {
   const double p = f.number(closed(-HUGE_VAL, HUGE_VAL));
-  if (p < 1) fail(f.path(), "pitch below the diameter: must be >= 1 D (holes would overlap), got " + format_number(p));
-  if (p > 100) fail(f.path(), "must be <= 100 D, got " + format_number(p));
+  if (p < 1)
+    fail(f.path(), "pitch below the diameter: must be >= 1 D (holes would overlap), got " + format_value_limit(p, 1, Allowed::above).value);
+  if (p > 100) fail(f.path(), "must be <= 100 D, got " + format_value_limit(p, 100, Allowed::below).value);
   return p;
 }
 
@@ -40,7 +41,10 @@ FanDiffuser fan(const Field& f, FanDiffuser d) {
 void span_range(const Field& f, double& start, double& end) {
   start = f.number_or("span_start", start, closed(0, 1));
   end = f.number_or("span_end", end, closed(0, 1));
-  if (end <= start) fail(f.path() + ".span_end", "must be > span_start = " + format_number(start) + ", got " + format_number(end));
+  if (end <= start) {
+    const ValueLimitText t = format_value_limit(end, start, Allowed::above);
+    fail(f.path() + ".span_end", "must be > span_start = " + t.limit + ", got " + t.value);
+  }
 }
 
 features::FilmRowDefinition film_row(const Field& f) {
@@ -80,7 +84,7 @@ features::ShowerheadDefinition showerhead(const Field& f) {
   if (f.has("row_spacing_d")) {
     s.row_spacing_d = f.at("row_spacing_d").number(closed(-HUGE_VAL, HUGE_VAL));
     if (s.row_spacing_d < 1 || s.row_spacing_d > 20)
-      fail(f.path() + ".row_spacing_d", "must be in [1, 20] D (below 1 D the rows overlap), got " + format_number(s.row_spacing_d));
+      fail(f.path() + ".row_spacing_d", "must be in [1, 20] D (below 1 D the rows overlap), got " + format_value_range(s.row_spacing_d, 1, 20).value);
   }
   if (f.has("pitch_d")) s.pitch_d = pitch_d(f.at("pitch_d"));
   s.stagnation_arc = f.number_or("stagnation_arc_length", 0, closed(-50, 50), "mm");

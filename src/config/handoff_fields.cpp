@@ -28,9 +28,10 @@ void read_handoff_output_fields(const Field& out, OutputOptions& o) {
     o.section_spans.clear();
     for (std::size_t i = 0; i < n; ++i) {
       const double span = s.item(i).number(closed(0, 1));
-      if (i > 0 && span <= o.section_spans.back())
-        fail(s.item(i).path(), "section spans must be strictly increasing, got " + format_number(span) + " after " +
-                                   format_number(o.section_spans.back()));
+      if (i > 0 && span <= o.section_spans.back()) {
+        const ValueLimitText t = format_value_limit(span, o.section_spans.back(), Allowed::above);
+        fail(s.item(i).path(), "section spans must be strictly increasing, got " + t.value + " after " + t.limit);
+      }
       o.section_spans.push_back(span);
     }
   }

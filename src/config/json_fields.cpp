@@ -23,12 +23,13 @@ bool Range::contains(double x) const {
   return (lo_open ? x > lo : x >= lo) && (hi_open ? x < hi : x <= hi);
 }
 
-std::string Range::describe() const {
+std::string Range::describe(double value) const {
   const bool lo_inf = std::isinf(lo), hi_inf = std::isinf(hi);
   if (lo_inf && hi_inf) return "finite";
-  if (hi_inf) return std::string(lo_open ? "> " : ">= ") + format_number(lo);
-  if (lo_inf) return std::string(hi_open ? "< " : "<= ") + format_number(hi);
-  return std::string(lo_open ? "(" : "[") + format_number(lo) + ", " + format_number(hi) + (hi_open ? ")" : "]");
+  const ValueRangeText t = format_value_range(value, lo, hi);
+  if (hi_inf) return std::string(lo_open ? "> " : ">= ") + t.lo;
+  if (lo_inf) return std::string(hi_open ? "< " : "<= ") + t.hi;
+  return std::string(lo_open ? "(" : "[") + t.lo + ", " + t.hi + (hi_open ? ")" : "]");
 }
 
 Range positive(double hi) { return {0.0, hi, true, false}; }
@@ -78,7 +79,8 @@ double Field::number(const Range& range, const char* unit) const {
   if (!j_->is_number()) fail(path_, "must be a number, got " + json_type_name(*j_) + " " + shown(*j_));
   const double x = j_->get<double>();
   if (!range.contains(x))
-    fail(path_, "must be " + range.describe() + (*unit ? std::string(" ") + unit : "") + ", got " + format_number(x));
+    fail(path_, "must be " + range.describe(x) + (*unit ? std::string(" ") + unit : "") + ", got " +
+                    format_value_range(x, range.lo, range.hi).value);
   return x;
 }
 

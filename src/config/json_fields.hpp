@@ -18,8 +18,9 @@ struct Range {
   double lo, hi;
   bool lo_open = false, hi_open = false;
   bool contains(double x) const;
-  /// "[0, 1]", "(0, 40)", "> 0" ...
-  std::string describe() const;
+  /// "[0, 1]", "(0, 40)", "> 0" ... as told to a refused `value`: bounds rounded inward, the bound
+  /// the value passes with as many digits as tell it from the value (src/core/format.hpp).
+  std::string describe(double value) const;
 };
 inline Range closed(double lo, double hi) { return {lo, hi, false, false}; }
 inline Range open(double lo, double hi) { return {lo, hi, true, true}; }

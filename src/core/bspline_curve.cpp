@@ -138,9 +138,10 @@ double BSplineCurve<Dim>::check_param(double u) const {
     return a + r;
   }
   const double eps = 1e-12 * (b - a);
-  if (!(u >= a - eps && u <= b + eps))
-    throw InvalidGeometry("parameter " + format_number(u) + " outside the curve domain [" + format_number(a) +
-                          ", " + format_number(b) + "]");
+  if (!(u >= a - eps && u <= b + eps)) {
+    const ValueRangeText t = format_value_range(u, a, b);
+    throw InvalidGeometry("parameter " + t.value + " outside the curve domain [" + t.lo + ", " + t.hi + "]");
+  }
   return u < a ? a : (u > b ? b : u);
 }
 

@@ -120,9 +120,10 @@ double wrap_or_check(double t, double a, double b, bool periodic, const char* na
     return a + r;
   }
   const double eps = 1e-12 * (b - a);
-  if (!(t >= a - eps && t <= b + eps))
-    throw InvalidGeometry(std::string("surface parameter ") + name + " = " + format_number(t) + " outside [" +
-                          format_number(a) + ", " + format_number(b) + "]");
+  if (!(t >= a - eps && t <= b + eps)) {
+    const ValueRangeText r = format_value_range(t, a, b);
+    throw InvalidGeometry(std::string("surface parameter ") + name + " = " + r.value + " outside [" + r.lo + ", " + r.hi + "]");
+  }
   return t < a ? a : (t > b ? b : t);
 }
 }  // namespace

@@ -56,8 +56,9 @@ void CurveEvaluator<Dim>::relocate(double& u) {
   if (periodic_) {
     u = curve_->check_param(u);  // wraps into the base period; rejects non-finite u
   } else if (!(u >= first_ - eps_ && u <= last_ + eps_)) {
-    throw InvalidGeometry("parameter " + format_number(u) + " outside the curve domain [" + format_number(first_) +
-                          ", " + format_number(last_) + "] (tolerance " + format_number(eps_) + ")");
+    const ValueRangeText t = format_value_range(u, first_, last_);
+    throw InvalidGeometry("parameter " + t.value + " outside the curve domain [" + t.lo + ", " + t.hi + "] (tolerance " +
+                          format_number(eps_) + ")");
   }
   if (u >= sp_.lo && u < sp_.hi) return;  // wrapping landed in the current span
   span_ = spans_.find(u);

@@ -31,8 +31,10 @@ Eigen::MatrixXd solve_collocation(int p, const std::vector<double>& U, bool peri
       t = a + std::fmod(t - a, b - a);
       if (t < a) t += b - a;
     } else {
-      require(t >= a && t <= b, "interpolation parameter " + format_number(t) + " outside the knot domain [" +
-                                    format_number(a) + ", " + format_number(b) + "]");
+      if (!(t >= a && t <= b)) {
+        const ValueRangeText r = format_value_range(t, a, b);
+        throw InvalidGeometry("interpolation parameter " + r.value + " outside the knot domain [" + r.lo + ", " + r.hi + "]");
+      }
     }
     const int s = find_span(U.data(), num_basis - 1, p, t);
     ders_basis_funs(s, t, p, k, U.data(), ders);

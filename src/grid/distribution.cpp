@@ -38,10 +38,12 @@ double geometric_length(double first, double ratio, int cells) {
 std::vector<double> geometric_then_uniform(double first, double ratio, int cells, double length) {
   require(first > 0 && ratio >= 1 && cells >= 1 && length > 0, "geometric_then_uniform: invalid arguments");
   const double lo = first * cells, hi = geometric_length(first, ratio, cells);
-  if (length < lo * (1 - 1e-12) || length > hi * (1 + 1e-12))
-    throw InvalidGeometry("the thickness " + format_number(length) + " mm cannot be reached with " + std::to_string(cells) +
+  if (length < lo * (1 - 1e-12) || length > hi * (1 + 1e-12)) {
+    const ValueRangeText t = format_value_range(length, lo, hi);
+    throw InvalidGeometry("the thickness " + t.value + " mm cannot be reached with " + std::to_string(cells) +
                           " cells from a first cell of " + format_number(first) + " mm growing by at most " + format_number(ratio) +
-                          ": it must lie in [" + format_number(lo) + ", " + format_number(hi) + "] mm");
+                          ": it must lie in [" + t.lo + ", " + t.hi + "] mm");
+  }
   // The smallest k (number of geometric cells) whose uniform rest spacing is <= first ratio^k; then it
   // is > first ratio^(k-1) as well (the rest spacing is a weighted mean of the previous ones).
   int k = 0;

@@ -20,14 +20,16 @@ SectionGridOptions resolve(const blade::SectionProfile& section, SectionGridOpti
   const double chord = section.chord();
   if (o.cells_around < 8 || o.cells_around > 20000) bad("cells_around", "must be in [8, 20000], got " + std::to_string(o.cells_around));
   if (o.cells_normal < 2 || o.cells_normal > 5000) bad("cells_normal", "must be in [2, 5000], got " + std::to_string(o.cells_normal));
-  if (!(o.growth_ratio > 1 && o.growth_ratio <= 2)) bad("growth_ratio", "must be in (1, 2], got " + format_number(o.growth_ratio));
-  if (!(o.wall_clustering >= 0 && o.wall_clustering <= 10)) bad("wall_clustering", "must be in [0, 10], got " + format_number(o.wall_clustering));
+  if (!(o.growth_ratio > 1 && o.growth_ratio <= 2)) bad("growth_ratio", "must be in (1, 2], got " + format_value_range(o.growth_ratio, 1, 2).value);
+  if (!(o.wall_clustering >= 0 && o.wall_clustering <= 10)) bad("wall_clustering", "must be in [0, 10], got " + format_value_range(o.wall_clustering, 0, 10).value);
   if (o.first_cell_height == 0) o.first_cell_height = 2e-4 * chord;
   if (o.thickness == 0) o.thickness = (o.cascade ? 0.03 : 0.1) * chord;
   if (!(o.first_cell_height > 0)) bad("first_cell_height", "must be > 0 mm, got " + format_number(o.first_cell_height));
   if (!(o.thickness > 0)) bad("thickness", "must be > 0 mm, got " + format_number(o.thickness));
-  if (o.first_cell_height >= o.thickness)
-    bad("first_cell_height", "must be below the thickness (" + format_number(o.thickness) + " mm), got " + format_number(o.first_cell_height));
+  if (o.first_cell_height >= o.thickness) {
+    const ValueLimitText t = format_value_limit(o.first_cell_height, o.thickness, Allowed::below);
+    bad("first_cell_height", "must be below the thickness (" + t.limit + " mm), got " + t.value);
+  }
   if (o.cascade) {
     CascadeOptions& c = *o.cascade;
     if (!(c.pitch > 0)) bad("cascade.pitch", "must be > 0 mm, got " + format_number(c.pitch));
@@ -44,8 +46,10 @@ SectionGridOptions resolve(const blade::SectionProfile& section, SectionGridOpti
     if (c.outlet_distance == 0) c.outlet_distance = 1.2 * c_ax;
     if (!(c.inlet_distance > 0)) bad("cascade.inlet_distance", "must be > 0 mm, got " + format_number(c.inlet_distance));
     if (!(c.outlet_distance > 0)) bad("cascade.outlet_distance", "must be > 0 mm, got " + format_number(c.outlet_distance));
-    if (!(o.thickness < 0.2 * c.pitch))
-      bad("thickness", "in a cascade the wall layers must stay below 0.2 pitch (" + format_number(0.2 * c.pitch) + " mm), got " + format_number(o.thickness));
+    if (!(o.thickness < 0.2 * c.pitch)) {
+      const ValueLimitText t = format_value_limit(o.thickness, 0.2 * c.pitch, Allowed::below);
+      bad("thickness", "in a cascade the wall layers must stay below 0.2 pitch (" + t.limit + " mm), got " + t.value);
+    }
   }
   return o;
 }
@@ -74,7 +78,7 @@ SectionGrid build_section_grid(const blade::SectionProfile& section, const Secti
   const double rmin = min_concave_radius(section, patches);
   if (!(o.thickness < 0.9 * rmin))
     bad("thickness", format_number(o.thickness) + " mm reaches past the centre of curvature of a concave part of the section "
-        "(radius " + format_number(rmin) + " mm): the normal lines would cross; use less than " + format_number(0.9 * rmin) + " mm");
+        "(radius " + format_number(rmin) + " mm): the normal lines would cross; use less than " + format_limit(0.9 * rmin, Allowed::below) + " mm");
   detail::BuiltGrid built;
   if (o.cascade) {
     double reach = 0;

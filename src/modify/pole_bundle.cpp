@@ -294,8 +294,10 @@ double checked_param(const PoleBundle& b, double u, const char* what) {
     return w < c ? w : a;  // a + r may round up to the seam copy
   }
   const double eps = 1e-12 * (c - a);
-  if (!(u >= a - eps && u <= c + eps))
-    throw InvalidGeometry(std::string(what) + " " + format_number(u) + " outside the domain [" + format_number(a) + ", " + format_number(c) + "]");
+  if (!(u >= a - eps && u <= c + eps)) {
+    const ValueRangeText t = format_value_range(u, a, c);
+    throw InvalidGeometry(std::string(what) + " " + t.value + " outside the domain [" + t.lo + ", " + t.hi + "]");
+  }
   return std::clamp(u, a, c);
 }
 

@@ -93,7 +93,6 @@ std::string BuildResult::failed_checks() const {
 }
 
 blade::BladeModel validate(const config::Config& config, ProgressSink* progress) {
-  check_output_options(config);
   blade::BladeModel model = config::build_model(config, progress);
   if (!config.cooling.empty()) validate_cooling(config.cooling, model);  // ms: no solid needed
   return model;

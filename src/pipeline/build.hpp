@@ -14,7 +14,7 @@
 //                against the core of the cooling stage; inserts become bodies insert_1, ... of the Part
 //   verify       brep::verify_solid on every body of the Part (the cooled blade's check is reused)
 // A later stage slots in as one more StageRunner::run call in run_build (e.g. cooling features applied
-// to bodies[0].geometry between "solid" and "verify"); outputs are added in output_formats.cpp.
+// to bodies[0].geometry between "solid" and "verify"); outputs are written by outputs.cpp.
 #include <optional>
 #include <string>
 #include <vector>
@@ -97,8 +97,8 @@ struct BuildResult {
 /// throw: see BuildResult::valid().
 BuildResult run_build(const config::Config& config, const BuildOptions& options = {}, ProgressSink* progress = nullptr);
 
-/// What `coolinggen validate` checks without building the solid: the config's output options, the
-/// blade model (returned) and the cooling input that needs only the model (pipeline/cooling.hpp).
+/// What `coolinggen validate` checks without building the solid (the output formats are checked when
+/// the config is parsed): the blade model (returned) and the cooling input that needs only the model (pipeline/cooling.hpp).
 /// Throws ConfigError.
 blade::BladeModel validate(const config::Config& config, ProgressSink* progress = nullptr);
 

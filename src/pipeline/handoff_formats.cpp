@@ -6,8 +6,10 @@
 
 #include "export/atomic_file.hpp"
 #include "export/brep_writer.hpp"
+#include "export/gltf_writer.hpp"
 #include "export/iges_writer.hpp"
 #include "export/preview.hpp"
+#include "export/report_html.hpp"
 #include "export/report_markdown.hpp"
 #include "export/sections.hpp"
 #include "export/sections_svg.hpp"
@@ -36,6 +38,7 @@ struct Shared {
   Handle(TopoDS_TShape) owner;
   std::shared_future<io::PartTriangles> triangles;
   std::shared_future<std::vector<features::SpanSection>> sections;
+  std::shared_future<io::GltfModel> gltf;
   std::vector<std::string> notes;
 };
 
@@ -46,17 +49,19 @@ Shared& shared_for(const BuildResult& r) {
   if (s.owner != t) {
     if (s.triangles.valid()) s.triangles.wait();  // a background job of an earlier result still reads it
     if (s.sections.valid()) s.sections.wait();
+    if (s.gltf.valid()) s.gltf.wait();
     s.owner = t;
     s.triangles = {};
     s.sections = {};
+    s.gltf = {};
     s.notes.clear();
   }
   return s;
 }
 
-bool selected(const config::Config& c, std::initializer_list<const char*> names) {
-  for (const char* n : names)
-    if (std::find(c.output.formats.begin(), c.output.formats.end(), n) != c.output.formats.end()) return true;
+bool selected(const config::Config& c, std::initializer_list<config::OutputFormat> formats) {
+  for (const config::OutputFormat f : formats)
+    if (config::has_format(c.output.formats, f)) return true;
   return false;
 }
 
@@ -79,9 +84,23 @@ void start_sections(const config::Config& c, const BuildResult& r) {
                }).share();
 }
 
+void start_gltf(const config::Config& c, const BuildResult& r) {
+  Shared& s = shared_for(r);
+  std::lock_guard<std::mutex> lock(s.mutex);
+  if (s.gltf.valid()) return;
+  io::GltfOptions o;
+  o.product_name = c.output.product_name.empty() ? c.name : c.output.product_name;
+  s.gltf = start_in_background([&part = r.part, o] { return io::make_gltf(part, o); }).share();
+}
+
 const io::PartTriangles& triangles(const config::Config& c, const BuildResult& r) {
   start_triangles(c, r);
   return shared_for(r).triangles.get();  // rethrows the triangulation's error
+}
+
+const io::GltfModel& gltf(const config::Config& c, const BuildResult& r) {
+  start_gltf(c, r);
+  return shared_for(r).gltf.get();
 }
 
 const std::vector<features::SpanSection>& sections(const config::Config& c, const BuildResult& r) {
@@ -97,25 +116,26 @@ void need_part(const BuildResult& r, const char* what) {
 
 }  // namespace
 
-std::vector<OutputFormat> handoff_formats() {
+std::vector<OutputWriter> handoff_writers() {
+  using F = config::OutputFormat;
   return {
-      {"iges", "IGES (144 trimmed NURBS surfaces, names and levels per feature)", {"blade.igs"},
+      {F::Iges, "IGES (144 trimmed NURBS surfaces, names and levels per feature)", {"blade.igs"},
        [](OutputDirectory& d, const config::Config& c, const BuildResult& r, ProgressSink*) {
          need_part(r, "IGES");
          d.write("blade.igs", [&](const fs::path& t) { io::write_iges(t, r.part, {product(c), c.output.iges_mode == "brep" ? io::IgesMode::Brep : io::IgesMode::Faces}); });
        }},
-      {"brep", "OCCT BREP of all bodies", {"blade.brep"},
+      {F::Brep, "OCCT BREP of all bodies", {"blade.brep"},
        [](OutputDirectory& d, const config::Config&, const BuildResult& r, ProgressSink*) {
          need_part(r, "BREP");
          d.write("blade.brep", [&](const fs::path& t) { io::write_brep(t, r.part); });
        }},
-      {"stl", "binary STL", {"blade.stl"},
+      {F::Stl, "binary STL", {"blade.stl"},
        [](OutputDirectory& d, const config::Config& c, const BuildResult& r, ProgressSink*) {
          need_part(r, "STL");
          const io::PartTriangles& t = triangles(c, r);
          d.write("blade.stl", [&](const fs::path& target) { io::write_stl(target, t, product(c)); });
        }},
-      {"vtk", "ParaView multiblock with feature ids", {"blade.vtm", "blade_blade.vtp"},
+      {F::Vtk, "ParaView multiblock with feature ids", {"blade.vtm", "blade_blade.vtp"},
        [](OutputDirectory& d, const config::Config& c, const BuildResult& r, ProgressSink*) {
          need_part(r, "VTK");
          const io::PartTriangles& t = triangles(c, r);
@@ -125,7 +145,13 @@ std::vector<OutputFormat> handoff_formats() {
                    [&](const fs::path& target) { io::write_vtk_piece(target, r.part[k].name, t, static_cast<int>(k)); });
          d.write("blade.vtm", [&](const fs::path& target) { io::write_vtk_multiblock(target, r.part, "blade"); });
        }},
-      {"preview", "preview.png (VTK; skipped without an X display)", {"preview.png"},
+      {F::Glb, "blade.glb (glTF 2.0, metres, Y up, one primitive per face coloured by feature kind)", {"blade.glb"},
+       [](OutputDirectory& d, const config::Config& c, const BuildResult& r, ProgressSink*) {
+         need_part(r, "glTF");
+         const io::GltfModel& m = gltf(c, r);
+         d.write("blade.glb", [&](const fs::path& t) { io::write_glb(t, m); });
+       }},
+      {F::Preview, "preview.png (VTK; skipped without an X display)", {"preview.png"},
        [](OutputDirectory& d, const config::Config& c, const BuildResult& r, ProgressSink*) {
          need_part(r, "preview");
          const io::PartTriangles& t = triangles(c, r);
@@ -148,17 +174,32 @@ std::vector<OutputFormat> handoff_formats() {
          });
          if (!written) shared_for(r).notes.push_back(note);
        }},
-      {"sections", "sections.svg (sections at several spans with passages and dimensions)", {"sections.svg"},
+      {F::Sections, "sections.svg (sections at several spans with passages and dimensions)", {"sections.svg"},
        [](OutputDirectory& d, const config::Config& c, const BuildResult& r, ProgressSink*) {
          need_part(r, "sections");
          const auto& cuts = sections(c, r);
          d.write("sections.svg", [&](const fs::path& t) { io::write_sections_svg(t, cuts, product(c)); });
        }},
-      {"geomturbo", "blade.geomTurbo: the outer blade and its channel (linear cascade for straight vanes)", {"blade.geomTurbo"},
+      {F::GeomTurbo, "blade.geomTurbo: the outer blade and its channel (linear cascade for straight vanes)", {"blade.geomTurbo"},
        [](OutputDirectory& d, const config::Config&, const BuildResult& r, ProgressSink*) {
          d.write("blade.geomTurbo", [&](const fs::path& t) { blade_import::write_geomturbo_file(t.string(), r.model); });
        }},
-      {"report_md", "report.md (rendered from report.json)", {"report.md"},
+      {F::Html, "report.html (one offline page: the model in 3D by feature, sections, passages, checks, holes)", {"report.html"},
+       [](OutputDirectory& d, const config::Config& c, const BuildResult& r, ProgressSink*) {
+         need_part(r, "report.html");
+         std::vector<std::string> files = d.files();
+         files.push_back("report.html");
+         if (selected(c, {F::ReportMd})) files.push_back("report.md");
+         files.push_back(kReportFile);
+         io::ReportContent rc = report_content(c, r, files, r.timings);
+         add_handoff_report(c, r, rc);
+         io::ReportHtmlContent h{product(c), io::report_json(rc), &gltf(c, r), io::sections_svg(sections(c, r), product(c))};
+         // Hub -> casing along the iso-curve u = 0, as preview.png: the blade stands upright.
+         const Eigen::Vector3d up = r.model.surface.point(0, 1) - r.model.surface.point(0, 0);
+         h.up = {up.x(), up.y(), up.z()};
+         d.write("report.html", [&](const fs::path& t) { io::write_report_html(t, h); });
+       }},
+      {F::ReportMd, "report.md (rendered from report.json)", {"report.md"},
        [](OutputDirectory& d, const config::Config& c, const BuildResult& r, ProgressSink*) {
          std::vector<std::string> files = d.files();
          files.push_back("report.md");
@@ -173,14 +214,17 @@ std::vector<OutputFormat> handoff_formats() {
 void add_handoff_report(const config::Config& c, const BuildResult& r, io::ReportContent& report) {
   if (r.part.empty()) return;
   Shared& s = shared_for(r);
-  if (selected(c, {"sections", "report_md"}) && r.valid()) report.extra["sections"] = io::sections_json(sections(c, r));
+  if (selected(c, {config::OutputFormat::Sections, config::OutputFormat::ReportMd, config::OutputFormat::Html}) && r.valid())
+    report.extra["sections"] = io::sections_json(sections(c, r));
   if (!s.notes.empty()) report.extra["notes"] = s.notes;
 }
 
 void prepare_shared_outputs(const config::Config& c, const BuildResult& r) {
   if (r.part.empty() || !r.valid()) return;
-  if (selected(c, {"stl", "vtk", "preview"})) start_triangles(c, r);
-  if (selected(c, {"sections", "report_md"})) start_sections(c, r);
+  if (selected(c, {config::OutputFormat::Stl, config::OutputFormat::Vtk, config::OutputFormat::Preview})) start_triangles(c, r);
+  if (selected(c, {config::OutputFormat::Sections, config::OutputFormat::ReportMd, config::OutputFormat::Html}))
+    start_sections(c, r);
+  if (selected(c, {config::OutputFormat::Glb, config::OutputFormat::Html})) start_gltf(c, r);
 }
 
 void finish_shared_outputs(const BuildResult& r) noexcept {
@@ -189,6 +233,7 @@ void finish_shared_outputs(const BuildResult& r) noexcept {
   // Errors stay in the futures: the format that needs the result reports them.
   if (s.triangles.valid()) s.triangles.wait();
   if (s.sections.valid()) s.sections.wait();
+  if (s.gltf.valid()) s.gltf.wait();
 }
 
 }  // namespace cg::pipeline

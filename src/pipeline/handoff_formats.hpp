@@ -1,8 +1,8 @@
 #pragma once
-// The hand-off output formats after STEP (README, Outputs): iges, brep, stl, vtk, preview, sections,
-// report_md, as entries of output_formats(). They share one triangulation (stl, vtk, preview) and one
-// set of section cuts (sections, report_md, report.json) per build result, made in the background from
-// the start of write_outputs or on first use.
+// The hand-off output formats after STEP (README, Outputs): iges, brep, stl, vtk, glb, preview,
+// sections, html, report_md, as entries of output_writers(). They share one triangulation (stl, vtk,
+// preview), one viewing model (glb, html) and one set of section cuts (sections, html, report_md,
+// report.json) per build result, made in the background from the start of write_outputs or on first use.
 #include <vector>
 
 #include "export/report.hpp"
@@ -11,7 +11,7 @@
 namespace cg::pipeline {
 
 /// The entries, in the order they are written (report_md last, so it lists every model file).
-std::vector<OutputFormat> handoff_formats();
+std::vector<OutputWriter> handoff_writers();
 
 /// Adds the hand-off sections to a report: "sections" (passage area, wetted perimeter and hydraulic
 /// diameter along span, when the sections were cut in this run) and "notes" (outputs skipped and why).

@@ -45,7 +45,7 @@ MeshOutputs write_mesh(const config::Config& c, const BuildResult& r, const fs::
           [&](const std::string& name, const std::function<void(const fs::path&)>& writer) { od.write(name, writer); },
           mesh_options(c.mesh), progress);
     });
-  const bool markdown = std::find(c.output.formats.begin(), c.output.formats.end(), "report_md") != c.output.formats.end();
+  const bool markdown = config::has_format(c.output.formats, config::OutputFormat::ReportMd);
   stages.run("report", "write report.json", [&] {
     std::vector<StageTiming> timings = r.timings;
     timings.insert(timings.end(), out.timings.begin(), out.timings.end());

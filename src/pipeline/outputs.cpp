@@ -1,12 +1,10 @@
 #include "src/pipeline/outputs.hpp"
 
-
-#include <set>
+#include <algorithm>
 
 #include "export/atomic_file.hpp"
 #include "export/report.hpp"
 #include "export/step_writer.hpp"
-#include "src/config/json_fields.hpp"
 #include "src/pipeline/handoff_formats.hpp"
 #include "src/pipeline/report.hpp"
 #include "src/pipeline/stage_runner.hpp"
@@ -25,34 +23,26 @@ void write_step_file(OutputDirectory& dir, const config::Config& c, const BuildR
 
 }  // namespace
 
-const std::vector<OutputFormat>& output_formats() {
-  static const std::vector<OutputFormat> formats = [] {
-    std::vector<OutputFormat> f{
-        {"step", "STEP (AP242 or AP214, unit mm) with named bodies and faces", {"blade.step"}, write_step_file}};
-    for (OutputFormat& h : handoff_formats()) f.push_back(std::move(h));
-    return f;
+const std::vector<OutputWriter>& output_writers() {
+  static const std::vector<OutputWriter> writers = [] {
+    std::vector<OutputWriter> all{{config::OutputFormat::Step, "STEP (AP242 or AP214, unit mm) with named bodies and faces",
+                                   {"blade.step"}, write_step_file}};
+    for (OutputWriter& h : handoff_writers()) all.push_back(std::move(h));
+    // In the order of kOutputFormats, one each (a format without a writer is a programming error).
+    std::vector<OutputWriter> ordered;
+    for (const config::OutputFormatInfo& f : config::kOutputFormats) {
+      const auto it = std::find_if(all.begin(), all.end(), [&](const OutputWriter& w) { return w.format == f.format; });
+      if (it == all.end()) throw Error(std::string("output format \"") + f.name + "\" has no writer");
+      ordered.push_back(*it);
+    }
+    return ordered;
   }();
-  return formats;
-}
-
-void check_output_options(const config::Config& c) {
-  std::string names;
-  for (const OutputFormat& f : output_formats()) names += (names.empty() ? "\"" : ", \"") + f.name + "\"";
-  std::set<std::string> seen;
-  for (std::size_t i = 0; i < c.output.formats.size(); ++i) {
-    const std::string& n = c.output.formats[i];
-    const std::string path = "output.formats[" + std::to_string(i) + "]";
-    bool known = false;
-    for (const OutputFormat& f : output_formats()) known = known || f.name == n;
-    if (!known) config::fail(path, "unknown output format \"" + n + "\" (allowed: " + names + ")");
-    if (!seen.insert(n).second) config::fail(path, "\"" + n + "\" is listed twice");
-  }
+  return writers;
 }
 
 WrittenOutputs write_outputs(const config::Config& c, const BuildResult& r, const fs::path& dir, ProgressSink* progress) {
-  check_output_options(c);
   std::vector<std::string> owned{kReportFile};
-  for (const OutputFormat& f : output_formats()) owned.insert(owned.end(), f.files.begin(), f.files.end());
+  for (const OutputWriter& f : output_writers()) owned.insert(owned.end(), f.files.begin(), f.files.end());
   WrittenOutputs out;
   out.directory = dir;
   StageRunner stages(progress, out.timings);
@@ -66,16 +56,15 @@ WrittenOutputs write_outputs(const config::Config& c, const BuildResult& r, cons
   } finish{r};
   if (r.valid()) {
     bool shared_started = false;
-    for (const OutputFormat& f : output_formats()) {
-      bool selected = false;
-      for (const std::string& n : c.output.formats) selected = selected || n == f.name;
-      if (!shared_started && f.name != "step") {
+    for (const OutputWriter& f : output_writers()) {
+      const bool selected = config::has_format(c.output.formats, f.format);
+      if (!shared_started && f.format != config::OutputFormat::Step) {
         prepare_shared_outputs(c, r);
         shared_started = true;
       }
       std::string files;
       for (const std::string& n : f.files) files += (files.empty() ? "" : ", ") + n;
-      if (selected) stages.run(f.name, "write " + files, [&] { f.write(od, c, r, progress); });
+      if (selected) stages.run(config::output_format_name(f.format), "write " + files, [&] { f.write(od, c, r, progress); });
     }
   }
   stages.run("report", "write report.json", [&] {

@@ -1,8 +1,9 @@
 #pragma once
-// The files a build writes. Model formats are entries of output_formats(), chosen by the config's
-// "output.formats"; report.json is always written, last, as the index of the directory
-// (output_directory.hpp). A new format (IGES, BREP, STL, VTK, previews, report.md) is one more entry in
-// outputs.cpp plus its name in data/schema/coolinggen.schema.json (output.formats).
+// The files a build writes. Each format of config::OutputFormat (src/config/output_format.hpp, the one
+// list of formats) has one writer here, chosen by the config's "output.formats"; report.json is always
+// written, last, as the index of the directory (output_directory.hpp). A new format is a value of that
+// enum plus its writer in output_writers() (outputs.cpp) and its name in
+// data/schema/coolinggen.schema.json (output.formats).
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -17,19 +18,16 @@ namespace cg::pipeline {
 
 inline constexpr const char* kReportFile = "report.json";
 
-struct OutputFormat {
-  std::string name;                ///< as listed in output.formats ("step")
+struct OutputWriter {
+  config::OutputFormat format;
   std::string description;         ///< one line for people
   std::vector<std::string> files;  ///< the names it writes, removed when a later run does not write them
   /// Writes the format's files through `dir` (each atomically); may poll `progress`.
   std::function<void(OutputDirectory& dir, const config::Config&, const BuildResult&, ProgressSink* progress)> write;
 };
 
-/// Every model format, in the order they are written.
-const std::vector<OutputFormat>& output_formats();
-
-/// Throws ConfigError("output.formats[i]: ...") for a name no output format has.
-void check_output_options(const config::Config& config);
+/// One writer per output format, in the order of config::kOutputFormats (the order they are written).
+const std::vector<OutputWriter>& output_writers();
 
 struct WrittenOutputs {
   std::filesystem::path directory;

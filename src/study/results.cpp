@@ -38,17 +38,25 @@ std::string csv_cell(const std::string& s) {
   return q + "\"";
 }
 
-std::string value_text(const json& v) { return v.is_number() ? format_number(v.get<double>()) : v.is_string() ? v.get<std::string>() : v.dump(); }
+std::string value_text(const json& v) { return v.is_number() ? format_round_trip(v.get<double>()) : v.is_string() ? v.get<std::string>() : v.dump(); }
 
-std::string opt(const std::optional<double>& x) { return x ? format_number(*x) : ""; }
+std::string opt(const std::optional<double>& x) { return x ? format_round_trip(*x) : ""; }
 
-// The field a refusal names: the message up to its first ": " ("cooling.core.ribs[0].thickness").
+}  // namespace
+
 std::string refusal_field(const std::string& message) {
   const auto colon = message.find(": ");
   return colon == std::string::npos ? message : message.substr(0, colon);
 }
 
-}  // namespace
+std::vector<std::pair<std::string, std::optional<double>>> metric_columns(const Metrics& m) {
+  return {{"solid_volume_mm3", m.solid_volume_mm3},
+          {"coolant_volume_mm3", m.coolant_volume_mm3},
+          {"min_wall_mm", m.min_wall_mm},
+          {"min_rib_mm", m.min_rib_mm},
+          {"hole_count", m.hole_count ? std::optional<double>(static_cast<double>(*m.hole_count)) : std::nullopt},
+          {"build_s", m.build_s}};
+}
 
 const char* status_name(Status s) {
   switch (s) {
@@ -183,19 +191,21 @@ void write_results_csv(const fs::path& study_dir, const StudyListing& l) {
   std::ostringstream o;
   o << "id";
   for (const std::string& p : l.parameters) o << "," << csv_cell(p);
-  o << ",status,exit_code,error,solid_volume_mm3,coolant_volume_mm3,min_wall_mm,min_rib_mm,hole_count,build_s,process_s";
+  o << ",status,exit_code,error";
+  for (const auto& [name, value] : metric_columns(Metrics{})) o << "," << name;
+  o << ",process_s";
   for (const std::string& p : passages) o << "," << csv_cell(p + "_dh_mean_mm") << "," << csv_cell(p + "_dh_min_mm");
   o << "\n";
   for (const ResultRow& r : l.rows) {
     const Metrics& m = r.metrics;
     o << r.id;
     for (const json& v : r.values) o << "," << csv_cell(value_text(v));
-    o << "," << status_name(r.status) << "," << (r.exit_code ? std::to_string(*r.exit_code) : "") << "," << csv_cell(r.error)
-      << "," << opt(m.solid_volume_mm3) << "," << opt(m.coolant_volume_mm3) << "," << opt(m.min_wall_mm) << "," << opt(m.min_rib_mm)
-      << "," << (m.hole_count ? std::to_string(*m.hole_count) : "") << "," << opt(m.build_s) << "," << opt(r.process_s);
+    o << "," << status_name(r.status) << "," << (r.exit_code ? std::to_string(*r.exit_code) : "") << "," << csv_cell(r.error);
+    for (const auto& [name, value] : metric_columns(m)) o << "," << opt(value);
+    o << "," << opt(r.process_s);
     for (const std::string& name : passages) {
       const auto it = std::find_if(m.passages.begin(), m.passages.end(), [&](const Metrics::Passage& p) { return p.name == name; });
-      o << "," << (it == m.passages.end() ? "" : format_number(it->dh_mean_mm)) << "," << (it == m.passages.end() ? "" : format_number(it->dh_min_mm));
+      o << "," << (it == m.passages.end() ? "" : format_round_trip(it->dh_mean_mm)) << "," << (it == m.passages.end() ? "" : format_round_trip(it->dh_min_mm));
     }
     o << "\n";
   }

@@ -6,6 +6,7 @@
 //   DIR/results.csv                one row per variant: id, parameters, status, exit code, error and
 //                                  the metrics of its report.json (atomic: temp file + rename)
 //   DIR/study_report.md            status counts, refusals grouped by field, failures
+//   DIR/study_report.html          the same with plots (study_html.hpp)
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
@@ -35,6 +36,8 @@ struct Metrics {
 
 /// Metrics of a report.json document (pipeline/report.cpp, features/passage_report, film_report).
 Metrics report_metrics(const nlohmann::json& report);
+/// The scalar metrics by column name, in the order of results.csv (none: not in the report).
+std::vector<std::pair<std::string, std::optional<double>>> metric_columns(const Metrics& metrics);
 
 struct ResultRow {
   std::string id;
@@ -67,6 +70,8 @@ StudyListing read_listing(const std::filesystem::path& study_dir);
 void write_results_csv(const std::filesystem::path& study_dir, const StudyListing& listing);
 /// Writes DIR/study_report.md atomically.
 void write_study_report(const std::filesystem::path& study_dir, const StudyListing& listing);
+/// The field a refusal names: its message up to the first ": " ("cooling.core.ribs[0].thickness").
+std::string refusal_field(const std::string& message);
 
 /// Fills the rows of `listing` that are not refused from DIR/variants/<id>/ (status.json, report.json):
 /// what `sweep --collect` merges.

@@ -136,7 +136,9 @@ Study load_study(const fs::path& file) {
   if (root.has("outputs")) {
     const Field o = root.at("outputs");
     const std::size_t n = o.expect_array(0, 32);
-    for (std::size_t i = 0; i < n; ++i) s.outputs.push_back(o.item(i).string());
+    std::vector<std::string> names;
+    for (std::size_t i = 0; i < n; ++i) names.push_back(o.item(i).string());
+    s.outputs = config::parse_output_formats(names, o.path());
   }
   check_paths(s);
   return s;

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "src/config/output_format.hpp"
 #include "src/study/field_path.hpp"
 
 namespace cg::study {
@@ -44,7 +45,7 @@ struct Study {
   std::filesystem::path base_dir;   ///< where the base config's relative files are
   std::vector<Parameter> parameters;
   Design design;
-  std::vector<std::string> outputs;  ///< output formats of each variant (report.json always)
+  std::vector<config::OutputFormat> outputs;  ///< output formats of each variant (report.json always)
 };
 
 /// Reads and checks a study file: field paths that exist in the base config, ranges, the design.

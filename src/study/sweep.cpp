@@ -15,6 +15,7 @@
 #include "src/study/design.hpp"
 #include "src/study/process_pool.hpp"
 #include "src/study/study_file.hpp"
+#include "src/study/study_html.hpp"
 #include "src/study/text_file.hpp"
 #include "src/study/variant_config.hpp"
 
@@ -118,7 +119,7 @@ std::string slurm_script(const SweepOptions& o, const std::string& name, std::si
     << "#SBATCH --ntasks=1\n"
     << "exec " << shell_quote(fs::absolute(o.executable).string()) << " sweep " << shell_quote(fs::absolute(o.study_file).lexically_normal().string())
     << " -o " << shell_quote(dir.string()) << " --only \"$SLURM_ARRAY_TASK_ID\" --jobs 1";
-  if (o.timeout_s > 0) s << " --timeout " << format_number(o.timeout_s);
+  if (o.timeout_s > 0) s << " --timeout " << format_round_trip(o.timeout_s);
   if (o.stage_cache == pipeline::StageCacheMode::kOff) s << " --stage-cache off";
   s << "\n";
   return s.str();
@@ -129,6 +130,7 @@ StudyListing collect_study(const fs::path& dir) {
   collect_rows(dir, l);
   write_results_csv(dir, l);
   write_study_report(dir, l);
+  write_study_html(dir, l);
   return l;
 }
 
@@ -195,7 +197,7 @@ SweepOutcome run_sweep(const SweepOptions& o) {
     fs::remove(p.dir / "status.json", ec);  // of another config: the variant is pending until it ran
     ProcessSpec s;
     s.argv = {o.executable.string(), "build", p.config_file.string(), "-o", p.dir.string()};
-    if (o.timeout_s > 0) s.argv.insert(s.argv.end(), {"--timeout", format_number(o.timeout_s)});
+    if (o.timeout_s > 0) s.argv.insert(s.argv.end(), {"--timeout", format_round_trip(o.timeout_s)});
     if (o.stage_cache == pipeline::StageCacheMode::kDisk) {
       s.argv.insert(s.argv.end(), {"--stage-cache", stage_cache_directory(o.output).string()});
       // The first variant of a cooling stage builds and stores it; the others of this run wait until
@@ -254,6 +256,7 @@ SweepOutcome run_sweep(const SweepOptions& o) {
   if (tabulate) {
     write_results_csv(o.output, l);
     write_study_report(o.output, l);
+    write_study_html(o.output, l);
   }
   progress();
   out.wall_s = std::chrono::duration<double>(Clock::now() - t0).count();

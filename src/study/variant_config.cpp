@@ -36,7 +36,7 @@ json variant_document(const Study& s, const Variant& v) {
     apply_field(doc, s.parameters[k].path, s.parameters[k].mode, v.values[k], s.parameters[k].field + ".path");
   doc["name"] = s.name + "_" + v.id;
   if (!doc.contains("output") || !doc["output"].is_object()) doc["output"] = json::object();
-  doc["output"]["formats"] = s.outputs;
+  doc["output"]["formats"] = config::output_format_names(s.outputs);
   return doc;
 }
 

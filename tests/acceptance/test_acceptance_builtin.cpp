@@ -1,10 +1,12 @@
 // The hand-off files of the built-in example (`coolinggen build -o DIR`: the cooled HPT rotor blade with
 // chambers, ribs, fillets, turbulators, pins, TE slots, 153 film holes and a showerhead; STEP AP242),
-// each read back by a reader that is not ours (tests/acceptance/handoff_checks.hpp).
+// each read back by a reader that is not ours (tests/acceptance/handoff_checks.hpp), and report.html in
+// headless Chromium (tests/acceptance/report_page_checks.hpp).
 #define BOOST_TEST_MODULE acceptance_builtin
 #include <boost/test/unit_test.hpp>
 
 #include "acceptance/handoff_checks.hpp"
+#include "acceptance/report_page_checks.hpp"
 
 using namespace cg;
 
@@ -16,3 +18,17 @@ BOOST_AUTO_TEST_CASE(step_ap242_one_valid_named_solid) { test::check_step(build(
 BOOST_AUTO_TEST_CASE(iges_sews_into_a_closed_shell) { test::check_iges(build()); }
 BOOST_AUTO_TEST_CASE(stl_closed_and_outward) { test::check_stl(build()); }
 BOOST_AUTO_TEST_CASE(vtk_closed_outward_normals_out) { test::check_vtk(build()); }
+
+namespace utf = boost::unit_test;
+
+BOOST_AUTO_TEST_CASE(glb_passes_the_khronos_validator, *utf::precondition(test::BrowserTools())) {
+  test::check_glb_validates(build());
+}
+// 652 faces (blade.step read by OCCT), 153 film and showerhead holes; the tip end face is seen from the
+// page's default view.
+BOOST_AUTO_TEST_CASE(report_html_in_a_browser, *utf::precondition(test::BrowserTools())) {
+  test::check_report_page(build(), 652, 153, "casing", "report_builtin");
+}
+BOOST_AUTO_TEST_CASE(report_html_with_a_truncated_model_says_broken, *utf::precondition(test::BrowserTools())) {
+  test::check_truncated_model_is_broken(build());
+}

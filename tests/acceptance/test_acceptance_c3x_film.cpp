@@ -1,9 +1,11 @@
 // The hand-off files of the C3X film vane (data/examples/c3x_film_vane.json: film rows, a showerhead
-// and an impingement insert, so two bodies; STEP AP214), each read back by a reader that is not ours.
+// and an impingement insert, so two bodies; STEP AP214), each read back by a reader that is not ours,
+// and report.html in headless Chromium (tests/acceptance/report_page_checks.hpp).
 #define BOOST_TEST_MODULE acceptance_c3x_film
 #include <boost/test/unit_test.hpp>
 
 #include "acceptance/handoff_checks.hpp"
+#include "acceptance/report_page_checks.hpp"
 
 using namespace cg;
 
@@ -16,3 +18,13 @@ BOOST_AUTO_TEST_CASE(step_ap214_valid_named_solids) { test::check_step(build());
 BOOST_AUTO_TEST_CASE(iges_sews_into_closed_shells) { test::check_iges(build()); }
 BOOST_AUTO_TEST_CASE(stl_closed_and_outward) { test::check_stl(build()); }
 BOOST_AUTO_TEST_CASE(vtk_closed_outward_normals_out) { test::check_vtk(build()); }
+
+namespace utf = boost::unit_test;
+
+BOOST_AUTO_TEST_CASE(glb_passes_the_khronos_validator, *utf::precondition(test::BrowserTools())) {
+  test::check_glb_validates(build());
+}
+// 160 faces of both bodies (blade.step read by OCCT), 83 film and showerhead holes.
+BOOST_AUTO_TEST_CASE(report_html_in_a_browser, *utf::precondition(test::BrowserTools())) {
+  test::check_report_page(build(), 160, 83, "casing", "report_c3x_film");
+}

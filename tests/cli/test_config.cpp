@@ -260,6 +260,19 @@ BOOST_AUTO_TEST_CASE(schema_documents_the_fields) {
   for (const auto& k : keys) BOOST_TEST(names.count(k) == 1u, "schema lacks " << k);
 }
 
+// The format names of both schemas are the one list of output formats (src/config/output_format.hpp).
+BOOST_AUTO_TEST_CASE(schemas_list_the_output_formats) {
+  const json schema = json::parse(test::read_text(COOLINGGEN_SOURCE_DIR "/data/schema/coolinggen.schema.json"));
+  const json study = json::parse(test::read_text(COOLINGGEN_SOURCE_DIR "/data/schema/study.schema.json"));
+  std::vector<std::string> all;
+  for (const config::OutputFormatInfo& f : config::kOutputFormats) all.push_back(f.name);
+  const json& formats = schema.at("definitions").at("output_options").at("properties").at("formats");
+  BOOST_TEST(formats.at("items").at("enum").get<std::vector<std::string>>() == all);
+  BOOST_TEST(formats.at("default").get<std::vector<std::string>>() ==
+             config::output_format_names(config::default_output_formats()));
+  BOOST_TEST(study.at("properties").at("outputs").at("items").at("enum").get<std::vector<std::string>>() == all);
+}
+
 namespace {
 
 // The ConfigError of parsing `text` ("" if none).
@@ -318,7 +331,7 @@ BOOST_AUTO_TEST_CASE(integers_as_json_schema_counts_them) {
   expect_error([](json& x) { x["blade"]["chordwise_samples"] = 4.0; }, "blade.chordwise_samples", "[8, 2000], got 4.0");
   expect_error([](json& x) { x["blade"]["chordwise_samples"] = 1e30; }, "blade.chordwise_samples", "[8, 2000]");
   expect_error([](json& x) { x["blade"]["chordwise_samples"] = 3000000000ull; }, "blade.chordwise_samples", "[8, 2000]");
-  // Shortest round-trip numbers, never "0.100000".
+  // 4 significant digits without padding, never "0.100000".
   expect_error([](json& x) { x["flow_path"]["streamlines"] = {0.3, 0.1}; }, "flow_path.streamlines[1]",
                "got 0.1 after 0.3");
   expect_error([](json& x) { x["blade"]["overbuild"] = 0.7; }, "blade.overbuild", "got 0.7");

@@ -37,7 +37,9 @@ BOOST_AUTO_TEST_CASE(defaults) {
   const config::Config c = parse([](json& d) { d.erase("output"); });
   BOOST_TEST(c.output.step_schema == "AP242");
   BOOST_TEST(c.output.iges_mode == "faces");
-  BOOST_TEST(c.output.formats.size() == 8u);  // every format (README, Outputs)
+  // every format (README, Outputs), in the order they are written
+  BOOST_TEST(config::output_format_names(c.output.formats) ==
+             (std::vector<std::string>{"step", "iges", "brep", "stl", "vtk", "glb", "preview", "sections", "html", "report_md"}));
   BOOST_TEST(c.output.stl_deflection == 0.01);
   BOOST_TEST(c.output.section_spans.size() == 5u);
   BOOST_TEST(c.mesh.max_size == 1.5);
@@ -54,7 +56,7 @@ BOOST_AUTO_TEST_CASE(values_are_read) {
     d["mesh"] = {{"max_size", 3.0}, {"min_size", 0.1}, {"domains", {"coolant"}}, {"formats", {"msh"}},
                  {"physical_groups", "face_name"}, {"threads", 1}, {"optimize", false}, {"feature_curvature_elements", 30}};
   });
-  BOOST_TEST(c.output.formats == (std::vector<std::string>{"step", "iges"}));
+  BOOST_TEST((c.output.formats == std::vector<config::OutputFormat>{config::OutputFormat::Step, config::OutputFormat::Iges}));
   BOOST_TEST(c.output.stl_deflection == 0.05);
   BOOST_TEST(c.output.section_spans == (std::vector<double>{0.2, 0.8}));
   BOOST_TEST(c.mesh.max_size == 3.0);
@@ -70,7 +72,10 @@ BOOST_AUTO_TEST_CASE(values_are_read) {
 }
 
 BOOST_AUTO_TEST_CASE(errors_name_the_field) {
-  // Format names are checked by the pipeline (test_handoff_outputs).
+  expect_error([](json& d) { d["output"]["formats"] = {"step", "gltf"}; }, "output.formats[1]: unknown output format \"gltf\"",
+               "(allowed: \"step\", \"iges\", \"brep\"");
+  expect_error([](json& d) { d["output"]["formats"] = {"stl", "step", "stl"}; }, "output.formats[2]", "\"stl\" is listed twice");
+  expect_error([](json& d) { d["output"]["formats"] = {"step", 3}; }, "output.formats[1]", "string");
   expect_error([](json& d) { d["output"]["stl_deflection"] = 0; }, "output.stl_deflection", "[0.0001, 10]");
   expect_error([](json& d) { d["output"]["section_spans"] = {0.5, 0.4}; }, "output.section_spans[1]", "increasing");
   expect_error([](json& d) { d["output"]["section_spans"] = {1.5}; }, "output.section_spans[0]", "[0, 1]");

@@ -170,6 +170,9 @@ BOOST_AUTO_TEST_CASE(hole_too_close_to_a_rib) {
   const auto [field, what] = attempt(rows({test::film_row(0.42)}), t);
   BOOST_TEST(field == "film_rows[0].chord", what);
   BOOST_TEST(has(what, "rib_1"), what);
+  // It enters the cavity inside the slab: an overlap, said as such, never a negative closeness.
+  BOOST_TEST(has(what, "overlaps rib_1 by "), what);
+  BOOST_TEST(!has(what, " -"), what);
   const auto [f2, w2] = attempt(rows({test::film_row(0.30)}), t);
   BOOST_TEST(f2 == "", w2);
 }

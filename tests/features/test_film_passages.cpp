@@ -200,7 +200,7 @@ BOOST_AUTO_TEST_CASE(insert_in_the_front_chamber) {
 BOOST_AUTO_TEST_CASE(step_read_back_with_bodies_and_hole_names) {
   const pipeline::BuildResult& r = built();
   config::Config c = parse(config_doc());
-  c.output.formats = {"step"};
+  c.output.formats = {config::OutputFormat::Step};
   test::TempDir dir("film_step");
   pipeline::write_outputs(c, r, dir.path / "out");
   const test::StepReadBack back = test::read_step_back(dir.path / "out" / "blade.step");

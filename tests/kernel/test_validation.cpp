@@ -268,9 +268,9 @@ BOOST_AUTO_TEST_CASE(negative_derivative_order_is_a_cg_error) {
   BOOST_TEST(throws_with([&] { s.derivatives(0.5, 0.5, -2, sd); }, "[0, 25]"));
 }
 
-// Numbers in messages are printed shortest-round-trip ("1e-12"), not with six fixed decimals
-// ("0.000000"), so a tolerance or a parameter in a message is the value the code used.
-BOOST_AUTO_TEST_CASE(messages_print_numbers_round_trip) {
+// Numbers in messages have 4 significant digits ("1e-12", never "0.000000"), and a value just outside
+// its domain gets the digits that tell it from the bound ("1.0000001 outside [0, 1]", not "1").
+BOOST_AUTO_TEST_CASE(messages_print_numbers_for_people) {
   const BSplineCurve<2> c = cubic();
   CurveEvaluator<2> ev(c);
   BOOST_TEST(throws_with([&] { ev.point(1.5); }, "tolerance 1e-12"));

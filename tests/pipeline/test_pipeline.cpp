@@ -72,7 +72,7 @@ struct RecordingSink : ProgressSink {
 
 BOOST_AUTO_TEST_CASE(build_as_library_call) {
   config::Config c = c3x_uncooled();
-  c.output.formats = {"step"};  // the model file alone: the hand-off formats have their own tests (label export)
+  c.output.formats = {config::OutputFormat::Step};  // the model file alone: the hand-off formats have their own tests (label export)
   RecordingSink sink;
   const pipeline::BuildResult r = pipeline::run_build(c, {}, &sink);
   BOOST_TEST(r.valid(), r.failed_checks());

@@ -2,7 +2,7 @@
 // build): variants built in parallel by coolinggen build processes, a refused variant without a
 // process, results.csv against each variant's report.json, resume (nothing rebuilt; a changed row
 // rebuilds only itself), a timeout, Ctrl-C, study-file errors naming the field, --emit slurm and
-// --collect; and the designs (grid, Latin hypercube) in process.
+// --collect; study_report.html in a real browser; and the designs (grid, Latin hypercube) in process.
 #define BOOST_TEST_MODULE study_sweep
 #include <boost/test/unit_test.hpp>
 #include <signal.h>
@@ -17,6 +17,7 @@
 #include <set>
 #include <thread>
 
+#include "acceptance/browser.hpp"
 #include "cli/run_cli.hpp"
 #include "study/results_csv.hpp"
 #include "src/config/config_error.hpp"
@@ -49,12 +50,45 @@ std::string study_text(const std::string& extra_parameter = "") {
           {{{"name", "rib_ss"}, {"path", "cooling.core.ribs[0].suction_chord"}, {"range", {0.4, 0.52}}},
            {{"name", "wall"}, {"path", "cooling.core.wall_thickness"}, {"range", {0.8, 1.2}}},
            {{"name", "stagger"}, {"path", "sections[*].parametric.stagger_deg"}, {"mode", "offset"}, {"range", {-1, 1}}}}},
-         {"design", {{"type", "csv"}, {"file", "rows.csv"}}}};
+         {"design", {{"type", "csv"}, {"file", "rows.csv"}}},
+         {"outputs", {"html"}}};  // report.html per variant: study_report.html links to it
   if (!extra_parameter.empty()) s["parameters"].push_back(json::parse(extra_parameter));
   return s.dump(1);
 }
 
 long long mtime(const fs::path& f) { return fs::last_write_time(f).time_since_epoch().count(); }
+
+// study_report.html of the three-variant study (2 built, 1 refused; variants write report.html) in
+// headless Chromium (skipped outside CI when Chromium is missing): status counts, the refusal's field,
+// one plot per parameter and metric with every variant in it (the refused one in the no-value band),
+// points linking to the variants' report.html, which exist. Screenshot: <build>/tests/screenshots.
+void check_study_page(const fs::path& out) {
+  for (const char* id : {"000", "001"}) BOOST_TEST(fs::exists(out / "variants" / id / "report.html"), id);
+  const std::string html = read_text(out / "study_report.html");
+  BOOST_TEST(contains(html, "\"link\":\"variants/000/report.html\""));
+  const std::string missing = test::missing_browser_tools();
+  const char* ci = std::getenv("CI");
+  if (!missing.empty() && !(ci && std::string(ci) == "true")) {
+    BOOST_TEST_MESSAGE("study_report.html browser check skipped, missing:" << missing << " (under CI=true this fails)");
+    return;
+  }
+  const std::string dom = test::chromium(out / "study_report.html", "");
+  const auto v = test::element_attributes(dom, "cg-verdict");
+  BOOST_TEST_REQUIRE(v.count("data-state") == 1u, dom.substr(0, 2000));
+  BOOST_TEST(v.at("data-state") == "rendered");
+  BOOST_TEST(v.at("data-variants") == "3");
+  // Metrics with a value in a built variant: solid and coolant volume, min wall, min rib, holes, build time.
+  const int plots = 3 * 6;
+  BOOST_TEST(std::stoi(v.at("data-plots")) == plots);
+  BOOST_TEST(std::stoi(v.at("data-points")) == plots * 3);
+  BOOST_TEST(test::table_rows(dom, "status-table") == 2);
+  BOOST_TEST(test::table_rows(dom, "refusal-table") == 1);
+  BOOST_TEST(contains(dom, "<td>cooling.core.wall_thickness</td>"));
+  BOOST_TEST(contains(dom, "href=\"variants/001/report.html\""));
+  fs::create_directories(test::kScreenshots);
+  test::chromium(out / "study_report.html", "", test::kScreenshots / "study_report.png");
+  BOOST_TEST(fs::exists(test::kScreenshots / "study_report.png"));
+}
 
 }  // namespace
 
@@ -137,6 +171,11 @@ BOOST_AUTO_TEST_CASE(study_errors) {
   r = run(s);
   BOOST_TEST(r.exit_code == 2, r.err);
   BOOST_TEST(contains(r.err, "design.type: must be one of"), r.err);
+  s = study_text();
+  s.replace(s.find("\"html\""), 6, "\"html\", \"gltf\"");
+  r = run(s);
+  BOOST_TEST(r.exit_code == 2, r.err);
+  BOOST_TEST(contains(r.err, "outputs[1]: unknown output format \"gltf\" (allowed: \"step\", \"iges\""), r.err);
   write(dir.path / "rows.csv", "rib_ss,wall\n0.46,1.0\n");
   r = run(study_text());
   BOOST_TEST(r.exit_code == 2, r.err);
@@ -215,6 +254,7 @@ BOOST_AUTO_TEST_CASE(sweep_builds_resumes_and_collects) {
   const std::string report_md = read_text(out / "study_report.md");
   BOOST_TEST(contains(report_md, "| built | 2 |"), report_md);
   BOOST_TEST(contains(report_md, "| `cooling.core.wall_thickness` | 1 | 002 |"), report_md);
+  check_study_page(out);
 
   // Resume: nothing rebuilt (on a terminal, with its progress line).
   const auto t0 = mtime(out / "variants/000/report.json"), t1 = mtime(out / "variants/001/report.json");

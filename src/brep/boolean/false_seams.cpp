@@ -167,9 +167,10 @@ FalseSeamRepair repair_false_seams(const brep::NamedShape& part) {
   for (int i = 1; i <= faces.Extent(); ++i)
     if (!BRepCheck_Analyzer(faces(i)).IsValid()) throw FeatureFailure("false seam repair: a repaired face is not valid");
   const double v1 = volume_of(touched);
-  if (!(std::abs(v1 - v0) <= 1e-9 * (std::abs(v0) + 1.0)))
-    throw FeatureFailure("false seam repair changed the faces' volume integral (" + format_number(v0) + " -> " +
-                         format_number(v1) + " mm^3)");
+  if (!(std::abs(v1 - v0) <= 1e-9 * (std::abs(v0) + 1.0))) {
+    const ValueLimitText t = format_value_limit(v1, v0, Allowed::near);
+    throw FeatureFailure("false seam repair changed the faces' volume integral (" + t.limit + " -> " + t.value + " mm^3)");
+  }
   out.shape.shape = shape;
   out.shape.faces = FaceNames(part.faces).carried(copy, shape).list(shape, "false seam repair");
   return out;
