@@ -33,6 +33,7 @@
 #include <variant>
 #include <vector>
 
+#include "src/blade/import_record.hpp"
 #include "src/blade/meridional_net.hpp"
 #include "src/blade/section.hpp"
 #include "src/core/bspline_curve.hpp"
@@ -133,6 +134,8 @@ struct BladeModel {
   BladeOptions options;
   /// The sections at every span the surface was fitted to (section_family.hpp); shared, immutable.
   std::shared_ptr<const detail::SectionFamily> family;
+  /// Imported blades (blade.import): the file, its blade count and the measured fidelity.
+  std::optional<ImportRecord> imported;
 
   /// Distinct poles of the surface chordwise (one period) and spanwise.
   int poles_u() const { return surface.is_periodic_u() ? surface.num_poles_u() - surface.degree_u() : surface.num_poles_u(); }

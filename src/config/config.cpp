@@ -6,6 +6,7 @@
 
 #include "src/blade/meridional_net.hpp"
 #include "src/blade/section.hpp"
+#include "src/blade_import/geomturbo_reader.hpp"
 #include "src/config/handoff_fields.hpp"
 #include "src/config/json_document.hpp"
 #include "src/config/json_fields.hpp"
@@ -177,7 +178,7 @@ blade::BladeSectionDefinition section(const Field& f, const std::filesystem::pat
 }
 
 blade::BladeOptions blade_options(const Field& f) {
-  f.expect_object({"overbuild", "chordwise_samples", "stacking", "surface_tolerance", "seam"});
+  f.expect_object({"overbuild", "chordwise_samples", "stacking", "surface_tolerance", "seam", "import"});
   blade::BladeOptions o;
   // > 0: the solid is cut out of the over-built surface by the hub and casing trims.
   o.overbuild = f.number_or("overbuild", o.overbuild, positive(0.5));
@@ -192,6 +193,33 @@ blade::BladeOptions blade_options(const Field& f) {
   return o;
 }
 
+// blade.import: reads the file and cuts it at the flow path's streamlines (src/blade_import).
+void import_blade(const Field& f, const std::filesystem::path& base_dir, Config& c) {
+  f.expect_object({"format", "file", "tolerance", "spans", "samples_per_side"});
+  f.at("format").choice({"geomturbo"});
+  BladeImport im;
+  std::filesystem::path p = f.at("file").string();
+  if (p.is_relative()) p = base_dir / p;
+  im.file = p.string();
+  im.options.tolerance = f.number_or("tolerance", im.options.tolerance, closed(1e-4, 1), "mm");
+  im.options.spans = f.integer_or("spans", 0, 0, 201);
+  if (im.options.spans == 1) fail(f.path() + ".spans", "must be 0 (automatic) or in [2, 201], got 1");
+  im.options.samples_per_side = f.integer_or("samples_per_side", 0, 0, 2000);
+  if (im.options.samples_per_side > 0 && im.options.samples_per_side < 8)
+    fail(f.path() + ".samples_per_side", "must be 0 (automatic) or in [8, 2000]");
+  try {
+    auto blade = std::make_shared<blade_import::ImportedBlade>(blade_import::read_geomturbo(im.file));
+    im.blade = blade;
+    im.sliced = std::make_shared<blade_import::SlicedBlade>(blade_import::slice_blade(*blade, im.options, c.blade.options));
+  } catch (const InvalidGeometry& e) {
+    fail(f.path() + ".file", e.what());
+  }
+  c.blade = im.sliced->definition;
+  for (std::size_t i = 0; i < c.blade.sections.size(); ++i)
+    c.point_sources.push_back({f.path() + ".file (cut at span " + format_number(c.blade.sections[i].placement.span) + ")", "", {}});
+  c.blade_import = std::move(im);
+}
+
 }  // namespace
 
 Config parse_config(const nlohmann::json& document, const std::filesystem::path& base_dir, const std::string& default_name) {
@@ -203,9 +231,18 @@ Config parse_config(const nlohmann::json& document, const std::filesystem::path&
   c.name = root.has("name") ? root.at("name").string() : default_name;
   if (root.has("description")) c.description = root.at("description").string();
   root.at("units").choice({"mm"});
-  c.blade.flow_path = flow_path(root.at("flow_path"));
-  const Field sections = root.at("sections");
-  const std::size_t n = sections.expect_array(1);
+  if (root.has("blade")) c.blade.options = blade_options(root.at("blade"));
+  if (root.has("blade") && root.at("blade").has("import")) {
+    for (const char* key : {"flow_path", "sections"})
+      if (root.has(key))
+        fail(key, std::string("is not given with blade.import (the imported file gives the blade") +
+                      (key[0] == 'f' ? " and its CHANNEL the hub and casing)" : "'s sections)"));
+    import_blade(root.at("blade").at("import"), base_dir, c);
+  } else {
+    c.blade.flow_path = flow_path(root.at("flow_path"));
+  }
+  const Field sections = c.blade_import ? root : root.at("sections");
+  const std::size_t n = c.blade_import ? 0 : sections.expect_array(1);
   for (std::size_t i = 0; i < n; ++i) {
     c.point_sources.emplace_back();
     c.blade.sections.push_back(section(sections.item(i), base_dir, c.point_sources.back()));
@@ -217,7 +254,6 @@ Config parse_config(const nlohmann::json& document, const std::filesystem::path&
       }
     }
   }
-  if (root.has("blade")) c.blade.options = blade_options(root.at("blade"));
   if (root.has("cooling")) c.cooling = parse_cooling(root.at("cooling"), base_dir);
   if (root.has("coolant")) c.coolant = parse_coolant(root.at("coolant"));
   if (root.has("booleans")) {
@@ -251,7 +287,7 @@ Config parse_config(const nlohmann::json& document, const std::filesystem::path&
   if (has_format(c.output.formats, OutputFormat::Network) && !c.coolant)
     fail("coolant", "required when output.formats lists \"network\" (supply, sinks: docs/configuration.md)");
   if (root.has("mesh")) c.mesh = mesh_config(root.at("mesh"));
-  if (root.has("grid")) c.grid = parse_grid_config(root.at("grid"), n);
+  if (root.has("grid")) c.grid = parse_grid_config(root.at("grid"), c.blade.sections.size());
   return c;
 }
 

@@ -7,12 +7,14 @@
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 
 #include <vector>
 
 #include "src/blade/blade_surface.hpp"
+#include "src/blade_import/slice_blade.hpp"
 #include "src/config/config_error.hpp"
 #include "src/config/coolant_config.hpp"
 #include "src/config/cooling_config.hpp"
@@ -56,6 +58,17 @@ struct PointSource {
   std::vector<int> lines;  ///< file line of each point (empty for inline values)
 };
 
+/// "blade.import": a blade designed by another tool (src/blade_import). The file is read and cut at
+/// the flow path's streamlines while parsing (its sections become the definition's point sections);
+/// build_model measures the built blade against it.
+struct BladeImport {
+  std::string format = "geomturbo";
+  std::string file;  ///< resolved path
+  blade_import::ImportOptions options;
+  std::shared_ptr<const blade_import::ImportedBlade> blade;
+  std::shared_ptr<const blade_import::SlicedBlade> sliced;
+};
+
 struct Config {
   std::string name;         ///< "name", or the config file's stem
   std::string description;  ///< "description" (optional)
@@ -68,6 +81,7 @@ struct Config {
   GridConfig grid;          ///< "grid" (structured grids around the sections; optional)
   /// One per section, in order; `field` is empty for parametric sections.
   std::vector<PointSource> point_sources;
+  std::optional<BladeImport> blade_import;  ///< "blade.import" (then no "flow_path" and "sections")
   nlohmann::json source;    ///< the parsed document (for the report)
   std::string source_file;  ///< the config file read (empty when parsed from a document or text)
 };

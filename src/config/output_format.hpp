@@ -9,7 +9,7 @@
 
 namespace cg::config {
 
-enum class OutputFormat { Step, Iges, Brep, Stl, Vtk, Glb, Preview, Sections, Network, Html, ReportMd };
+enum class OutputFormat { Step, Iges, Brep, Stl, Vtk, Glb, Preview, Sections, GeomTurbo, Network, Html, ReportMd };
 
 enum class DefaultOutput { Written, OnRequest };
 
@@ -29,6 +29,7 @@ inline constexpr OutputFormatInfo kOutputFormats[] = {
     {OutputFormat::Glb, "glb", DefaultOutput::Written},
     {OutputFormat::Preview, "preview", DefaultOutput::Written},
     {OutputFormat::Sections, "sections", DefaultOutput::Written},
+    {OutputFormat::GeomTurbo, "geomturbo", DefaultOutput::OnRequest},
     // The network before html and report_md, so that both show its results. Written by default when the
     // config has a "coolant" section (config.cpp), on request otherwise.
     {OutputFormat::Network, "network", DefaultOutput::OnRequest},

@@ -17,6 +17,7 @@
 #include "export/triangulation.hpp"
 #include "export/vtk_writer.hpp"
 #include "export/x_display.hpp"
+#include "src/blade_import/geomturbo_writer.hpp"
 #include "src/core/background.hpp"
 #include "src/core/constants.hpp"
 #include "src/pipeline/network_format.hpp"
@@ -179,6 +180,10 @@ std::vector<OutputWriter> handoff_writers() {
          need_part(r, "sections");
          const auto& cuts = sections(c, r);
          d.write("sections.svg", [&](const fs::path& t) { io::write_sections_svg(t, cuts, product(c)); });
+       }},
+      {F::GeomTurbo, "blade.geomTurbo: the outer blade and its channel (linear cascade for straight vanes)", {"blade.geomTurbo"},
+       [](OutputDirectory& d, const config::Config&, const BuildResult& r, ProgressSink*) {
+         d.write("blade.geomTurbo", [&](const fs::path& t) { blade_import::write_geomturbo_file(t.string(), r.model); });
        }},
       {F::Html, "report.html (one offline page: the model in 3D by feature, sections, passages, checks, holes)", {"report.html"},
        [](OutputDirectory& d, const config::Config& c, const BuildResult& r, ProgressSink*) {

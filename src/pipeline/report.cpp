@@ -61,11 +61,26 @@ json section_entry(const config::Config& c, const blade::BladeModel& m, std::siz
 
 }  // namespace
 
+json deviation(const blade::DeviationFigures& d) { return json{{"max_mm", d.max}, {"rms_mm", d.rms}, {"points", d.points}}; }
+
+// blade.import: the file, its blade count and tip gap, and the fidelity per imported section.
+json import_entry(const blade::ImportRecord& r) {
+  json sections = json::array();
+  for (const blade::ImportedSectionFidelity& s : r.sections)
+    sections.push_back({{"section", s.section}, {"line", s.line}, {"at_points", deviation(s.at_points)},
+                        {"between_points", deviation(s.between_points)}, {"to_next_section", deviation(s.to_next)}});
+  return json{{"format", r.format}, {"file", r.file}, {"row", r.row},
+              {"number_of_blades", r.number_of_blades > 0 ? json(r.number_of_blades) : json()},
+              {"tip_gap_mm", {{"leading_edge", r.tip_gap_le}, {"trailing_edge", r.tip_gap_te}}},
+              {"tolerance_mm", r.tolerance}, {"cuts", r.cuts}, {"samples_per_side", r.samples_per_side},
+              {"deviation", deviation(r.overall)}, {"sections", sections}};
+}
+
 nlohmann::ordered_json report_model(const config::Config& c, const blade::BladeModel& m) {
   json sections = json::array();
   for (std::size_t i = 0; i < c.blade.sections.size(); ++i) sections.push_back(section_entry(c, m, i));
   const auto& s = m.surface;
-  return json{{"name", c.name},
+  nlohmann::ordered_json out = json{{"name", c.name},
               {"description", c.description},
               {"flow_path", std::holds_alternative<blade::StraightFlowPath>(c.blade.flow_path) ? "straight" : "meridional"},
               {"span_length_mm", m.span_length},
@@ -85,6 +100,8 @@ nlohmann::ordered_json report_model(const config::Config& c, const blade::BladeM
               {"step_schema", c.output.step_schema},
               {"iges_mode", c.output.iges_mode},
               {"config", c.source}};
+  if (m.imported) out["import"] = import_entry(*m.imported);
+  return out;
 }
 
 void hash_inputs(Sha256& h, const nlohmann::json& document, const config::Config& c) {
@@ -99,6 +116,7 @@ void hash_inputs(Sha256& h, const nlohmann::json& document, const config::Config
     const auto* p = std::get_if<blade::PointSectionDefinition>(&s.shape);
     if (p && !p->file.empty()) files.push_back(p->file);
   }
+  if (c.blade_import) files.push_back(c.blade_import->file);  // a changed import file changes the blade
   files.insert(files.end(), c.cooling.source_files.begin(), c.cooling.source_files.end());
   for (const std::string& f : files) {
     std::ifstream in(f, std::ios::binary);

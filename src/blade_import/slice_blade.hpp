@@ -1,0 +1,35 @@
+#pragma once
+// From an imported blade to the definition the blade model builds (the one path of every import):
+// the input sections' surface (input_surface.hpp) is cut at OUR streamlines of the flow path (hub and
+// casing from the file's channel, the casing moved inwards by the tip gap), at evenly spaced spans
+// 0..1; each cut is a point section on its stream surface, placed so that the blade model puts it
+// back where it was cut: annular rows in the conformal coordinates of blade_surface.hpp
+// (a = r_ref (m' - m'_LE), b = r_ref theta, offset = the detected LE's a and the stacking point's b),
+// cascades in the plane z = span * s. LE and TE are the file's (where its two sides meet). The blade
+// model then interpolates between the cuts and fits the wall as for any point sections, so every
+// feature, check and output works on it.
+#include <memory>
+
+#include "src/blade/blade_surface.hpp"
+#include "src/blade_import/imported_blade.hpp"
+#include "src/blade_import/input_surface.hpp"
+
+namespace cg::blade_import {
+
+struct ImportOptions {
+  double tolerance = 0.01;    // mm: fidelity limit (fidelity.hpp) and LE/TE gap of the input sides
+  int spans = 0;              // cuts from hub to casing; 0 = one per input section, in [11, 21]
+  int samples_per_side = 0;   // chordwise samples per side; 0 = twice the most points on a side, in [96, 300]
+};
+
+struct SlicedBlade {
+  blade::BladeDefinition definition;  // flow path and point sections (options: the caller's)
+  std::shared_ptr<const InputSurface> surface;
+  std::vector<double> spans;
+};
+
+/// Throws InvalidGeometry "<file>:<line>: ..." for hostile input (input_surface.hpp) and for sections
+/// that do not reach the hub or the casing (naming the section).
+SlicedBlade slice_blade(const ImportedBlade& blade, const ImportOptions& options, const blade::BladeOptions& blade_options);
+
+}  // namespace cg::blade_import
