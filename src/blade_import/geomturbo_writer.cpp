@@ -5,22 +5,17 @@
 #include <fstream>
 #include <ostream>
 
+#include "src/core/format.hpp"
 #include "src/core/constants.hpp"
 #include "src/core/error.hpp"
 
 namespace cg::blade_import {
 namespace {
 
-std::string num(double x) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.12g", x);
-  return b;
-}
-
 void zr_curve(std::ostream& o, const char* name, const std::vector<Eigen::Vector2d>& pts) {
   o << "NI_BEGIN basic_curve\nNAME " << name << "\nDISCRETISATION 10\nDATA_REDUCTION 0\nNI_BEGIN zrcurve\nZR\n"
     << pts.size() << "\n";
-  for (const auto& p : pts) o << num(p.x()) << " " << num(p.y()) << "\n";
+  for (const auto& p : pts) o << format_round_trip(p.x()) << " " << format_round_trip(p.y()) << "\n";
   o << "NI_END zrcurve\nNI_END basic_curve\n";
 }
 
@@ -57,8 +52,8 @@ void write_side(std::ostream& o, const blade::BladeModel& m, bool suction, const
     const double v = -ob + (1 + 2 * ob) * k / (opt.sections - 1);
     o << "# section " << k + 1 << "\n" << (m.trim.straight ? "XYZ" : "ZRTH") << "\n" << opt.points_per_side << "\n";
     for (const Eigen::Vector3d& p : side(m, v, suction, opt.points_per_side)) {
-      if (m.trim.straight) o << num(p.z() - m.trim.hub_z) << " " << num(p.y()) << " " << num(p.x()) << "\n";
-      else o << num(p.x()) << " " << num(std::hypot(p.y(), p.z())) << " " << num(std::atan2(p.z(), p.y())) << "\n";
+      if (m.trim.straight) o << format_round_trip(p.z() - m.trim.hub_z) << " " << format_round_trip(p.y()) << " " << format_round_trip(p.x()) << "\n";
+      else o << format_round_trip(p.x()) << " " << format_round_trip(std::hypot(p.y(), p.z())) << " " << format_round_trip(std::atan2(p.z(), p.y())) << "\n";
     }
   }
 }

@@ -4,19 +4,10 @@
 #include <cstdio>
 #include <map>
 
+#include "src/core/format.hpp"
 #include "src/network/network_json.hpp"
 
 namespace cg::network {
-namespace {
-
-std::string num(double x) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.10g", x);
-  return b;
-}
-
-}  // namespace
-
 std::string film_holes_csv(const features::FilmReport& film, const Network* net, const NetworkSolution* sol) {
   std::map<std::string, double> flow;
   if (net && sol && sol->status == SolveStatus::Converged)
@@ -34,16 +25,16 @@ std::string film_holes_csv(const features::FilmReport& film, const Network* net,
     // The report's axis points into the wall; the table gives the coolant's direction (inlet -> exit).
     const double in[3] = {h.exit[0] + h.length * h.axis[0], h.exit[1] + h.length * h.axis[1], h.exit[2] + h.length * h.axis[2]};
     s += h.name + "," + h.row + "," + h.chamber + "," + h.shape;
-    for (double v : h.exit) s += "," + num(v);
-    for (double v : in) s += "," + num(v);
-    for (double v : h.axis) s += "," + num(-v);
-    s += "," + num(h.diameter) + "," + num(h.metering_length) + "," + num(h.length) + "," + num(h.area_ratio) + "," +
-         num(h.metering_area) + "," + num(h.exit_area) + "," + num(h.inclination_deg) + ",";
+    for (double v : h.exit) s += "," + format_round_trip(v);
+    for (double v : in) s += "," + format_round_trip(v);
+    for (double v : h.axis) s += "," + format_round_trip(-v);
+    s += "," + format_round_trip(h.diameter) + "," + format_round_trip(h.metering_length) + "," + format_round_trip(h.length) + "," + format_round_trip(h.area_ratio) + "," +
+         format_round_trip(h.metering_area) + "," + format_round_trip(h.exit_area) + "," + format_round_trip(h.inclination_deg) + ",";
     const auto c = compound.find(h.name);
-    if (c != compound.end() && std::isfinite(c->second)) s += num(c->second);
+    if (c != compound.end() && std::isfinite(c->second)) s += format_round_trip(c->second);
     s += ",";
     const auto f = flow.find(h.name);
-    if (f != flow.end()) s += num(f->second);
+    if (f != flow.end()) s += format_round_trip(f->second);
     s += "\n";
   }
   return s;
