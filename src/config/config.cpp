@@ -281,11 +281,17 @@ Config parse_config(const nlohmann::json& document, const std::filesystem::path&
     if (out.has("product_name")) c.output.product_name = out.at("product_name").string();
     read_handoff_output_fields(out, c.output);
   }
-  // The flow network is written by default when the config has its boundary conditions.
+  // The flow network is written by default when the config has cooling and its boundary conditions.
   const bool formats_given = root.has("output") && root.at("output").has("formats");
-  if (c.coolant && !formats_given) c.output.formats.push_back(OutputFormat::Network);
-  if (has_format(c.output.formats, OutputFormat::Network) && !c.coolant)
-    fail("coolant", "required when output.formats lists \"network\" (supply, sinks: docs/configuration.md)");
+  if (c.coolant && !c.cooling.empty() && !formats_given) {
+    c.output.formats.clear();
+    for (const OutputFormatInfo& f : kOutputFormats)
+      if (f.by_default == DefaultOutput::Written || f.format == OutputFormat::Network) c.output.formats.push_back(f.format);
+  }
+  if (has_format(c.output.formats, OutputFormat::Network)) {
+    if (!c.coolant) fail("coolant", "required when output.formats lists \"network\" (supply, sinks: docs/configuration.md)");
+    if (c.cooling.empty()) fail("output.formats", "\"network\" needs a \"cooling\" section (the coolant circuit is its passages)");
+  }
   if (root.has("mesh")) c.mesh = mesh_config(root.at("mesh"));
   if (root.has("grid")) c.grid = parse_grid_config(root.at("grid"), c.blade.sections.size());
   return c;
