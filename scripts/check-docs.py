@@ -26,7 +26,7 @@ import sys
 SKIP_DIRS = {".git", "build", "build-asan", "build-fuzz", "out", "__pycache__", "node_modules"}
 SOURCE_EXT = ("hpp", "cpp", "h", "json", "py", "sh")
 # Files the tools write (named in the docs as outputs, not as files of the repository).
-OUTPUT_NAMES = {"report.json", "grid_report.json", "status.json", "config.json"}
+OUTPUT_NAMES = {"report.json", "grid_report.json", "status.json", "config.json", "network.json", "network_results.json"}
 LINK_RE = re.compile(r"!?\[(?:[^\]\[]|\[[^\]]*\])*\]\(\s*<?([^)\s>]+)>?(?:\s+\"[^\"]*\")?\s*\)")
 CODE_SPAN_RE = re.compile(r"(`+)(.+?)\1")
 PATH_RE = re.compile(r"^[A-Za-z0-9_.*{},/+-]+\.(?:%s)$" % "|".join(SOURCE_EXT + ("{hpp,cpp}",)))
