@@ -47,6 +47,19 @@ double aspect_ratio(double a, double p) {
   return h > 0 ? w / h : kUnset;
 }
 
+// An element from station a to station b of a passage: its nodes, end areas, perimeters, the mean D_h
+// and the aspect ratio of the mean section.
+void join_stations(Element& e, const Station& a, const Station& b) {
+  e.upstream = a.node;
+  e.downstream = b.node;
+  e.area_in = a.area;
+  e.area_out = b.area;
+  e.perimeter_in = a.perimeter;
+  e.perimeter_out = b.perimeter;
+  e.hydraulic_diameter = 0.5 * (4 * a.area / a.perimeter + 4 * b.area / b.perimeter);
+  e.aspect_ratio = aspect_ratio(0.5 * (a.area + b.area), 0.5 * (a.perimeter + b.perimeter));
+}
+
 class Builder {
  public:
   explicit Builder(const NetworkInput& in)
@@ -246,15 +259,8 @@ void Builder::segments(Passage& p) {
     e.name = p.name + "_seg_" + std::string(1, station_label(i / 10)) + station_label(i);
     e.kind = ElementKind::Segment;
     e.chamber = p.name;
-    e.upstream = a.node;
-    e.downstream = b.node;
+    join_stations(e, a, b);
     e.length = (b.point - a.point).norm();
-    e.area_in = a.area;
-    e.area_out = b.area;
-    e.perimeter_in = a.perimeter;
-    e.perimeter_out = b.perimeter;
-    e.hydraulic_diameter = 0.5 * (4 * a.area / a.perimeter + 4 * b.area / b.perimeter);
-    e.aspect_ratio = aspect_ratio(0.5 * (a.area + b.area), 0.5 * (a.perimeter + b.perimeter));
     e.span_in = a.span;
     e.span_out = b.span;
     e.radius_in = radius(a.point);
@@ -356,14 +362,7 @@ void Builder::bends() {
     e.name = "turnaround_" + std::to_string(n);
     e.kind = ElementKind::Bend;
     e.chamber = up.name;
-    e.upstream = s0.node;
-    e.downstream = s1.node;
-    e.area_in = s0.area;
-    e.area_out = s1.area;
-    e.perimeter_in = s0.perimeter;
-    e.perimeter_out = s1.perimeter;
-    e.hydraulic_diameter = 0.5 * (4 * s0.area / s0.perimeter + 4 * s1.area / s1.perimeter);
-    e.aspect_ratio = aspect_ratio(0.5 * (s0.area + s1.area), 0.5 * (s0.perimeter + s1.perimeter));
+    join_stations(e, s0, s1);
     e.bend_angle_deg = 180;
     e.bend_radius = 0.5 * (s1.point - s0.point).norm();
     e.length = kPi * e.bend_radius;
