@@ -27,8 +27,8 @@ void validate_passages(const blade::BladeModel& model, const PassagesDefinition&
   if (!def.radial_passages.empty()) build_radial_passages(model, def.radial_passages);  // checks, cheap tools
 }
 
-PassagesResult build_passages(const blade::BladeModel& model, const brep::NamedShape& blade,
-                              const PassagesDefinition& def, Verification verification) {
+PassagesResult build_passages(const blade::BladeModel& model, const brep::NamedShape& blade, const PassagesDefinition& def,
+                              const std::optional<CoreBuild>& walls, Verification verification) {
   PassagesResult out;
   out.blade = blade;
   if (def.empty()) return out;
@@ -45,7 +45,8 @@ PassagesResult build_passages(const blade::BladeModel& model, const brep::NamedS
   std::optional<RadialPassageBuild> radial;
   std::vector<FeatureTool> interior, cuts;
   if (def.core) {
-    core = build_core_walls(model, *def.core);
+    require(walls.has_value(), "build_passages: a core needs the walls of its plan");
+    core = *walls;
     // The turbulator, pin and slot tools need only the walls: they are built in the background while
     // this thread builds the core's cells (the fillets and inlets there are single-threaded OCCT work),
     // on their own copy of the walls (end walls keep evaluation state). An error of the core comes

@@ -35,8 +35,8 @@ CoolingPlan plan_cooling(const blade::BladeModel& model, const PassagesDefinitio
     lap("turbulators");
   }
   if (film.empty()) return plan;
-  FilmCavity cavity = film_cavity_of_core(model, *core, *plan.core);
-  plan.film = plan_film(model, cavity, film);
+  plan.film_cavity = film_cavity_of_core(model, *core, *plan.core);
+  plan.film = plan_film(model, *plan.film_cavity, film);
   lap("film");
   return plan;
 }

@@ -2,8 +2,9 @@
 // The planning stage: every placement of the cooling features that the build knows before its first
 // boolean, from the blade model and the feature definitions alone, and every check that needs no
 // boolean run on it. `coolinggen validate` is the plan; `coolinggen build` is the plan, then the
-// booleans (src/pipeline/build.hpp), and its stages place through the same functions, so what the plan
-// refuses the build refuses, naming the same field:
+// booleans (src/pipeline/build.hpp) on what the plan placed (the core's walls and turnaround ends, the
+// film cavity and every film hole: build_passages and build_film_cooling take them, nothing is placed
+// twice), so what the plan refuses the build refuses, naming the same field:
 //  - passages: the definition checks (validate_passages: ribs on five spans, inlet sizes, wall
 //    features' definitions, trailing-edge placement);
 //  - core (build_core_walls): every turnaround end placed by its gap against its end wall (a gap the
@@ -40,8 +41,10 @@ struct CoolingPlan {
   /// Every turbulator placed on the planned walls (span, ends between the ribs' fillets, height against
   /// the chamber; build_turbulators' placement, no tools).
   std::vector<TurbulatorInfo> turbulators;
-  /// The inserts' chambers and the film holes analysed against the planned core; none without film
-  /// input or without a core.
+  /// The film cavity of the planned core (hole target with its chambers' reach limited by the inserts,
+  /// the inserts' chambers) and the inserts' chambers and film holes analysed against it; none without
+  /// film input or without a core. The film stage builds on both (build_film_cooling).
+  std::optional<FilmCavity> film_cavity;
   std::optional<FilmPlan> film;
   /// Seconds per part ("passages", "core", "turbulators", "film").
   std::vector<std::pair<std::string, double>> seconds;
