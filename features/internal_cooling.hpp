@@ -32,14 +32,16 @@ struct PassagesResult {
 /// radial passages against the wall), in milliseconds. Throws PassageInputError.
 void validate_passages(const blade::BladeModel& model, const PassagesDefinition& def);
 
-/// Builds `def` into `blade` (the solid of `model`) from the core's walls the plan made (`walls`:
-/// build_core_walls, features/plan/cooling_plan.hpp; required with a core). Throws PassageInputError for input that cannot be
+/// Builds `def` into `blade` (the solid of `model`) from the core's walls and the trailing edge's
+/// placement the plan made (`walls`: build_core_walls, required with a core; `trailing_edge`:
+/// plan_trailing_edge; features/plan/cooling_plan.hpp). Throws PassageInputError for input that cannot be
 /// built (field below "cooling" + where), FeatureFailure when a boolean or a design check fails (the
 /// thickness minimums: measured on the built solid, must reach the configured values).
 /// `verification` FinalOnly (or None): the boolean steps run their cheap checks and per-tool volume checks
 /// but no verify_solid (BRepCheck, free edges, closed mesh: ~1 s each on the blade); the caller then
 /// verifies the final solid once and, if that fails, builds again with it on to name the culprit.
 PassagesResult build_passages(const blade::BladeModel& model, const brep::NamedShape& blade, const PassagesDefinition& def,
-                              const std::optional<CoreBuild>& walls, Verification verification = Verification::EachStep);
+                              const std::optional<CoreBuild>& walls, const TrailingEdgePlan& trailing_edge,
+                              Verification verification = Verification::EachStep);
 
 }  // namespace cg::features

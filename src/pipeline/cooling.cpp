@@ -29,7 +29,7 @@ features::PassagesResult apply_cooling(const config::CoolingConfig& cooling, con
                                        const features::CoolingPlan& plan, const brep::NamedShape& blade,
                                        features::Verification verification) {
   try {
-    return features::build_passages(model, blade, cooling.passages, plan.core, verification);
+    return features::build_passages(model, blade, cooling.passages, plan.core, plan.trailing_edge, verification);
   } catch (const features::PassageInputError& e) {
     throw config::cooling_error(e);
   }
