@@ -13,18 +13,27 @@
 #include "src/blade/blade_coordinates.hpp"
 #include "src/core/constants.hpp"
 #include "src/network/network_correlations.hpp"
+#include "src/network/network_sections.hpp"
 
 namespace cg::network {
 namespace {
 
 using Vec3 = Eigen::Vector3d;
 using features::SpanEnd;
+using Sections = std::map<std::string, std::vector<features::CrossSection>>;
 
-// One station of a passage: a measured section, or the passage's end (end wall or open end) with the
-// nearest measured section's area.
+// End stations are cut this far inside the end wall or open end (mm): on the end face itself a section
+// would be ill-defined, and the piece between is negligible (1e-4 of a 76 mm span).
+constexpr double kEndOffsetMm = 0.01;
+// A chamber (or radial passage) has at least this many segments carrying flow (issue: >= 9 per chamber).
+constexpr int kMinSegments = 9;
+
+// One station of a passage: a section measured on the built part, or the passage's end (end wall or open
+// end), measured kEndOffsetMm inside it.
 struct Station {
   double span = 0, area = 0, perimeter = 0;
-  bool measured = false;
+  bool end = false;       ///< at an end wall or open end
+  bool measured = false;  ///< false: no section of this passage there, the nearest measured section's area
   Vec3 point = Vec3::Zero();  ///< on the passage's mid line
   int node = 0;
 };
@@ -62,8 +71,11 @@ void join_stations(Element& e, const Station& a, const Station& b) {
 
 class Builder {
  public:
-  explicit Builder(const NetworkInput& in)
-      : in_(in), c_(*in.config), bc_(*in.config->coolant), coords_(std::make_unique<blade::BladeCoordinates>(*in.model)) {}
+  /// `cuts`: sections of the passages measured on the built part (measure_stations) at the passage
+  /// report's spans, the end stations' (station_spans) and `extra` spans per passage.
+  Builder(const NetworkInput& in, const Sections& cuts, const std::map<std::string, std::vector<double>>& extra)
+      : in_(in), c_(*in.config), bc_(*in.config->coolant), coords_(std::make_unique<blade::BladeCoordinates>(*in.model)),
+        cuts_(cuts), extra_(extra) {}
 
   Network run();
 
@@ -80,7 +92,6 @@ class Builder {
   }
   Vec3 mid_point(const Passage& p, double span) const;
   double radius(const Vec3& p) const { return rotor_ ? std::hypot(p.y(), p.z()) : kUnset; }
-  double end_span(SpanEnd end) const;
   void gas();
   void passages();
   void orient();
@@ -111,6 +122,8 @@ class Builder {
   const config::Config& c_;
   const config::CoolantConfig& bc_;
   std::unique_ptr<blade::BladeCoordinates> coords_;
+  const Sections& cuts_;
+  const std::map<std::string, std::vector<double>>& extra_;
   bool rotor_ = false;
   Network net_;
   std::vector<Passage> passages_;
@@ -135,13 +148,6 @@ Vec3 Builder::mid_point(const Passage& p, double span) const {
   return 0.5 * (coords_->frame(span, 0.5 * (s0 + s1)).point + coords_->frame(span, 0.5 * (p0 + p1)).point);
 }
 
-double Builder::end_span(SpanEnd end) const {
-  const features::CoreDefinition* cd = core_of(c_);
-  const double len = in_.model->span_length;
-  if (end == SpanEnd::Hub) return cd && !cd->hub_floor.open ? cd->hub_floor.thickness / len : 0.0;
-  return cd && !cd->tip_cap.open ? 1 - cd->tip_cap.thickness / len : 1.0;
-}
-
 void Builder::gas() {
   net_.gas.gas_constant = bc_.gas_constant;
   net_.gas.cp = bc_.cp > 0 ? bc_.cp : air_cp(bc_.supply_total_temperature);
@@ -152,27 +158,56 @@ void Builder::gas() {
     net_.notes.push_back("coolant.rotational_speed_rpm ignored: a straight vane does not rotate");
 }
 
-// The passages with their measured sections (hub -> tip), and end stations where the passage ends at an
-// end wall or an open end (not at a turnaround: the bend starts at the last section).
+// The spans of the end stations: kEndOffsetMm inside the hub and tip ends (end wall or open end).
+std::pair<double, double> end_station_spans(const NetworkInput& in) {
+  const features::CoreDefinition* cd = core_of(*in.config);
+  const double len = in.model->span_length, eps = kEndOffsetMm / len;
+  const double hub = cd && !cd->hub_floor.open ? cd->hub_floor.thickness / len : 0.0;
+  const double tip = cd && !cd->tip_cap.open ? 1 - cd->tip_cap.thickness / len : 1.0;
+  return {hub + eps, tip - eps};
+}
+
+// The passages with their stations hub -> tip: the passage report's span sections and any extra spans,
+// measured on the built part (cuts_), and an end station where the passage ends at an end wall or an
+// open end (not at a turnaround: the bend starts at the last section).
 void Builder::passages() {
   const features::CoreDefinition* cd = core_of(c_);
+  const auto [hub, tip] = end_station_spans(in_);
   for (const features::PassageMeasure& m : in_.passages->passages) {
     Passage p;
     p.name = m.name;
     p.chamber = m.name.rfind("chamber_", 0) == 0;
     p.number = std::stoi(m.name.substr(m.name.rfind('_') + 1));
-    std::vector<features::CrossSection> secs = m.sections;
-    std::sort(secs.begin(), secs.end(), [](const auto& a, const auto& b) { return a.span < b.span; });
-    if (secs.size() < 2) throw NetworkError(m.name + ": fewer than 2 measured sections, no network segments");
+    std::vector<features::CrossSection> report = m.sections;
+    std::sort(report.begin(), report.end(), [](const auto& a, const auto& b) { return a.span < b.span; });
+    if (report.size() < 2) throw NetworkError(m.name + ": fewer than 2 measured sections, no network segments");
     if (p.chamber && cd) {
       const std::size_t k = static_cast<std::size_t>(p.number);
       for (std::size_t r : {k - 1, k - 2})
         if (r < cd->ribs.size() && cd->ribs[r].turnaround)
           (cd->ribs[r].turnaround->end == SpanEnd::Hub ? p.hub_turn : p.tip_turn) = true;
     }
-    if (!p.hub_turn) p.stations.push_back({end_span(SpanEnd::Hub), secs.front().area, secs.front().wetted_perimeter, false});
-    for (const auto& s : secs) p.stations.push_back({s.span, s.area, s.wetted_perimeter, true});
-    if (!p.tip_turn) p.stations.push_back({end_span(SpanEnd::Tip), secs.back().area, secs.back().wetted_perimeter, false});
+    const auto cut = cuts_.find(m.name);
+    // The section at `span`: measured on the built part, else the report's there (the cooled blade before
+    // its holes), else (ends) the nearest report section's area.
+    const auto station = [&](double span, bool end) -> std::optional<Station> {
+      if (cut != cuts_.end())
+        for (const auto& s : cut->second)
+          if (std::abs(s.span - span) < 1e-12) return Station{span, s.area, s.wetted_perimeter, end, true};
+      for (const auto& s : report)
+        if (std::abs(s.span - span) < 1e-12) return Station{span, s.area, s.wetted_perimeter, end, true};
+      if (!end) return std::nullopt;
+      const auto& near = std::abs(report.front().span - span) < std::abs(report.back().span - span) ? report.front() : report.back();
+      return Station{span, near.area, near.wetted_perimeter, end, false};
+    };
+    std::vector<double> spans;
+    for (const auto& s : report) spans.push_back(s.span);
+    if (const auto it = extra_.find(m.name); it != extra_.end()) spans.insert(spans.end(), it->second.begin(), it->second.end());
+    std::sort(spans.begin(), spans.end());
+    if (!p.hub_turn) p.stations.push_back(*station(hub, true));
+    for (double span : spans)
+      if (const auto st = station(span, false)) p.stations.push_back(*st);
+    if (!p.tip_turn) p.stations.push_back(*station(tip, true));
     for (Station& st : p.stations) st.point = mid_point(p, st.span);
     passages_.push_back(std::move(p));
   }
@@ -266,7 +301,7 @@ void Builder::segments(Passage& p) {
     e.radius_in = radius(a.point);
     e.radius_out = radius(b.point);
     e.faces = {p.chamber ? p.name + "_wall" : p.name};
-    if (turb && a.measured && b.measured) {
+    if (turb && !a.end && !b.end) {
       e.turbulators = turbulation(*turb, e.hydraulic_diameter, e.aspect_ratio, e.length);
       e.roughness = equivalent_roughness(*e.turbulators, e.hydraulic_diameter);
       e.faces.push_back("turbulator_*");
@@ -589,12 +624,62 @@ Network Builder::run() {
   return std::move(net_);
 }
 
+// A closed end beyond a passage's last exit carries no flow and is pruned from the network; where fewer
+// than kMinSegments segments remain, the longest remaining ones (inner ones first: splitting the last one
+// can move its end exit's station and prune it) get a station at their middle. Returns the new spans per
+// passage (empty: every passage has enough).
+std::map<std::string, std::vector<double>> stations_to_add(const Network& net) {
+  std::map<std::string, std::vector<std::pair<double, double>>> live;
+  for (const Element& e : net.elements)
+    if (e.kind == ElementKind::Segment) live[e.chamber].emplace_back(std::min(e.span_in, e.span_out), std::max(e.span_in, e.span_out));
+  std::map<std::string, std::vector<double>> add;
+  for (auto& [name, segs] : live) {
+    if (static_cast<int>(segs.size()) >= kMinSegments) continue;
+    std::sort(segs.begin(), segs.end());
+    std::vector<std::pair<double, double>> inner(segs.begin() + (segs.size() > 2 ? 1 : 0), segs.end() - (segs.size() > 2 ? 1 : 0));
+    for (int k = static_cast<int>(segs.size()); k < kMinSegments; ++k) {
+      auto longest = std::max_element(inner.begin(), inner.end(),
+                                      [](const auto& x, const auto& y) { return x.second - x.first < y.second - y.first; });
+      const double mid = 0.5 * (longest->first + longest->second), hi = longest->second;
+      longest->second = mid;
+      inner.emplace_back(mid, hi);
+      add[name].push_back(mid);
+    }
+  }
+  return add;
+}
+
 }  // namespace
 
 Network build_network(const NetworkInput& in) {
   if (!in.config || !in.config->coolant || !in.model || !in.part || !in.passages)
     throw NetworkError("network: the build has no coolant section or no measured passages");
-  return Builder(in).run();
+  // The end stations are cut on the built part; the report's sections too when an insert sits in a
+  // chamber (the report cuts the blade alone: the insert's metal is not excluded there). Elsewhere the
+  // report's sections are the built part's (walls closed over the holes), without cutting again.
+  const auto [hub, tip] = end_station_spans(in);
+  std::vector<double> spans{hub, tip};
+  if (in.part->size() > 1)
+    for (const features::PassageMeasure& m : in.passages->passages)
+      for (const auto& s : m.sections) spans.push_back(s.span);
+  Sections cuts = measure_stations(*in.model, *in.part, spans);
+  std::map<std::string, std::vector<double>> extra;
+  Network net = Builder(in, cuts, extra).run();
+  for (int pass = 0; pass < 3; ++pass) {
+    const std::map<std::string, std::vector<double>> add = stations_to_add(net);
+    if (add.empty()) break;
+    std::vector<double> more;
+    for (const auto& [name, s] : add) {
+      more.insert(more.end(), s.begin(), s.end());
+      extra[name].insert(extra[name].end(), s.begin(), s.end());
+    }
+    for (auto& [name, secs] : measure_stations(*in.model, *in.part, more)) {
+      auto& all = cuts[name];
+      all.insert(all.end(), secs.begin(), secs.end());
+    }
+    net = Builder(in, cuts, extra).run();
+  }
+  return net;
 }
 
 }  // namespace cg::network
