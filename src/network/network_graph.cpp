@@ -6,7 +6,9 @@
 #include <memory>
 #include <set>
 
+#include <BRepAdaptor_Surface.hxx>
 #include <BRepBndLib.hxx>
+#include <BRepTools.hxx>
 #include <Bnd_Box.hxx>
 
 #include "features/passages/section_surface.hpp"
@@ -104,7 +106,7 @@ class Builder {
   void slots();
   double compound_angle(const features::HoleMeasure& h) const;
   void prune_dead_ends();
-  int sink(config::SinkKind kind);
+  int sink(config::SinkKind kind, const std::string& row = "");
   Passage* find(const std::string& name) {
     for (Passage& p : passages_)
       if (p.name == name) return &p;
@@ -128,7 +130,7 @@ class Builder {
   Network net_;
   std::vector<Passage> passages_;
   int supply_ = 0;
-  std::map<config::SinkKind, int> sinks_;
+  std::map<std::string, int> sinks_;  ///< by node name
 };
 
 const features::CoreDefinition* core_of(const config::Config& c) {
@@ -333,16 +335,19 @@ void Builder::segments(Passage& p) {
   }
 }
 
-int Builder::sink(config::SinkKind kind) {
-  const auto it = sinks_.find(kind);
+// The sink node of an exit of `kind` in `row`: the row's own (coolant.sinks.rows) or its kind's.
+int Builder::sink(config::SinkKind kind, const std::string& row) {
+  const bool own = bc_.sink_by_row.count(row) > 0;
+  std::string name = std::string("sink_") + config::CoolantConfig::sink_field(kind);
+  name = own ? "sink_" + row : name.substr(0, name.size() - 3);  // without "_pa"
+  const auto it = sinks_.find(name);
   if (it != sinks_.end()) return it->second;
   Node n;
-  n.name = std::string("sink_") + config::CoolantConfig::sink_field(kind);
-  n.name = n.name.substr(0, n.name.size() - 3);  // without "_pa"
+  n.name = name;
   n.kind = NodeKind::Sink;
-  n.pressure = bc_.sink(kind);
+  n.pressure = bc_.sink(row, kind);
   n.temperature = bc_.supply_total_temperature;
-  return sinks_[kind] = add_node(n);
+  return sinks_[name] = add_node(n);
 }
 
 void Builder::inlets() {
@@ -400,6 +405,20 @@ void Builder::bends() {
     join_stations(e, s0, s1);
     e.bend_angle_deg = 180;
     e.bend_radius = 0.5 * (s1.point - s0.point).norm();
+    // The turn's flow area: the gap between the rib tip and the end wall times the cavity's depth at the
+    // rib (its outer-wall points at the rib's chords less the wall on both sides), when less than the
+    // chambers' areas: a narrow gap is the bend's throat.
+    const features::RibDefinition& rib = cd->ribs[r];
+    const double gap = rib.turnaround->gap, len = in_.model->span_length;
+    const double span = at_hub ? cd->hub_floor.thickness / len + 0.5 * gap / len : 1 - cd->tip_cap.thickness / len - 0.5 * gap / len;
+    const double depth = (coords_->frame(span, rib.suction_chord).point - coords_->frame(span, rib.pressure_chord).point).norm() -
+                         cd->wall_thickness.at(span, rib.suction_chord) - cd->wall_thickness.at(span, rib.pressure_chord);
+    e.bend_gap = gap;
+    e.bend_depth = depth;
+    if (depth > 0 && gap * depth < std::min(e.area_in, e.area_out)) {
+      e.area_in = e.area_out = gap * depth;
+      e.hydraulic_diameter = 2 * gap * depth / (gap + depth);
+    }
     e.length = kPi * e.bend_radius;
     e.span_in = s0.span;
     e.span_out = s1.span;
@@ -477,7 +496,7 @@ void Builder::holes() {
     e.chamber = p->name;
     e.enters_from = segment_at(*p, span);
     e.upstream = st.node;
-    e.downstream = sink(kind);
+    e.downstream = sink(kind, h.row);
     Opening o;
     o.row = h.row;
     o.shape = h.shape;
@@ -516,8 +535,25 @@ double Builder::compound_angle(const features::HoleMeasure& h) const {
   return kUnset;
 }
 
+// The pins' mean length across the chamber: the axial extent (v range) of each pin_fin_<nnn>'s
+// cylindrical faces on the part. Returns {pins, mean length}.
+std::pair<int, double> pin_lengths(const brep::NamedShape& blade) {
+  std::map<std::string, std::pair<double, double>> range;
+  for (const brep::NamedFace& f : blade.faces) {
+    if (f.name.rfind("pin_fin_", 0) != 0 || BRepAdaptor_Surface(f.face).GetType() != GeomAbs_Cylinder) continue;
+    double u0, u1, v0, v1;
+    BRepTools::UVBounds(f.face, u0, u1, v0, v1);
+    const auto it = range.find(f.name);
+    range[f.name] = it == range.end() ? std::pair{v0, v1} : std::pair{std::min(v0, it->second.first), std::max(v1, it->second.second)};
+  }
+  double sum = 0;
+  for (const auto& [name, r] : range) sum += r.second - r.first;
+  return {static_cast<int>(range.size()), range.empty() ? 0.0 : sum / static_cast<double>(range.size())};
+}
+
 // Trailing-edge slots: one element per slot (faces te_slot_<nn> on the blade), from the last chamber's
-// station nearest the slot's span to the trailing-edge sink; pin fins upstream as a pin bank.
+// station nearest the slot's span to the trailing-edge sink; the pin fins upstream described with each
+// slot (its share of the bank, docs/network.md: not in the deck).
 void Builder::slots() {
   const features::CoreDefinition* cd = core_of(c_);
   if (!cd || !cd->trailing_edge || in_.part->empty()) return;
@@ -527,11 +563,7 @@ void Builder::slots() {
   std::map<std::string, Bnd_Box> boxes;
   for (const brep::NamedFace& f : in_.part->front().geometry.faces)
     if (f.name.rfind("te_slot_", 0) == 0) BRepBndLib::Add(f.face, boxes[f.name]);
-  int pins = 0;
-  std::set<std::string> pin_names;
-  for (const brep::NamedFace& f : in_.part->front().geometry.faces)
-    if (f.name.rfind("pin_fin_", 0) == 0) pin_names.insert(f.name);
-  pins = static_cast<int>(pin_names.size());
+  const auto [pins, pin_length] = pin_lengths(in_.part->front().geometry);
   for (const auto& [name, box] : boxes) {
     double x0, y0, z0, x1, y1, z1;
     box.Get(x0, y0, z0, x1, y1, z1);
@@ -544,20 +576,25 @@ void Builder::slots() {
     e.chamber = p->name;
     e.enters_from = segment_at(*p, span);
     e.upstream = st.node;
-    e.downstream = sink(config::SinkKind::TrailingEdge);
+    e.downstream = sink(config::SinkKind::TrailingEdge, "te_slots");
     Opening o;
     o.row = "te_slots";
     o.shape = "slot";
     o.metering_area = o.exit_area = te.slot_height * te.slot_width;
     o.diameter = 2 * te.slot_height * te.slot_width / (te.slot_height + te.slot_width);
-    o.sink = "trailing_edge";
+    o.sink = net_.node(e.downstream).name.substr(5);
     e.opening = o;
     e.area_in = e.area_out = o.metering_area;
     e.hydraulic_diameter = o.diameter;
     e.span_in = e.span_out = span;
     e.faces = {name};
-    if (te.pin_fins) {
-      e.pins = pin_bank(*te.pin_fins, pins);
+    if (te.pin_fins && pins > 0) {
+      // The bank's minimum gap shared by the slots: (S - D) x pin length per pin of a row.
+      PinBank bank = pin_bank(*te.pin_fins, pins);
+      bank.height = pin_length;
+      bank.gap_area = (te.pin_fins->spanwise_pitch - te.pin_fins->diameter) * pin_length * pins / std::max(bank.rows, 1) /
+                      static_cast<double>(boxes.size());
+      e.pins = bank;
       e.faces.push_back("pin_fin_*");
     }
     add_element(e);

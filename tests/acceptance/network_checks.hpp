@@ -93,6 +93,12 @@ inline void check_network_deck(const ProductBuild& b, const NetworkExpect& e) {
   BOOST_TEST(res.at("status") == "converged");
   BOOST_TEST(std::abs(res.at("total_mass_flow_kg_s").get<double>() - supply * 1e3) <= 1e-6 * supply * 1e3);
   BOOST_TEST(b.report.at("network").at("status") == "converged");
+  // The network stage's share of the build (same run): at most 10 %.
+  double total = 0;
+  for (const auto& [stage, s] : b.report.at("timings_s").items()) total += s.get<double>();
+  const double network = b.report.at("timings_s").at("coolant_network").get<double>();
+  BOOST_TEST(network <= 0.1 * total, "coolant_network " << network << " s of " << total << " s");
+  BOOST_TEST_MESSAGE("network stage " << network << " s of " << total << " s (" << 100 * network / total << " %)");
 }
 
 /// film_holes.csv: one line per hole; every exit centre on the surface of the blade's outer wall
