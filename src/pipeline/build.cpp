@@ -3,6 +3,7 @@
 #include "src/brep/blade_solid.hpp"
 #include "src/pipeline/cooling.hpp"
 #include "src/pipeline/cooling_stage_cache.hpp"
+#include "src/pipeline/network_job.hpp"
 #include "src/pipeline/stage_runner.hpp"
 
 namespace cg::pipeline {
@@ -139,6 +140,8 @@ BuildResult run_build(const config::Config& config, const BuildOptions& options,
     build_features(features::Verification::EachStep, "_rechecked");
     verify_bodies("_rechecked");
   }
+  if (r.valid() && r.cooling && config.coolant && config::has_format(config.output.formats, config::OutputFormat::Network))
+    stages.run("coolant_network", "coolant flow network (CalculiX)", [&] { r.network = solve_network(config, r); });
   return r;
 }
 
