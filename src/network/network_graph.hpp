@@ -11,6 +11,7 @@
 
 #include "features/film/film_report.hpp"
 #include "features/passages/passage_report.hpp"
+#include "features/wall/trailing_edge.hpp"
 #include "src/blade/blade_surface.hpp"
 #include "src/brep/named_shape.hpp"
 #include "src/config/config.hpp"
@@ -30,6 +31,8 @@ struct NetworkInput {
   const brep::Part* part = nullptr;
   const features::PassageReport* passages = nullptr;  ///< required
   const features::FilmReport* film = nullptr;         ///< optional
+  /// The trailing-edge slots as placed (optional): their rows of film_holes.csv.
+  const std::vector<features::SlotInfo>* slots = nullptr;
 };
 
 /// Builds the network. Throws NetworkError when the part has no measured passage.

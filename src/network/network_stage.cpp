@@ -30,7 +30,10 @@ NetworkRun run_network(const NetworkInput& in) {
   r.results = results_json(r.network, r.solution);
   r.summary = results_summary(r.results);
   if (r.solution.status != SolveStatus::Converged) r.warnings.push_back("network: " + r.solution.message);
-  if (in.film && !in.film->holes.empty()) r.film_holes = film_holes_csv(*in.film, &r.network, &r.solution);
+  const std::vector<features::SlotInfo> no_slots;
+  const std::vector<features::SlotInfo>& slots = in.slots ? *in.slots : no_slots;
+  if ((in.film && !in.film->holes.empty()) || !slots.empty())
+    r.film_holes = film_holes_csv(in.film ? *in.film : features::FilmReport(), slots, &r.network, &r.solution);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   r.summary["seconds"] = r.seconds;
   return r;

@@ -81,7 +81,10 @@ BuildResult run_build(const config::Config& config, const BuildOptions& options,
   // The plan (what validate checks): every placement the feature stages then build on.
   features::CoolingPlan plan;
   if (!config.cooling.empty())
-    stages.run("plan", "cooling plan (placements and checks before any boolean)", [&] { plan = plan_cooling(config.cooling, r.model); });
+    stages.run("plan", "cooling plan (placements and checks before any boolean)", [&] {
+      plan = plan_cooling(config.cooling, r.model);
+      r.slots = plan.trailing_edge.slots;
+    });
   stages.run("solid", "solid (blade surface trimmed to the flow path)", [&] {
     brep::BladeSolid solid = brep::build_blade_solid(r.model, progress);
     for (const std::string& w : solid.warnings) r.warnings.push_back("solid: " + w);

@@ -10,6 +10,7 @@
 
 #include "features/film/film_report.hpp"
 #include "features/passages/passage_report.hpp"
+#include "features/wall/trailing_edge.hpp"
 #include "src/blade/blade_surface.hpp"
 #include "src/brep/named_shape.hpp"
 #include "src/brep/verify.hpp"
@@ -45,6 +46,9 @@ struct BuildResult {
   std::optional<features::PassageReport> cooling;
   /// What the film stage measured (per hole, row, chamber, insert); none without film input.
   std::optional<features::FilmReport> film;
+  /// The trailing-edge slots as the plan placed them (frame, floor, lip, inlet; their tools were built
+  /// there): film_holes.csv's slot rows. None without trailing-edge slots.
+  std::vector<features::SlotInfo> slots;
   /// The coolant flow network, solved by the stage "coolant_network" when the config selects the output
   /// format "network" and the valid part has cooling passages; none otherwise.
   std::optional<NetworkFiles> network;

@@ -11,6 +11,7 @@ NetworkFiles solve_network(const config::Config& c, const BuildResult& r) {
   in.part = &r.part;
   in.passages = r.cooling ? &*r.cooling : nullptr;
   in.film = r.film ? &*r.film : nullptr;
+  in.slots = &r.slots;
   NetworkFiles f;
   try {
     const network::NetworkRun run = network::run_network(in);

@@ -13,11 +13,15 @@
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepGProp.hxx>
 #include <BRepBndLib.hxx>
+#include <BRepBuilderAPI_MakeVertex.hxx>
+#include <BRepClass3d_SolidClassifier.hxx>
+#include <BRepExtrema_DistShapeShape.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
 #include <GProp_GProps.hxx>
 #include <gp_Pln.hxx>
 #include <GeomAPI_ProjectPointOnSurf.hxx>
+#include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 
 #include <cmath>
@@ -103,8 +107,11 @@ inline void check_network_deck(const ProductBuild& b, const NetworkExpect& e) {
 
 /// film_holes.csv: one line per hole; every exit centre on the surface of the blade's outer wall
 /// (faces blade_wall of blade.step, their untrimmed surfaces: the uncooled wall), every axis parallel to
-/// the axis of a cylinder of that hole's faces in blade.step.
-inline void check_film_holes_csv(const ProductBuild& b, int holes) {
+/// the axis of a cylinder of that hole's faces in blade.step. Then one line per trailing-edge slot (as
+/// many as blade.step has te_slot_<nn> names): its inlet and exit centres in the air (outside the blade
+/// solid: the chamber, the opening), the exit centre at most half the slot's height (`slot_height`, mm)
+/// from that slot's faces.
+inline void check_film_holes_csv(const ProductBuild& b, int holes, double slot_height = 0) {
   std::istringstream in(read_text(b.file("film_holes.csv")));
   std::string line;
   std::getline(in, line);
@@ -115,15 +122,40 @@ inline void check_film_holes_csv(const ProductBuild& b, int holes) {
   for (auto [it, end] = step.named_faces.equal_range("blade_wall"); it != end; ++it)
     wall.push_back(BRep_Tool::Surface(TopoDS::Face(it->second)));
   BOOST_TEST_REQUIRE(!wall.empty());
-  int n = 0;
+  std::set<std::string> slot_names;
+  for (const auto& [name, face] : step.named_faces)
+    if (name.rfind("te_slot_", 0) == 0) slot_names.insert(name);
+  // The blade body: the solid named "blade" (a part with inserts), else the file's first solid.
+  TopoDS_Shape blade;
+  if (step.named_solids.count("blade")) blade = step.named_solids.at("blade");
+  for (std::size_t i = 0; blade.IsNull() && i < step.free_shapes.size(); ++i)
+    if (TopExp_Explorer ex(step.free_shapes[i], TopAbs_SOLID); ex.More()) blade = ex.Current();
+  BOOST_TEST_REQUIRE(!blade.IsNull());
+  int n = 0, slots = 0;
   double worst_wall = 0, worst_axis = 0;
   while (std::getline(in, line)) {
-    ++n;
     std::vector<std::string> f;
     std::istringstream ls(line);
     for (std::string c; std::getline(ls, c, ',');) f.push_back(c);
     BOOST_TEST_REQUIRE(f.size() >= 21u, line);
     const gp_Pnt exit(std::stod(f[4]), std::stod(f[5]), std::stod(f[6]));
+    if (f[3] == "slot") {
+      ++slots;
+      BOOST_TEST(slot_names.count(f[0]) == 1u, line);
+      const gp_Pnt inlet(std::stod(f[7]), std::stod(f[8]), std::stod(f[9]));
+      for (const gp_Pnt& p : {exit, inlet}) {
+        BRepClass3d_SolidClassifier where(blade, p, 1e-7);
+        BOOST_TEST((where.State() == TopAbs_OUT), f[0] << ": a centre inside the metal: " << line);
+      }
+      double d = HUGE_VAL;
+      for (auto [it, end] = step.named_faces.equal_range(f[0]); it != end; ++it) {
+        BRepExtrema_DistShapeShape ds(BRepBuilderAPI_MakeVertex(exit).Vertex(), it->second);
+        if (ds.IsDone()) d = std::min(d, ds.Value());
+      }
+      BOOST_TEST(d <= 0.5 * slot_height + 1e-6, f[0] << ": exit centre " << d << " mm from its faces");
+      continue;
+    }
+    ++n;
     const gp_Dir axis(std::stod(f[10]), std::stod(f[11]), std::stod(f[12]));
     double d = HUGE_VAL;
     for (const auto& s : wall) {
@@ -140,6 +172,7 @@ inline void check_film_holes_csv(const ProductBuild& b, int holes) {
     worst_axis = std::max(worst_axis, best);
   }
   BOOST_TEST(n == holes);
+  BOOST_TEST(slots == static_cast<int>(slot_names.size()));
   BOOST_TEST(worst_wall < 1e-6, "largest distance of an exit centre from the outer wall " << worst_wall << " mm");
   BOOST_TEST(worst_axis < 1e-6, "largest sine between a hole's axis and its cylinder's " << worst_axis);
 }

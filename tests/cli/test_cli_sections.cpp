@@ -53,7 +53,9 @@ BOOST_AUTO_TEST_CASE(repro_designs_are_refused_naming_a_field) {
       {"section_loop_one_rib.json", "cooling.film_rows[0].chord"},
       {"section_loop_serpentine.json", "cooling.showerhead.stagnation_arc_length"},
       // A cutback floor 0.08 mm from the TE's tip failed its boolean after the retries (exit 3 before).
-      {"te_cutback_short.json", "cooling.core.trailing_edge.cutback_length: "}};
+      {"te_cutback_short.json", "cooling.core.trailing_edge.cutback_length: "},
+      // Floors 0.19 and 0.105 mm from the tip: exit 3 in the slot cut before the plan kept them 0.2 mm off.
+      {"te_cutback_floor_near_tip.json", "cooling.core.trailing_edge.cutback_length: "}};
   for (const auto& [file, field] : cases) {
     test::TempDir dir("cli_repro");
     const test::Run r = test::run_cli("build " + test::q(kRepro / file) + " -o " + test::q(dir.path / "out"), dir.path);
