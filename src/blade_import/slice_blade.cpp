@@ -129,7 +129,7 @@ SlicedBlade slice_blade(const ImportedBlade& b, const ImportOptions& o, const bl
   const int m = o.samples_per_side > 0 ? o.samples_per_side : std::clamp(static_cast<int>(2 * most), 96, 300);
   out.surface = std::make_shared<const InputSurface>(b, m, o.tolerance);
   const InputSurface& surf = *out.surface;
-  const int n = o.spans > 0 ? o.spans : std::clamp(static_cast<int>(b.sections.size()), 11, 21);
+  const int n = cut_count(o, b.sections.size());
   for (int i = 0; i < n; ++i) out.spans.push_back(static_cast<double>(i) / (n - 1));
 
   blade::MeridionalNetDefinition net_def;

@@ -193,7 +193,7 @@ blade::BladeOptions blade_options(const Field& f) {
   return o;
 }
 
-// blade.import: reads the file and cuts it at the flow path's streamlines (src/blade_import).
+// blade.import: reads the file (its syntax); build_model cuts it at the streamlines (imported_model.cpp).
 void import_blade(const Field& f, const std::filesystem::path& base_dir, Config& c) {
   f.expect_object({"format", "file", "tolerance", "spans", "samples_per_side"});
   f.at("format").choice({"geomturbo"});
@@ -207,16 +207,13 @@ void import_blade(const Field& f, const std::filesystem::path& base_dir, Config&
   im.options.samples_per_side = f.integer_or("samples_per_side", 0, 0, 2000);
   if (im.options.samples_per_side > 0 && im.options.samples_per_side < 8)
     fail(f.path() + ".samples_per_side", "must be 0 (automatic) or in [8, 2000]");
+  im.field = f.path() + ".file";
   try {
-    auto blade = std::make_shared<blade_import::ImportedBlade>(blade_import::read_geomturbo(im.file));
-    im.blade = blade;
-    im.sliced = std::make_shared<blade_import::SlicedBlade>(blade_import::slice_blade(*blade, im.options, c.blade.options));
+    im.blade = std::make_shared<const blade_import::ImportedBlade>(blade_import::read_geomturbo(im.file));
   } catch (const InvalidGeometry& e) {
-    fail(f.path() + ".file", e.what());
+    fail(im.field, e.what());
   }
-  c.blade = im.sliced->definition;
-  for (std::size_t i = 0; i < c.blade.sections.size(); ++i)
-    c.point_sources.push_back({f.path() + ".file (cut at span " + format_number(c.blade.sections[i].placement.span) + ")", "", {}});
+  im.cuts = blade_import::cut_count(im.options, im.blade->sections.size());
   c.blade_import = std::move(im);
 }
 
@@ -293,8 +290,12 @@ Config parse_config(const nlohmann::json& document, const std::filesystem::path&
     if (c.cooling.empty()) fail("output.formats", "\"network\" needs a \"cooling\" section (the coolant circuit is its passages)");
   }
   if (root.has("mesh")) c.mesh = mesh_config(root.at("mesh"));
-  if (root.has("grid")) c.grid = parse_grid_config(root.at("grid"), c.blade.sections.size());
+  if (root.has("grid")) c.grid = parse_grid_config(root.at("grid"), section_count(c));
   return c;
+}
+
+std::size_t section_count(const Config& config) {
+  return config.blade_import ? static_cast<std::size_t>(config.blade_import->cuts) : config.blade.sections.size();
 }
 
 Config parse_config_text(const std::string& text, const std::filesystem::path& base_dir, const std::string& default_name,

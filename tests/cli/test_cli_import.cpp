@@ -190,3 +190,23 @@ BOOST_AUTO_TEST_CASE(point_line_not_three_numbers) {
   t.replace(t.find("\n-2 "), 4, "\n-2 x");
   expect_refused(validate(t, "garbled"), "garbled", "expected");
 }
+
+// The config reader reads the file (syntax) only; its geometry is checked where the blade model is
+// built (build_model, which `coolinggen validate` runs), naming the same field.
+BOOST_AUTO_TEST_CASE(geometry_checked_by_the_model_build_not_the_reader) {
+  auto s = valid();
+  s[0] = profile(3);
+  test::TempDir dir("import_stage");
+  std::ofstream(dir.path / "short.geomTurbo") << file_text(s);
+  const nlohmann::json doc = {{"units", "mm"}, {"blade", {{"import", {{"format", "geomturbo"}, {"file", "short.geomTurbo"}}}}}};
+  const config::Config c = config::parse_config(doc, dir.path, "short");  // no cut, no geometry check
+  BOOST_TEST(config::section_count(c) == 11u);
+  try {
+    config::build_model(c);
+    BOOST_ERROR("build_model accepted a blade that does not reach the hub");
+  } catch (const config::ConfigError& e) {
+    const std::string what = e.what();
+    BOOST_TEST(what.rfind("blade.import.file: ", 0) == 0, what);
+    BOOST_TEST(what.find("does not reach the hub") != std::string::npos, what);
+  }
+}
