@@ -24,7 +24,10 @@ struct SlicedBlade {
 };
 
 /// Throws InvalidGeometry "<file>:<line>: ..." for hostile input (input_surface.hpp) and for sections
-/// that do not reach the hub or the casing (naming the section).
-SlicedBlade slice_blade(const ImportedBlade& blade, const ImportOptions& options, const blade::BladeOptions& blade_options);
+/// that do not reach the hub or the casing (naming the section). `channel` (optional): the config's
+/// meridional flow path (hub and casing equal to the blade's), whose explicit streamlines and sampling
+/// the cuts follow; its LE, TE and station lines are not used (the LE line is the import's).
+SlicedBlade slice_blade(const ImportedBlade& blade, const ImportOptions& options, const blade::BladeOptions& blade_options,
+                        const blade::MeridionalNetDefinition* channel = nullptr);
 
 }  // namespace cg::blade_import

@@ -9,7 +9,6 @@
 namespace cg::config {
 
 blade::BladeModel build_model(const Config& config, ProgressSink* progress) {
-  if (config.blade_import) return build_imported_model(config, progress);
   const blade::BladeDefinition& def = config.blade;
   // Check the parts separately first, so a failure names the part of the config it comes from.
   if (const auto* m = std::get_if<blade::MeridionalFlowPath>(&def.flow_path)) {
@@ -19,6 +18,7 @@ blade::BladeModel build_model(const Config& config, ProgressSink* progress) {
       throw ConfigError(std::string("flow_path: ") + e.what());
     }
   }
+  if (config.blade_import) return build_imported_model(config, progress);
   const double steps = static_cast<double>(def.sections.size() + 2);
   for (std::size_t i = 0; i < def.sections.size(); ++i) {
     const std::string name = "sections[" + std::to_string(i) + "]";

@@ -16,6 +16,7 @@
 #include "src/blade/blade_surface.hpp"
 #include "src/blade_import/import_options.hpp"
 #include "src/blade_import/imported_blade.hpp"
+#include "src/blade_import/section_table_reader.hpp"
 #include "src/config/config_error.hpp"
 #include "src/config/coolant_config.hpp"
 #include "src/config/cooling_config.hpp"
@@ -65,11 +66,13 @@ struct PointSource {
 /// against the file (the geometry checks: open or crossing sections, sections not reaching hub or
 /// casing, fidelity beyond the tolerance).
 struct BladeImport {
-  std::string format = "geomturbo";
-  std::string field = "blade.import.file";  ///< the field geometry errors name
-  std::string file;  ///< resolved path
+  std::string format = "geomturbo";  ///< "geomturbo" | "sections"
+  std::string field = "blade.import.file";  ///< the field geometry errors name ("blade.import.files")
+  std::vector<std::string> files;  ///< resolved paths (geomturbo: one)
   blade_import::ImportOptions options;
-  std::shared_ptr<const blade_import::ImportedBlade> blade;  ///< as read
+  std::shared_ptr<const blade_import::ImportedBlade> blade;  ///< geomturbo: as read
+  std::vector<blade_import::SectionTable> tables;            ///< sections: as read, hub -> tip
+  blade_import::TableFrame frame = blade_import::TableFrame::Xyz;
   int cuts = 0;  ///< stream-surface cuts = sections of the blade model (import_options.hpp)
 };
 

@@ -122,7 +122,8 @@ void hash_inputs(Sha256& h, const nlohmann::json& document, const config::Config
     const auto* p = std::get_if<blade::PointSectionDefinition>(&s.shape);
     if (p && !p->file.empty()) files.push_back(p->file);
   }
-  if (c.blade_import) files.push_back(c.blade_import->file);  // a changed import file changes the blade
+  if (c.blade_import)  // a changed import file changes the blade
+    files.insert(files.end(), c.blade_import->files.begin(), c.blade_import->files.end());
   files.insert(files.end(), c.cooling.source_files.begin(), c.cooling.source_files.end());
   for (const std::string& f : files) {
     std::ifstream in(f, std::ios::binary);
