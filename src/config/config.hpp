@@ -61,7 +61,8 @@ struct PointSource {
 };
 
 /// "blade.import": a blade designed by another tool (src/blade_import). The config reader reads the
-/// file (its syntax: a geomTurbo file that is not one is refused naming its line); build_model cuts it
+/// file(s) (their syntax: a geomTurbo file or section table that is not one is refused naming its
+/// line); build_model (imported_model.hpp) makes the section tables' sides, cuts the blade
 /// at the flow path's streamlines into point sections, builds the blade from them and measures it
 /// against the file (the geometry checks: open or crossing sections, sections not reaching hub or
 /// casing, fidelity beyond the tolerance).

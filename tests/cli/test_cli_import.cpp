@@ -11,11 +11,13 @@
 #include <sstream>
 
 #include "cli/run_cli.hpp"
+#include "cli/section_tables.hpp"
 #include "src/algo/project_point_surface.hpp"
 #include "src/blade_import/geomturbo_reader.hpp"
 #include "src/blade_import/geomturbo_writer.hpp"
 #include "src/config/builtin_example.hpp"
 #include "src/config/config.hpp"
+#include "src/pipeline/report.hpp"
 
 using namespace cg;
 
@@ -36,32 +38,6 @@ struct RoundTrip {
 // in metres and x r theta for annular rows, mm and x y z for cascades).
 enum class Via { GeomTurbo, Tables };
 
-nlohmann::json tables_import(const std::filesystem::path& geomturbo, const test::TempDir& dir, const config::Config& c) {
-  const blade_import::ImportedBlade b = blade_import::read_geomturbo(geomturbo.string());
-  const bool annular = b.kind == blade_import::RowKind::Annular;
-  nlohmann::json files = nlohmann::json::array();
-  for (std::size_t k = 0; k < b.sections.size(); ++k) {
-    const auto& s = b.sections[k];
-    std::vector<Eigen::Vector3d> loop = s.suction;
-    for (std::size_t i = s.pressure.size() - 2; i >= 1; --i) loop.push_back(s.pressure[i]);
-    std::rotate(loop.begin(), loop.begin() + static_cast<long>(s.suction.size() + s.pressure.size() / 2), loop.end());
-    const std::string name = "section_" + std::to_string(k) + ".txt";
-    std::ofstream out(dir.path / name);
-    out.precision(12);
-    out << (annular ? "x_m r_m theta_deg\n" : "# x y z, mm\n");
-    for (const auto& p : loop) {
-      if (annular)
-        out << p.x() / 1000 << " " << std::hypot(p.y(), p.z()) / 1000 << " " << std::atan2(p.z(), p.y()) * 180 / M_PI << "\n";
-      else
-        out << p.x() << ", " << p.y() << ", " << p.z() << "\n";
-    }
-    files.push_back(name);
-  }
-  nlohmann::json im = {{"format", "sections"}, {"files", files}, {"frame", annular ? "xrtheta" : "xyz"}};
-  if (annular) im["unit"] = "m";
-  return {{"units", "mm"}, {"flow_path", c.source.at("flow_path")}, {"blade", {{"import", im}}}};
-}
-
 // Exports `c`'s blade, imports it again, measures both ways.
 RoundTrip round_trip(const config::Config& c, const std::string& tag, Via via = Via::GeomTurbo) {
   RoundTrip r;
@@ -72,7 +48,7 @@ RoundTrip round_trip(const config::Config& c, const std::string& tag, Via via = 
   const auto file = dir.path / "blade.geomTurbo";
   blade_import::GeomTurboWriteOptions wo;
   blade_import::write_geomturbo_file(file.string(), original, wo);
-  const nlohmann::json doc = via == Via::Tables ? tables_import(file, dir, c)
+  const nlohmann::json doc = via == Via::Tables ? test::tables_import(file, dir.path, c.source.at("flow_path"))
                             : nlohmann::json{{"units", "mm"}, {"blade", {{"import", {{"format", "geomturbo"}, {"file", file.string()}}}}}};
   t0 = std::chrono::steady_clock::now();
   const config::Config ci = config::parse_config(doc, dir.path, tag);
@@ -335,4 +311,26 @@ BOOST_AUTO_TEST_CASE(tables_hostile) {
   BOOST_TEST(r.exit_code == 2, r.err);
   BOOST_TEST(r.err.find("error: blade.import.files[0]: ") != std::string::npos, r.err);
   BOOST_TEST(r.err.find("g.txt:3: expected three numbers (x y z)") != std::string::npos, r.err);
+}
+
+// Every table's bytes enter the input hash (a study's stage cache must not reuse a blade from an older table).
+BOOST_AUTO_TEST_CASE(tables_bytes_enter_the_input_hash) {
+  test::TempDir dir("import_tables_hash");
+  const auto t = tables_of(valid());
+  nlohmann::json files = nlohmann::json::array();
+  auto write = [&](double last_y) {
+    for (std::size_t k = 0; k < t.size(); ++k) {
+      std::ofstream out(dir.path / ("h" + std::to_string(k) + ".txt"));
+      for (std::size_t i = 0; i < t[k].size(); ++i)
+        out << t[k][i][0] << " " << (k == 2 && i == 5 ? last_y : t[k][i][1]) << " " << t[k][i][2] << "\n";
+    }
+  };
+  for (std::size_t k = 0; k < t.size(); ++k) files.push_back("h" + std::to_string(k) + ".txt");
+  const nlohmann::json doc = {{"units", "mm"}, {"flow_path", {{"type", "straight"}, {"span", 20}}},
+                              {"blade", {{"import", {{"format", "sections"}, {"files", files}, {"frame", "xyz"}}}}}};
+  write(t[2][5][1]);
+  const std::string before = pipeline::input_hash(config::parse_config(doc, dir.path, "h"));
+  write(t[2][5][1] + 0.001);
+  const std::string after = pipeline::input_hash(config::parse_config(doc, dir.path, "h"));
+  BOOST_TEST(before != after);
 }
