@@ -102,7 +102,9 @@ bool wall_features_against_occt(const blade::BladeModel& model, const features::
   features::PassageReport report;
   auto t0 = std::chrono::steady_clock::now();
   const std::clock_t c0 = std::clock();
-  features::WallFeatureBuild wb = features::build_wall_feature_tools(model, core, cb, report);
+  features::WallLines lines(model.surface, cb.inner_wall.surface);
+  const features::TrailingEdgePlan te = features::plan_trailing_edge(model, core, cb, lines);
+  features::WallFeatureBuild wb = features::build_wall_feature_tools(model, core, cb, te, report);
   const double t_tools = seconds_since(t0), cpu_tools = double(std::clock() - c0) / CLOCKS_PER_SEC;
   for (const auto& [stage, sec] : report.seconds) std::printf("    %-24s %7.3f s\n", stage.c_str(), sec);
   t0 = std::chrono::steady_clock::now();

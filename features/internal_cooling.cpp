@@ -22,13 +22,13 @@ void validate_passages(const blade::BladeModel& model, const PassagesDefinition&
   if (def.core) {
     check_core_definition(model, *def.core);
     check_wall_feature_definitions(*def.core);
-    check_trailing_edge_placement(model, *def.core);  // slots between the end walls, the cutback's lip
   }
   if (!def.radial_passages.empty()) build_radial_passages(model, def.radial_passages);  // checks, cheap tools
 }
 
-PassagesResult build_passages(const blade::BladeModel& model, const brep::NamedShape& blade,
-                              const PassagesDefinition& def, Verification verification) {
+PassagesResult build_passages(const blade::BladeModel& model, const brep::NamedShape& blade, const PassagesDefinition& def,
+                              const std::optional<CoreBuild>& walls, const TrailingEdgePlan& trailing_edge,
+                              Verification verification) {
   PassagesResult out;
   out.blade = blade;
   if (def.empty()) return out;
@@ -45,14 +45,15 @@ PassagesResult build_passages(const blade::BladeModel& model, const brep::NamedS
   std::optional<RadialPassageBuild> radial;
   std::vector<FeatureTool> interior, cuts;
   if (def.core) {
-    core = build_core_walls(model, *def.core);
+    require(walls.has_value(), "build_passages: a core needs the walls of its plan");
+    core = *walls;
     // The turbulator, pin and slot tools need only the walls: they are built in the background while
     // this thread builds the core's cells (the fillets and inlets there are single-threaded OCCT work),
     // on their own copy of the walls (end walls keep evaluation state). An error of the core comes
     // first, as when they ran one after the other; theirs still comes before the expensive booleans.
     PassageReport tool_report;
-    auto wall_tools = start_in_background([&model, &def, &tool_report, walls = *core] {
-      return build_wall_feature_tools(model, *def.core, walls, tool_report);
+    auto wall_tools = start_in_background([&model, &def, &tool_report, &trailing_edge, walls = *core] {
+      return build_wall_feature_tools(model, *def.core, walls, trailing_edge, tool_report);
     });
     build_core_cells(model, *def.core, *core);
     try {

@@ -3,7 +3,9 @@
 // and radial passages built as named tools (core_passages.hpp, radial_passages.hpp), applied to the blade
 // (passage_boolean.hpp), then measured on the built solid (passage_checks.hpp).
 #include <memory>
+#include <optional>
 
+#include "features/passages/core_passages.hpp"
 #include "features/passages/passage_definition.hpp"
 #include "features/passages/passage_report.hpp"
 #include "features/wall/wall_features.hpp"
@@ -14,7 +16,6 @@
 
 namespace cg::features {
 
-struct CoreBuild;
 
 struct PassagesResult {
   brep::NamedShape blade;  ///< the cooled blade, every face named
@@ -31,13 +32,16 @@ struct PassagesResult {
 /// radial passages against the wall), in milliseconds. Throws PassageInputError.
 void validate_passages(const blade::BladeModel& model, const PassagesDefinition& def);
 
-/// Builds `def` into `blade` (the solid of `model`). Throws PassageInputError for input that cannot be
+/// Builds `def` into `blade` (the solid of `model`) from the core's walls and the trailing edge's
+/// placement the plan made (`walls`: build_core_walls, required with a core; `trailing_edge`:
+/// plan_trailing_edge; features/plan/cooling_plan.hpp). Throws PassageInputError for input that cannot be
 /// built (field below "cooling" + where), FeatureFailure when a boolean or a design check fails (the
 /// thickness minimums: measured on the built solid, must reach the configured values).
 /// `verification` FinalOnly (or None): the boolean steps run their cheap checks and per-tool volume checks
 /// but no verify_solid (BRepCheck, free edges, closed mesh: ~1 s each on the blade); the caller then
 /// verifies the final solid once and, if that fails, builds again with it on to name the culprit.
-PassagesResult build_passages(const blade::BladeModel& model, const brep::NamedShape& blade,
-                              const PassagesDefinition& def, Verification verification = Verification::EachStep);
+PassagesResult build_passages(const blade::BladeModel& model, const brep::NamedShape& blade, const PassagesDefinition& def,
+                              const std::optional<CoreBuild>& walls, const TrailingEdgePlan& trailing_edge,
+                              Verification verification = Verification::EachStep);
 
 }  // namespace cg::features

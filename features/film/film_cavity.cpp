@@ -118,16 +118,18 @@ class ToolDistance {
 
 }  // namespace
 
-void add_wall_feature_obstacles(HoleTarget& target, const WallFeatureBuild& walls) {
+std::vector<TargetObstacle> wall_feature_obstacles(const WallFeatureBuild& walls) {
+  std::vector<TargetObstacle> out;
   const auto add = [&](const std::vector<FeatureTool>& tools) {
     for (const FeatureTool& t : tools) {
       auto d = std::make_shared<ToolDistance>(t.shape.shape);
-      target.obstacles.push_back({t.feature, [d](const Vec3& p) { return (*d)(p); }, true, ""});
+      out.push_back({t.feature, [d](const Vec3& p) { return (*d)(p); }, true, ""});
     }
   };
   add(walls.turbulators.tools);
   add(walls.trailing_edge.pin_tools);
   add(walls.trailing_edge.slot_tools);
+  return out;
 }
 
 HoleTarget hole_target_of_core(const blade::BladeModel& model, const CoreDefinition& def, const CoreBuild& core) {

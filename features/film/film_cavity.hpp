@@ -31,9 +31,10 @@ HoleTarget hole_target_of_core(const blade::BladeModel& model, const CoreDefinit
 /// points to it); `core` and `def` are copied where needed.
 FilmCavity film_cavity_of_core(const blade::BladeModel& model, const CoreDefinition& def, const CoreBuild& core);
 
-/// Adds the turbulators, pin fins and trailing-edge slots of `walls` to the obstacles of `target`: a hole
-/// must keep the film ligament from each (measured from its inlet rim, exact near the tool) and its
-/// tool must not reach into one; the error names the row's position field and the feature.
-void add_wall_feature_obstacles(HoleTarget& target, const WallFeatureBuild& walls);
+/// The turbulators, pin fins and trailing-edge slots of `walls` as hole obstacles: a hole must keep the
+/// film ligament from each (measured from its inlet rim, exact near the tool) and its tool must not reach
+/// into one; the error names the row's position field and the feature. Known only once their tools
+/// exist, so the build checks the planned holes against them (check_hole_obstacle).
+std::vector<TargetObstacle> wall_feature_obstacles(const WallFeatureBuild& walls);
 
 }  // namespace cg::features

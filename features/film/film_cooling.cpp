@@ -33,8 +33,10 @@ FilmPlan plan_film(const blade::BladeModel& model, FilmCavity& cavity, const Fil
   return plan;
 }
 
-FilmCoolingResult build_film_cooling(const blade::BladeModel& model, const brep::NamedShape& blade, FilmCavity cavity,
-                                     const FilmCoolingDefinition& def, const FeatureOptions& stage) {
+FilmCoolingResult build_film_cooling(const blade::BladeModel& model, const brep::NamedShape& blade, const FilmCavity& cavity,
+                                     FilmPlan plan, const FilmCoolingDefinition& def, const FeatureOptions& stage) {
+  require(cavity.target.model == &model && plan.insert_chambers.size() == def.inserts.size(),
+          "film cooling: the plan belongs to another blade model or definition");
   ProgressSink* const progress = stage.progress;
   FilmCoolingResult out;
   out.blade = blade;
@@ -47,8 +49,6 @@ FilmCoolingResult build_film_cooling(const blade::BladeModel& model, const brep:
     t0 = t;
   };
 
-  // The plan: inserts' chambers and input, reach, holes analysed (errors name the field).
-  FilmPlan plan = plan_film(model, cavity, def);
   std::vector<const InsertChamber*> insert_chambers;
   for (std::size_t k : plan.insert_chambers) insert_chambers.push_back(&cavity.chambers[k]);
   FilmHoleTools& tools = plan.holes;

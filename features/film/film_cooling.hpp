@@ -50,12 +50,13 @@ struct FilmPlan {
 /// (features/plan/cooling_plan.hpp) runs the same code. Throws FilmInputError.
 FilmPlan plan_film(const blade::BladeModel& model, FilmCavity& cavity, const FilmCoolingDefinition& def);
 
-/// The film plan, then the hole tools, inserts and booleans.
-/// Throws FilmInputError (field below "cooling") for input the blade cannot take, FeatureFailure when a
-/// boolean or a check fails. `cavity.target.model` must be `model`.
+/// The film stage on its plan (`plan`: plan_film on `cavity`, as the planning stage made them; nothing
+/// is placed again): the hole tools, inserts and booleans. Throws FilmInputError (field below "cooling")
+/// for input the blade cannot take, FeatureFailure when a boolean or a check fails.
+/// `cavity.target.model` must be `model`.
 /// `options.verification` FinalOnly, None: the holes' boolean step skips verify_solid (as build_passages);
 /// `options.progress`: progress and cancellation.
-FilmCoolingResult build_film_cooling(const blade::BladeModel& model, const brep::NamedShape& blade, FilmCavity cavity,
-                                     const FilmCoolingDefinition& def, const FeatureOptions& options = {});
+FilmCoolingResult build_film_cooling(const blade::BladeModel& model, const brep::NamedShape& blade, const FilmCavity& cavity,
+                                     FilmPlan plan, const FilmCoolingDefinition& def, const FeatureOptions& options = {});
 
 }  // namespace cg::features

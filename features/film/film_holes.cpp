@@ -99,6 +99,11 @@ FilmHoleTools make_film_hole_tools(const HoleTarget& target, const std::vector<H
   return out;
 }
 
+void check_film_holes_against(FilmHoleTools& holes, const std::vector<TargetObstacle>& obstacles, const FilmLimits& limits) {
+  for (std::size_t i = 0; i < holes.holes.size(); ++i)
+    for (const TargetObstacle& ob : obstacles) check_hole_obstacle(holes.holes[i], holes.geometry[i], ob, limits);
+}
+
 void add_hole_tools(FilmHoleTools& out) {
   const std::vector<HoleSpec>& holes = out.holes;
   out.tools.clear();

@@ -41,6 +41,11 @@ FilmHoleTools analyse_film_holes(const HoleTarget& target, const std::vector<Hol
 FilmHoleTools make_film_hole_tools(const HoleTarget& target, const std::vector<HoleSpec>& holes, const FilmLimits& limits,
                                    const HoleQuadrature& quadrature = {});
 
+/// The analysed `holes` against further obstacles (check_hole_obstacle, hole by hole): how the build
+/// checks the planned holes against the obstacles it learns only from their tools (turbulators, pins,
+/// slots: film_cavity.hpp), without placing or analysing them again. Throws FilmInputError.
+void check_film_holes_against(FilmHoleTools& holes, const std::vector<TargetObstacle>& obstacles, const FilmLimits& limits);
+
 /// The tool of every analysed hole of `holes` (into holes.tools, one per hole).
 void add_hole_tools(FilmHoleTools& holes);
 

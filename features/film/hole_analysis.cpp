@@ -40,7 +40,29 @@ PiecePoint piece_point(int piece, double a, double b, const FanSection& s) {
   }
 }
 
+[[noreturn]] void fail_hole(const HoleSpec& h, const std::string& sub, const std::string& what) {
+  throw FilmInputError(h.field + sub, h.name + " (span " + format_number(h.span) + ", chord " + format_number(h.chord) + "): " + what);
+}
+
 }  // namespace
+
+void check_hole_obstacle(const HoleSpec& h, HoleGeometry& g, const TargetObstacle& ob, const FilmLimits& limits) {
+  double lig = HUGE_VAL;
+  for (const Eigen::Vector3d& p : g.inlet_rim) lig = std::min(lig, ob.distance(p));
+  double touch = lig;
+  for (const Eigen::Vector3d& p : g.end_rim) touch = std::min(touch, ob.distance(p));
+  const std::string& field = ob.field.empty() ? h.position_field : ob.field;
+  if (ob.needs_ligament) {
+    if (lig < limits.min_ligament) {
+      const ValueLimitText t = format_value_limit(lig, limits.min_ligament, Allowed::above);
+      fail_hole(h, field,
+                (lig < 0 ? "overlaps " + ob.name + " by " + format_number(-lig) + " mm" : "comes " + t.value + " mm close to " + ob.name) +
+                    " where it enters the cavity; the ligament must be at least film_limits.min_ligament = " + t.limit + " mm");
+    }
+    if (lig < g.obstacle_ligament) g.obstacle_ligament = lig, g.nearest_obstacle = ob.name;
+  }
+  if (touch <= 0) fail_hole(h, field, "its tool would cut " + ob.name);
+}
 
 void gauss_legendre_01(int n, std::vector<double>& nodes, std::vector<double>& weights) {
   std::vector<double> x(static_cast<std::size_t>(std::max(n, 1))), w(x.size());
@@ -69,9 +91,7 @@ struct HoleAnalyser::Impl {
     gauss_legendre_01(q.piece, px, pw);
   }
 
-  [[noreturn]] static void fail(const HoleSpec& h, const std::string& sub, const std::string& what) {
-    throw FilmInputError(h.field + sub, h.name + " (span " + format_number(h.span) + ", chord " + format_number(h.chord) + "): " + what);
-  }
+  [[noreturn]] static void fail(const HoleSpec& h, const std::string& sub, const std::string& what) { fail_hole(h, sub, what); }
 
   // Chordwise coordinate of the foot of p on the outer wall (Newton from the exit's parameters, else the
   // global projection), on the section at `span` (NaN: the foot's own span). Evaluating the rim's feet on
@@ -392,22 +412,9 @@ void HoleAnalyser::Impl::Analysis::inlet_and_obstacles() {
       fail(h, h.position_field, "its inlet straddles " + chamber->name + " and " +
                                (k < 0 ? std::string("no chamber (a rib)") : target.chambers[k].name));
   }
-  for (const TargetObstacle& ob : target.obstacles) {
-    double lig = HUGE_VAL;
-    for (const Eigen::Vector3d& p : inlet_rim) lig = std::min(lig, ob.distance(p));
-    double touch = lig;
-    for (const Eigen::Vector3d& p : end_rim) touch = std::min(touch, ob.distance(p));
-    if (ob.needs_ligament) {
-      if (lig < limits.min_ligament) {
-        const ValueLimitText t = format_value_limit(lig, limits.min_ligament, Allowed::above);
-        fail(h, ob.field.empty() ? h.position_field : ob.field,
-             (lig < 0 ? "overlaps " + ob.name + " by " + format_number(-lig) + " mm" : "comes " + t.value + " mm close to " + ob.name) +
-                 " where it enters the cavity; the ligament must be at least film_limits.min_ligament = " + t.limit + " mm");
-      }
-      if (lig < g.obstacle_ligament) g.obstacle_ligament = lig, g.nearest_obstacle = ob.name;
-    }
-    if (touch <= 0) fail(h, ob.field.empty() ? h.position_field : ob.field, "its tool would cut " + ob.name);
-  }
+  g.inlet_rim = inlet_rim;
+  g.end_rim = end_rim;
+  for (const TargetObstacle& ob : target.obstacles) check_hole_obstacle(h, g, ob, limits);
 }
 
 // Breakout width along the row: extent of the outline; on the cylinder's evenly spaced rim the extreme

@@ -78,6 +78,9 @@ struct HoleGeometry {
   /// the axis and the radius of a ball about each that contains the hole's cross-section there.
   std::vector<Eigen::Vector3d> envelope_points;
   std::vector<double> envelope_radii;
+  /// Where the metering disc's rim lines enter the cavity, and the tool's end rim: what the ligament to
+  /// an obstacle and the tool's clearance of it are measured at (check_hole_obstacle).
+  std::vector<Eigen::Vector3d> inlet_rim, end_rim;
 };
 
 /// Analyses holes against one target. One per thread (owns ray casters and work buffers); the target
@@ -98,6 +101,14 @@ class HoleAnalyser {
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
+
+/// Hole `hole` (analysed into `g`) against one obstacle: the ligament from its inlet rim must be at least
+/// limits.min_ligament (when the obstacle needs one; the nearest such obstacle is kept in `g`) and its
+/// tool's end rim must not reach into the obstacle. The check HoleAnalyser::analyse runs on the target's
+/// obstacles; the build runs it on the planned holes for the obstacles known only from their tools
+/// (turbulators, pins, slots: film_cavity.hpp). Throws FilmInputError naming the obstacle's field or the
+/// row's position field.
+void check_hole_obstacle(const HoleSpec& hole, HoleGeometry& g, const TargetObstacle& obstacle, const FilmLimits& limits);
 
 /// Gauss-Legendre nodes (ascending) and weights on [0, 1] (src/analyze/gauss_legendre.hpp mapped).
 void gauss_legendre_01(int n, std::vector<double>& nodes, std::vector<double>& weights);

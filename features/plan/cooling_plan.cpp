@@ -6,6 +6,7 @@
 #include "features/film/film_prechecks.hpp"
 #include "features/film/film_rows.hpp"
 #include "features/internal_cooling.hpp"
+#include "features/wall/trailing_edge.hpp"
 #include "features/wall/turbulators.hpp"
 
 namespace cg::features {
@@ -29,14 +30,15 @@ CoolingPlan plan_cooling(const blade::BladeModel& model, const PassagesDefinitio
   if (!core) return plan;
   plan.core = build_core_walls(model, *core);
   lap("core");
-  if (!core->turbulators.empty()) {
+  if (!core->turbulators.empty() || core->trailing_edge) {
     WallLines lines(model.surface, plan.core->inner_wall.surface);
     plan.turbulators = build_turbulators(model, *core, *plan.core, lines, TurbulatorOutput::kPlacement).turbulators;
-    lap("turbulators");
+    plan.trailing_edge = plan_trailing_edge(model, *core, *plan.core, lines);
+    lap("wall_features");
   }
   if (film.empty()) return plan;
-  FilmCavity cavity = film_cavity_of_core(model, *core, *plan.core);
-  plan.film = plan_film(model, cavity, film);
+  plan.film_cavity = film_cavity_of_core(model, *core, *plan.core);
+  plan.film = plan_film(model, *plan.film_cavity, film);
   lap("film");
   return plan;
 }

@@ -291,16 +291,6 @@ void check_lip(const TrailingEdgeDefinition& te, const TeFrame& f, double s) {
 
 }  // namespace
 
-void check_trailing_edge_placement(const blade::BladeModel& model, const CoreDefinition& def) {
-  if (!def.trailing_edge) return;
-  const blade::BladeCoordinates coords(model);
-  const std::optional<EndWall> hub = def.hub_floor.open ? std::nullopt : std::optional<EndWall>(EndWall(model, SpanEnd::Hub, def.hub_floor.thickness));
-  const std::optional<EndWall> tip = def.tip_cap.open ? std::nullopt : std::optional<EndWall>(EndWall(model, SpanEnd::Tip, def.tip_cap.thickness));
-  const SlotLayout layout = slot_layout(model, coords, def, hub ? &*hub : nullptr, tip ? &*tip : nullptr);
-  if (def.trailing_edge->type != TrailingEdgeType::PressureSideCutback) return;
-  for (double s : layout.spans) check_lip(*def.trailing_edge, te_frame(coords, def, s), s);
-}
-
 namespace {
 
 // The cutback's floor leaves the blade through one side of the TE's rounding, at least 0.1 mm from its
@@ -416,11 +406,10 @@ void add_cutback(const TrailingEdgeDefinition& te, WallLines& lines, const TeFra
   tool_volume += vb.volume;
 }
 
-// Slot `name` at span s: its placement, its channel from the chamber (and its cutback), its tool and
-// its info in `out`; its inlet station lowers inlet_x_min, its construction volume is appended.
-void build_slot(const std::string& name, double s, const TrailingEdgeDefinition& te, const blade::BladeCoordinates& coords,
-                const CoreDefinition& def, const SlotLayout& layout, WallLines& lines, TrailingEdgeBuild& out,
-                double& inlet_x_min, std::vector<double>& construction_volumes) {
+// Slot `name` at span s: its frame, where it sits across the blade (place_slot), its inlet station in
+// the last chamber and, centreline, its widths; `count` slots at `pitch` (the layout's).
+SlotInfo plan_slot(const std::string& name, double s, const TrailingEdgeDefinition& te, const blade::BladeCoordinates& coords,
+                   const CoreDefinition& def, double pitch, int count, WallLines& lines) {
   const bool cutback = te.type == TrailingEdgeType::PressureSideCutback;
   const double taper = std::tan(te.land_taper_deg * kPi / 180);
   const TeFrame f = te_frame(coords, def, s);
@@ -431,41 +420,72 @@ void build_slot(const std::string& name, double s, const TrailingEdgeDefinition&
   info.x = f.x;
   info.y = f.y;
   info.z = f.z;
+  info.te_x = f.te_x;
+  info.crease_x = f.crease_x;
+  info.crease_y = (blade::inner_wall_crease(coords, def.wall_thickness, s).crease - f.o).dot(f.y);
   info.height = te.slot_height;
   info.width = te.slot_width;
   info.x_end = f.te_x + 1.0;
-  const double w = te.slot_width;
   place_slot(te, cutback, lines, f, s, info);
-  const double y0 = info.floor_y, y1 = y0 + te.slot_height, h = te.slot_height;
   // Centreline: each land side turns by land_taper_deg from the crease (x = 0, slot width w) on, so
   // the slot narrows towards the TE (and widens upstream, inside the chamber).
   const double slot_taper = cutback ? 0.0 : taper;
-  const Inlet in = inlet_station(lines, f, f.crease_x, y0, h, w, slot_taper, cutback);
+  const double w = te.slot_width, h = te.slot_height;
+  const Inlet in = inlet_station(lines, f, f.crease_x, info.floor_y, h, w, slot_taper, cutback);
   if (std::isnan(in.x))
     throw PassageInputError(field("slot_height"), name + " does not fit into the last chamber at span " + format_number(s) +
                                                        ": no station where the chamber holds its inlet (" + format_number(h) +
                                                        " x " + format_number(w) + " mm, 0.05 mm clear)");
   info.x_inlet = in.x;
-  inlet_x_min = std::min(inlet_x_min, in.x);
+  info.y_inlet = in.y;
+  if (!cutback) {
+    const double xc = info.x_end;
+    check_centreline_widths(te, name, s, pitch, count, in.x, xc, w - 2 * in.x * slot_taper, w - 2 * xc * slot_taper);
+  }
+  return info;
+}
+
+// The frame slot `info` was placed in.
+TeFrame frame_of(const SlotInfo& info) {
+  TeFrame f;
+  f.span = info.span;
+  f.o = info.origin;
+  f.x = info.x;
+  f.y = info.y;
+  f.z = info.z;
+  f.te_x = info.te_x;
+  f.crease_x = info.crease_x;
+  return f;
+}
+
+// The tool of planned slot `planned`: its channel from the chamber (and its cutback), its expected
+// volume, and its info in `out`; its construction volume is appended.
+void build_slot(const SlotInfo& planned, const TrailingEdgeDefinition& te, WallLines& lines, TrailingEdgeBuild& out,
+                std::vector<double>& construction_volumes) {
+  const bool cutback = te.type == TrailingEdgeType::PressureSideCutback;
+  const double taper = std::tan(te.land_taper_deg * kPi / 180);
+  const TeFrame f = frame_of(planned);
+  SlotInfo info = planned;
+  const std::string& name = info.name;
+  const double w = te.slot_width, y0 = info.floor_y, y1 = y0 + te.slot_height, h = te.slot_height;
+  const double slot_taper = cutback ? 0.0 : taper;
+  const double x_in = info.x_inlet, y_in = info.y_inlet;
   // Channel: from the inlet face in the chamber (centred in it for a cutback) straight to the slot's
   // exit face under the lip (cutback) or past the TE (centreline).
   const double xc = cutback ? info.x_lip : info.x_end;
-  const double w_in = w - 2 * in.x * slot_taper, w_out = w - 2 * xc * slot_taper;
-  if (!cutback)
-    check_centreline_widths(te, name, s, layout.pitch, static_cast<int>(layout.spans.size()), in.x, xc, w_in, w_out);
-  const RuledBlock channel{bilinear_patch(f.at(in.x, in.y, -0.5 * w_in), f.at(in.x, in.y + h, -0.5 * w_in),
-                                          f.at(in.x, in.y, 0.5 * w_in), f.at(in.x, in.y + h, 0.5 * w_in)),
+  const double w_in = w - 2 * x_in * slot_taper, w_out = w - 2 * xc * slot_taper;
+  const RuledBlock channel{bilinear_patch(f.at(x_in, y_in, -0.5 * w_in), f.at(x_in, y_in + h, -0.5 * w_in),
+                                          f.at(x_in, y_in, 0.5 * w_in), f.at(x_in, y_in + h, 0.5 * w_in)),
                            bilinear_patch(f.at(xc, y0, -0.5 * w_out), f.at(xc, y1, -0.5 * w_out),
                                           f.at(xc, y0, 0.5 * w_out), f.at(xc, y1, 0.5 * w_out))};
   // The line of the channel through the crease (the inner wall's C0 edge) is a kink of the integrand.
-  const double lc = (f.crease_x - in.x) / (xc - in.x);
-  const double y_crease = (blade::inner_wall_crease(coords, def.wall_thickness, s).crease - f.o).dot(f.y);
-  const double a_crease = (y_crease - in.y - lc * (y0 - in.y)) / h;
+  const double lc = (f.crease_x - x_in) / (xc - x_in);
+  const double a_crease = (info.crease_y - y_in - lc * (y0 - y_in)) / h;
   const BlockIntegral vc = integrate_block(channel, lines, Region::Chamber, Region::Material,
                                            cutback ? Region::Material : Region::Outside,
                                            {kCellsChannel, kCellsChannel, {a_crease}, true});
   if (!vc.ok)
-    throw PassageInputError(field("slot_height"), name + " at span " + format_number(s) + " does not run from the chamber through "
+    throw PassageInputError(field("slot_height"), name + " at span " + format_number(info.span) + " does not run from the chamber through "
                                                        "the wall as placed (a line of it leaves the blade early)");
   brep::NamedShape tool = ruled_block_solid(channel, name);
   double expected = vc.in_region, tool_volume = vc.volume;
@@ -494,9 +514,9 @@ void check_slot_volumes(const TrailingEdgeBuild& out, const std::vector<double>&
 }
 
 // Pin fin `name` of row `row` at span s, station x (upstream of the slots): clear of the last rib,
-// across the chamber, its tool and its info in `out`.
-void build_pin_fin(const std::string& name, int row, double s, double x, const PinFinDefinition& pf,
-                   const blade::BladeCoordinates& coords, const CoreDefinition& def, WallLines& lines, TrailingEdgeBuild& out) {
+// across the chamber (axis, ends half a wall thickness inside both walls).
+PinInfo plan_pin_fin(const std::string& name, int row, double s, double x, const PinFinDefinition& pf,
+                     const blade::BladeCoordinates& coords, const CoreDefinition& def, WallLines& lines) {
   const RibDefinition* last_rib = def.ribs.empty() ? nullptr : &def.ribs.back();
   const double r = 0.5 * pf.diameter;
   const TeFrame f = te_frame(coords, def, s);
@@ -525,16 +545,34 @@ void build_pin_fin(const std::string& name, int row, double s, double x, const P
   if (hits.size() != 2) throw PassageInputError(field("pin_fins.rows"), name + ": no chamber across its axis at span " + format_number(s));
   const double lo_a = -8.0 + 16.0 * hits[0], hi_a = -8.0 + 16.0 * hits[1];
   const double t = def.wall_thickness.min_value();
-  const Vec3 base = mid + (lo_a - 0.5 * t) * axis;
-  const double length = hi_a - lo_a + t;
-  const Vec3 e1 = f.z.cross(axis).normalized(), e2 = axis.cross(e1);
+  PinInfo info;
+  info.name = name;
+  info.span = s;
+  info.row = row;
+  info.base = mid + (lo_a - 0.5 * t) * axis;
+  info.axis = axis;
+  info.z = f.z;
+  info.length = hi_a - lo_a + t;
+  info.diameter = pf.diameter;
+  info.chamber_length = hi_a - lo_a;
+  return info;
+}
+
+// The tool of planned pin `planned`: its volume inside the chamber (both ends must lie in the walls) and
+// its cylinder, with its info in `out`.
+void build_pin_fin(const PinInfo& planned, WallLines& lines, TrailingEdgeBuild& out) {
+  PinInfo info = planned;
+  const std::string& name = info.name;
+  const double r = 0.5 * info.diameter, length = info.length;
+  const Vec3 &base = info.base, &axis = info.axis;
+  const Vec3 e1 = info.z.cross(axis).normalized(), e2 = axis.cross(e1);
   const double added = disc_integral(r, [&](double rho, double phi_) {
     const Vec3 off = rho * (std::cos(phi_) * e1 + std::sin(phi_) * e2);
     Region end;
     const double frac = total(lines.intervals(base + off, base + off + length * axis, Region::Material,
                                               Region::Chamber, &end));
     if (end != Region::Material)
-      throw PassageInputError(field("pin_fins.diameter"), name + " at span " + format_number(s) + " does not end inside "
+      throw PassageInputError(field("pin_fins.diameter"), name + " at span " + format_number(info.span) + " does not end inside "
                                                                  "both walls (diameter too large for the chamber "
                                                                  "there)");
     return frac * length;
@@ -548,23 +586,14 @@ void build_pin_fin(const std::string& name, int row, double s, double x, const P
   ft.shape.shape = cyl.Shape();
   for (const TopoDS_Shape& face : faces_of(cyl.Shape())) ft.shape.faces.push_back({TopoDS::Face(face), name});
   ft.expected_volume = added;
-  PinInfo info;
-  info.name = name;
-  info.span = s;
-  info.row = row;
-  info.base = base;
-  info.axis = axis;
-  info.length = length;
-  info.diameter = pf.diameter;
-  info.chamber_length = hi_a - lo_a;
   info.added_volume = added;
   out.pin_tools.push_back(ft);
   out.pins.push_back(info);
 }
 
 // Pin fins: staggered rows upstream of the slots' inlets (the most upstream one, inlet_x_min).
-void build_pin_fins(const PinFinDefinition& pf, const blade::BladeCoordinates& coords, const CoreDefinition& def,
-                    const SpanLine& line, WallLines& lines, double inlet_x_min, TrailingEdgeBuild& out) {
+void plan_pin_fins(const PinFinDefinition& pf, const blade::BladeCoordinates& coords, const CoreDefinition& def,
+                   const SpanLine& line, WallLines& lines, double inlet_x_min, TrailingEdgePlan& out) {
   const double r = 0.5 * pf.diameter;
   const double plo = r, phi = line.length() - r;
   int number = 0;
@@ -580,17 +609,17 @@ void build_pin_fins(const PinFinDefinition& pf, const blade::BladeCoordinates& c
       const std::string name = "pin_fin_" + numbered(++number, 3);
       // Row station: upstream of the slots' inlets (the most upstream one, in this frame).
       const double x = inlet_x_min - pf.slot_gap - r - row * pf.streamwise_pitch;
-      build_pin_fin(name, row, s, x, pf, coords, def, lines, out);
+      out.pins.push_back(plan_pin_fin(name, row, s, x, pf, coords, def, lines));
     }
   }
 }
 
 }  // namespace
 
-TrailingEdgeBuild build_trailing_edge(const blade::BladeModel& model, const CoreDefinition& def, const CoreBuild& core,
-                                      WallLines& lines) {
+TrailingEdgePlan plan_trailing_edge(const blade::BladeModel& model, const CoreDefinition& def, const CoreBuild& core,
+                                    WallLines& lines) {
   check_trailing_edge_definition(def);
-  TrailingEdgeBuild out;
+  TrailingEdgePlan out;
   if (!def.trailing_edge) return out;
   const TrailingEdgeDefinition& te = *def.trailing_edge;
   const bool cutback = te.type == TrailingEdgeType::PressureSideCutback;
@@ -602,12 +631,23 @@ TrailingEdgeBuild build_trailing_edge(const blade::BladeModel& model, const Core
                                         core.tip_cap ? &*core.tip_cap : nullptr);
   int slot_number = 0;
   double inlet_x_min = HUGE_VAL;
+  for (double s : layout.spans) {
+    out.slots.push_back(plan_slot("te_slot_" + numbered(++slot_number, 2), s, te, coords, def, layout.pitch,
+                                  static_cast<int>(layout.spans.size()), lines));
+    inlet_x_min = std::min(inlet_x_min, out.slots.back().x_inlet);
+  }
+  if (te.pin_fins) plan_pin_fins(*te.pin_fins, coords, def, layout.line, lines, inlet_x_min, out);
+  return out;
+}
+
+TrailingEdgeBuild build_trailing_edge(const CoreDefinition& def, const TrailingEdgePlan& plan, WallLines& lines) {
+  TrailingEdgeBuild out;
+  if (!def.trailing_edge) return out;
+  out.through_crease = plan.through_crease;
   std::vector<double> construction_volumes;
-  for (double s : layout.spans)
-    build_slot("te_slot_" + numbered(++slot_number, 2), s, te, coords, def, layout, lines, out, inlet_x_min,
-               construction_volumes);
+  for (const SlotInfo& slot : plan.slots) build_slot(slot, *def.trailing_edge, lines, out, construction_volumes);
   check_slot_volumes(out, construction_volumes);
-  if (te.pin_fins) build_pin_fins(*te.pin_fins, coords, def, layout.line, lines, inlet_x_min, out);
+  for (const PinInfo& pin : plan.pins) build_pin_fin(pin, lines, out);
   return out;
 }
 

@@ -43,7 +43,9 @@ struct SlotInfo {
                   z = Eigen::Vector3d::UnitZ();  ///< the slot's frame (see the header comment)
   double floor_y = 0, height = 0, width = 0;     ///< mm, the slot's floor, height and width at its inlet
   double x_inlet = 0, x_lip = 0, x_end = 0;      ///< mm along x: inlet face, lip (cutback) or TE, tool end
-  double removed_volume = 0;                     ///< mm^3, expected
+  double y_inlet = 0;                            ///< mm along y: the inlet face's floor
+  double te_x = 0, crease_x = 0, crease_y = 0;   ///< mm in the frame: the TE point's x, the crease's x and y
+  double removed_volume = 0;                     ///< mm^3, expected (0 until the tool is built)
 };
 
 struct PinInfo {
@@ -51,9 +53,18 @@ struct PinInfo {
   double span = 0;
   int row = 0;
   Eigen::Vector3d base = Eigen::Vector3d::Zero(), axis = Eigen::Vector3d::UnitY();  ///< suction-side end, unit axis
+  Eigen::Vector3d z = Eigen::Vector3d::UnitZ();  ///< the TE frame's span direction (the pin's disc quadrature starts from z x axis)
   double length = 0, diameter = 0;  ///< mm (tool length, end to end)
   double chamber_length = 0;        ///< mm, across the chamber along the axis (at the axis)
-  double added_volume = 0;          ///< mm^3, expected
+  double added_volume = 0;          ///< mm^3, expected (0 until the tool is built)
+};
+
+/// Where every slot and pin goes (plan_trailing_edge): placed, with every check that needs no tool.
+struct TrailingEdgePlan {
+  std::vector<SlotInfo> slots;
+  std::vector<PinInfo> pins;
+  /// Centreline slots cut through the inner wall's crease (see TrailingEdgeBuild::through_crease).
+  bool through_crease = false;
 };
 
 struct TrailingEdgeBuild {
@@ -68,17 +79,19 @@ struct TrailingEdgeBuild {
 /// Checks without geometry: sizes, slot pitch > slot width, count, taper (PassageInputError with
 /// "core.trailing_edge.<field>").
 void check_trailing_edge_definition(const CoreDefinition& def);
-/// After check_trailing_edge_definition (check_wall_feature_definitions), what needs the blade model but no solid: the slots' layout
-/// between the end walls (pitch, count) and, for a cutback, the lip downstream of the last chamber at
-/// every slot (the same code build_trailing_edge runs, before the first boolean).
-void check_trailing_edge_placement(const blade::BladeModel& model, const CoreDefinition& def);
-
-/// Builds the slot and pin tools. Throws PassageInputError when they do not fit (the slot does not fit
+/// The placement of the slots and pins on the core's walls (the planning stage's part,
+/// features/plan/cooling_plan.hpp; no tools): the slots' layout between the end walls (pitch, count),
+/// each slot's frame, lip, floor and inlet station, each pin's station, axis and length. Throws
+/// PassageInputError when they do not fit (a cutback longer than the TE region, the slot does not fit
 /// the chamber, no suction-side wall left under the cutback or, centreline, less than 0.1 mm beside the
-/// slot over the first half of the TE region, cutback longer than the TE region, a taper that closes the
-/// slot or (centreline) widens the inlets into each other, pins reaching the last rib), FeatureFailure
-/// for OCCT failures.
-TrailingEdgeBuild build_trailing_edge(const blade::BladeModel& model, const CoreDefinition& def, const CoreBuild& core,
-                                      WallLines& lines);
+/// slot over the first half of the TE region, a floor through the TE's tip, a taper that closes the slot
+/// or (centreline) widens the inlets into each other, pins reaching the last rib or finding no chamber).
+TrailingEdgePlan plan_trailing_edge(const blade::BladeModel& model, const CoreDefinition& def, const CoreBuild& core,
+                                    WallLines& lines);
+
+/// The slot and pin tools of `plan` (plan_trailing_edge of the same definition and core) with their
+/// independent volumes. Throws PassageInputError when a slot's channel leaves the blade early or a pin
+/// does not end inside both walls (found by the volume quadrature), FeatureFailure for OCCT failures.
+TrailingEdgeBuild build_trailing_edge(const CoreDefinition& def, const TrailingEdgePlan& plan, WallLines& lines);
 
 }  // namespace cg::features

@@ -29,14 +29,15 @@ void check_wall_feature_definitions(const CoreDefinition& def) {
 }
 
 WallFeatureBuild build_wall_feature_tools(const blade::BladeModel& model, const CoreDefinition& def,
-                                          const CoreBuild& core, PassageReport& report) {
+                                          const CoreBuild& core, const TrailingEdgePlan& trailing_edge,
+                                          PassageReport& report) {
   WallFeatureBuild b;
   if (def.turbulators.empty() && !def.trailing_edge) return b;
   Lap lap(report);
   WallLines lines(model.surface, core.inner_wall.surface);
   b.turbulators = build_turbulators(model, def, core, lines);
   lap("turbulator_tools");
-  b.trailing_edge = build_trailing_edge(model, def, core, lines);
+  b.trailing_edge = build_trailing_edge(def, trailing_edge, lines);
   lap("trailing_edge_tools");
   return b;
 }

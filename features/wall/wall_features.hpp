@@ -26,11 +26,13 @@ struct WallFeatureBuild {
 /// The checks of the definitions that need no geometry (PassageInputError).
 void check_wall_feature_definitions(const CoreDefinition& def);
 
-/// Builds the turbulator, pin-fin and slot tools of `def` (placement and the expected volumes need only
-/// the model and the core's inner wall, not the part). Throws PassageInputError for input that does not
-/// fit, FeatureFailure for OCCT failures in building a tool.
+/// Builds the turbulator, pin-fin and slot tools of `def` (the slots and pins where `trailing_edge`,
+/// the plan's, placed them; the expected volumes need only the model and the core's inner wall, not the
+/// part). Throws PassageInputError for input that does not fit, FeatureFailure for OCCT failures in
+/// building a tool.
 WallFeatureBuild build_wall_feature_tools(const blade::BladeModel& model, const CoreDefinition& def,
-                                          const CoreBuild& core, PassageReport& report);
+                                          const CoreBuild& core, const TrailingEdgePlan& trailing_edge,
+                                          PassageReport& report);
 
 /// Applies the tools of `build` to `blade` (the blade with its chambers): one BooleanStep per group
 /// (turbulators: Fuse, pin fins: Fuse, slots: Cut), each with its cheap checks and per-tool volume

@@ -61,8 +61,8 @@ const char* builtin_example_json() {
   },
   "coolant": {
     "supply": {"total_pressure_pa": 2.5e6, "total_temperature_k": 850},
-    "sinks": {"static_pressure_pa": 1.3e6, "suction_side_pa": 1.1e6, "pressure_side_pa": 1.5e6, "showerhead_pa": 1.6e6,
-              "trailing_edge_pa": 1.15e6},
+    "sinks": {"static_pressure_pa": 1.3e6, "suction_side_pa": 1.1e6, "pressure_side_pa": 1.4e6, "showerhead_pa": 1.47e6,
+              "trailing_edge_pa": 1.15e6, "rows": {"film_row_2": 1.15e6}},
     "rotational_speed_rpm": 13000
   },
   "output": {"step_schema": "AP214"}

@@ -22,6 +22,11 @@ double CoolantConfig::sink(SinkKind kind) const {
   return std::isnan(p) ? sink_static_pressure : p;
 }
 
+double CoolantConfig::sink(const std::string& row, SinkKind kind) const {
+  const auto it = sink_by_row.find(row);
+  return it != sink_by_row.end() ? it->second : sink(kind);
+}
+
 CoolantConfig parse_coolant(const Field& f) {
   f.expect_object({"supply", "sinks", "gas", "rotational_speed_rpm", "time_limit_s"});
   CoolantConfig c;
@@ -30,13 +35,19 @@ CoolantConfig parse_coolant(const Field& f) {
   c.supply_total_pressure = supply.at("total_pressure_pa").number(kPressure, "Pa");
   c.supply_total_temperature = supply.at("total_temperature_k").number(closed(200, 2000), "K");
   const Field sinks = f.at("sinks");
-  sinks.expect_object({"static_pressure_pa", "suction_side_pa", "pressure_side_pa", "showerhead_pa", "trailing_edge_pa", "tip_pa"});
+  sinks.expect_object({"static_pressure_pa", "suction_side_pa", "pressure_side_pa", "showerhead_pa", "trailing_edge_pa", "tip_pa", "rows"});
   // Every sink below the supply: otherwise the exit would feed the blade.
   const Range below = {1e3, c.supply_total_pressure, false, true};
   c.sink_static_pressure = sinks.at("static_pressure_pa").number(below, "Pa");
   for (int k = 0; k < 5; ++k)
     c.sink_by_kind[static_cast<std::size_t>(k)] = sinks.has(kSinkFields[k]) ? sinks.at(kSinkFields[k]).number(below, "Pa")
                                                    : std::numeric_limits<double>::quiet_NaN();
+  if (sinks.has("rows")) {
+    // Row names are checked against the cooling section where both are known (config.cpp).
+    const Field rows = sinks.at("rows");
+    if (!rows.is_object()) fail(rows.path(), "must be an object of exit rows and their static pressures (Pa)");
+    for (const auto& item : rows.json().items()) c.sink_by_row[item.key()] = rows.at(item.key().c_str()).number(below, "Pa");
+  }
   if (f.has("gas")) {
     const Field gas = f.at("gas");
     gas.expect_object({"gas_constant_j_kg_k", "cp_j_kg_k", "viscosity_pa_s"});

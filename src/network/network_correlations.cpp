@@ -51,8 +51,10 @@ PinBank pin_bank(const features::PinFinDefinition& p, int pins) {
   b.x_d = p.streamwise_pitch / p.diameter;
   b.rows = p.rows;
   b.pins = pins;
-  b.loss_per_row = 4 * 0.317 * std::pow(1e4, -0.132);
+  b.loss_per_row = pin_row_loss(1e4);
   return b;
 }
+
+double pin_row_loss(double re_d) { return 4 * 0.317 * std::pow(std::clamp(re_d, 1e3, 1e5), -0.132); }
 
 }  // namespace cg::network

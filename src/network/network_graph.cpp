@@ -6,25 +6,36 @@
 #include <memory>
 #include <set>
 
+#include <BRepAdaptor_Surface.hxx>
 #include <BRepBndLib.hxx>
+#include <BRepTools.hxx>
 #include <Bnd_Box.hxx>
 
 #include "features/passages/section_surface.hpp"
 #include "src/blade/blade_coordinates.hpp"
 #include "src/core/constants.hpp"
 #include "src/network/network_correlations.hpp"
+#include "src/network/network_sections.hpp"
 
 namespace cg::network {
 namespace {
 
 using Vec3 = Eigen::Vector3d;
 using features::SpanEnd;
+using Sections = std::map<std::string, std::vector<features::CrossSection>>;
 
-// One station of a passage: a measured section, or the passage's end (end wall or open end) with the
-// nearest measured section's area.
+// End stations are cut this far inside the end wall or open end (mm): on the end face itself a section
+// would be ill-defined, and the piece between is negligible (1e-4 of a 76 mm span).
+constexpr double kEndOffsetMm = 0.01;
+// A chamber (or radial passage) has at least this many segments carrying flow (issue: >= 9 per chamber).
+constexpr int kMinSegments = 9;
+
+// One station of a passage: a section measured on the built part, or the passage's end (end wall or open
+// end), measured kEndOffsetMm inside it.
 struct Station {
   double span = 0, area = 0, perimeter = 0;
-  bool measured = false;
+  bool end = false;       ///< at an end wall or open end
+  bool measured = false;  ///< false: no section of this passage there, the nearest measured section's area
   Vec3 point = Vec3::Zero();  ///< on the passage's mid line
   int node = 0;
 };
@@ -62,8 +73,11 @@ void join_stations(Element& e, const Station& a, const Station& b) {
 
 class Builder {
  public:
-  explicit Builder(const NetworkInput& in)
-      : in_(in), c_(*in.config), bc_(*in.config->coolant), coords_(std::make_unique<blade::BladeCoordinates>(*in.model)) {}
+  /// `cuts`: sections of the passages measured on the built part (measure_stations) at the passage
+  /// report's spans, the end stations' (station_spans) and `extra` spans per passage.
+  Builder(const NetworkInput& in, const Sections& cuts, const std::map<std::string, std::vector<double>>& extra)
+      : in_(in), c_(*in.config), bc_(*in.config->coolant), coords_(std::make_unique<blade::BladeCoordinates>(*in.model)),
+        cuts_(cuts), extra_(extra) {}
 
   Network run();
 
@@ -80,7 +94,6 @@ class Builder {
   }
   Vec3 mid_point(const Passage& p, double span) const;
   double radius(const Vec3& p) const { return rotor_ ? std::hypot(p.y(), p.z()) : kUnset; }
-  double end_span(SpanEnd end) const;
   void gas();
   void passages();
   void orient();
@@ -93,7 +106,7 @@ class Builder {
   void slots();
   double compound_angle(const features::HoleMeasure& h) const;
   void prune_dead_ends();
-  int sink(config::SinkKind kind);
+  int sink(config::SinkKind kind, const std::string& row = "");
   Passage* find(const std::string& name) {
     for (Passage& p : passages_)
       if (p.name == name) return &p;
@@ -111,11 +124,13 @@ class Builder {
   const config::Config& c_;
   const config::CoolantConfig& bc_;
   std::unique_ptr<blade::BladeCoordinates> coords_;
+  const Sections& cuts_;
+  const std::map<std::string, std::vector<double>>& extra_;
   bool rotor_ = false;
   Network net_;
   std::vector<Passage> passages_;
   int supply_ = 0;
-  std::map<config::SinkKind, int> sinks_;
+  std::map<std::string, int> sinks_;  ///< by node name
 };
 
 const features::CoreDefinition* core_of(const config::Config& c) {
@@ -135,13 +150,6 @@ Vec3 Builder::mid_point(const Passage& p, double span) const {
   return 0.5 * (coords_->frame(span, 0.5 * (s0 + s1)).point + coords_->frame(span, 0.5 * (p0 + p1)).point);
 }
 
-double Builder::end_span(SpanEnd end) const {
-  const features::CoreDefinition* cd = core_of(c_);
-  const double len = in_.model->span_length;
-  if (end == SpanEnd::Hub) return cd && !cd->hub_floor.open ? cd->hub_floor.thickness / len : 0.0;
-  return cd && !cd->tip_cap.open ? 1 - cd->tip_cap.thickness / len : 1.0;
-}
-
 void Builder::gas() {
   net_.gas.gas_constant = bc_.gas_constant;
   net_.gas.cp = bc_.cp > 0 ? bc_.cp : air_cp(bc_.supply_total_temperature);
@@ -152,27 +160,56 @@ void Builder::gas() {
     net_.notes.push_back("coolant.rotational_speed_rpm ignored: a straight vane does not rotate");
 }
 
-// The passages with their measured sections (hub -> tip), and end stations where the passage ends at an
-// end wall or an open end (not at a turnaround: the bend starts at the last section).
+// The spans of the end stations: kEndOffsetMm inside the hub and tip ends (end wall or open end).
+std::pair<double, double> end_station_spans(const NetworkInput& in) {
+  const features::CoreDefinition* cd = core_of(*in.config);
+  const double len = in.model->span_length, eps = kEndOffsetMm / len;
+  const double hub = cd && !cd->hub_floor.open ? cd->hub_floor.thickness / len : 0.0;
+  const double tip = cd && !cd->tip_cap.open ? 1 - cd->tip_cap.thickness / len : 1.0;
+  return {hub + eps, tip - eps};
+}
+
+// The passages with their stations hub -> tip: the passage report's span sections and any extra spans,
+// measured on the built part (cuts_), and an end station where the passage ends at an end wall or an
+// open end (not at a turnaround: the bend starts at the last section).
 void Builder::passages() {
   const features::CoreDefinition* cd = core_of(c_);
+  const auto [hub, tip] = end_station_spans(in_);
   for (const features::PassageMeasure& m : in_.passages->passages) {
     Passage p;
     p.name = m.name;
     p.chamber = m.name.rfind("chamber_", 0) == 0;
     p.number = std::stoi(m.name.substr(m.name.rfind('_') + 1));
-    std::vector<features::CrossSection> secs = m.sections;
-    std::sort(secs.begin(), secs.end(), [](const auto& a, const auto& b) { return a.span < b.span; });
-    if (secs.size() < 2) throw NetworkError(m.name + ": fewer than 2 measured sections, no network segments");
+    std::vector<features::CrossSection> report = m.sections;
+    std::sort(report.begin(), report.end(), [](const auto& a, const auto& b) { return a.span < b.span; });
+    if (report.size() < 2) throw NetworkError(m.name + ": fewer than 2 measured sections, no network segments");
     if (p.chamber && cd) {
       const std::size_t k = static_cast<std::size_t>(p.number);
       for (std::size_t r : {k - 1, k - 2})
         if (r < cd->ribs.size() && cd->ribs[r].turnaround)
           (cd->ribs[r].turnaround->end == SpanEnd::Hub ? p.hub_turn : p.tip_turn) = true;
     }
-    if (!p.hub_turn) p.stations.push_back({end_span(SpanEnd::Hub), secs.front().area, secs.front().wetted_perimeter, false});
-    for (const auto& s : secs) p.stations.push_back({s.span, s.area, s.wetted_perimeter, true});
-    if (!p.tip_turn) p.stations.push_back({end_span(SpanEnd::Tip), secs.back().area, secs.back().wetted_perimeter, false});
+    const auto cut = cuts_.find(m.name);
+    // The section at `span`: measured on the built part, else the report's there (the cooled blade before
+    // its holes), else (ends) the nearest report section's area.
+    const auto station = [&](double span, bool end) -> std::optional<Station> {
+      if (cut != cuts_.end())
+        for (const auto& s : cut->second)
+          if (std::abs(s.span - span) < 1e-12) return Station{span, s.area, s.wetted_perimeter, end, true};
+      for (const auto& s : report)
+        if (std::abs(s.span - span) < 1e-12) return Station{span, s.area, s.wetted_perimeter, end, true};
+      if (!end) return std::nullopt;
+      const auto& near = std::abs(report.front().span - span) < std::abs(report.back().span - span) ? report.front() : report.back();
+      return Station{span, near.area, near.wetted_perimeter, end, false};
+    };
+    std::vector<double> spans;
+    for (const auto& s : report) spans.push_back(s.span);
+    if (const auto it = extra_.find(m.name); it != extra_.end()) spans.insert(spans.end(), it->second.begin(), it->second.end());
+    std::sort(spans.begin(), spans.end());
+    if (!p.hub_turn) p.stations.push_back(*station(hub, true));
+    for (double span : spans)
+      if (const auto st = station(span, false)) p.stations.push_back(*st);
+    if (!p.tip_turn) p.stations.push_back(*station(tip, true));
     for (Station& st : p.stations) st.point = mid_point(p, st.span);
     passages_.push_back(std::move(p));
   }
@@ -266,7 +303,7 @@ void Builder::segments(Passage& p) {
     e.radius_in = radius(a.point);
     e.radius_out = radius(b.point);
     e.faces = {p.chamber ? p.name + "_wall" : p.name};
-    if (turb && a.measured && b.measured) {
+    if (turb && !a.end && !b.end) {
       e.turbulators = turbulation(*turb, e.hydraulic_diameter, e.aspect_ratio, e.length);
       e.roughness = equivalent_roughness(*e.turbulators, e.hydraulic_diameter);
       e.faces.push_back("turbulator_*");
@@ -298,16 +335,19 @@ void Builder::segments(Passage& p) {
   }
 }
 
-int Builder::sink(config::SinkKind kind) {
-  const auto it = sinks_.find(kind);
+// The sink node of an exit of `kind` in `row`: the row's own (coolant.sinks.rows) or its kind's.
+int Builder::sink(config::SinkKind kind, const std::string& row) {
+  const bool own = bc_.sink_by_row.count(row) > 0;
+  std::string name = std::string("sink_") + config::CoolantConfig::sink_field(kind);
+  name = own ? "sink_" + row : name.substr(0, name.size() - 3);  // without "_pa"
+  const auto it = sinks_.find(name);
   if (it != sinks_.end()) return it->second;
   Node n;
-  n.name = std::string("sink_") + config::CoolantConfig::sink_field(kind);
-  n.name = n.name.substr(0, n.name.size() - 3);  // without "_pa"
+  n.name = name;
   n.kind = NodeKind::Sink;
-  n.pressure = bc_.sink(kind);
+  n.pressure = bc_.sink(row, kind);
   n.temperature = bc_.supply_total_temperature;
-  return sinks_[kind] = add_node(n);
+  return sinks_[name] = add_node(n);
 }
 
 void Builder::inlets() {
@@ -365,6 +405,20 @@ void Builder::bends() {
     join_stations(e, s0, s1);
     e.bend_angle_deg = 180;
     e.bend_radius = 0.5 * (s1.point - s0.point).norm();
+    // The turn's flow area: the gap between the rib tip and the end wall times the cavity's depth at the
+    // rib (its outer-wall points at the rib's chords less the wall on both sides), when less than the
+    // chambers' areas: a narrow gap is the bend's throat.
+    const features::RibDefinition& rib = cd->ribs[r];
+    const double gap = rib.turnaround->gap, len = in_.model->span_length;
+    const double span = at_hub ? cd->hub_floor.thickness / len + 0.5 * gap / len : 1 - cd->tip_cap.thickness / len - 0.5 * gap / len;
+    const double depth = (coords_->frame(span, rib.suction_chord).point - coords_->frame(span, rib.pressure_chord).point).norm() -
+                         cd->wall_thickness.at(span, rib.suction_chord) - cd->wall_thickness.at(span, rib.pressure_chord);
+    e.bend_gap = gap;
+    e.bend_depth = depth;
+    if (depth > 0 && gap * depth < std::min(e.area_in, e.area_out)) {
+      e.area_in = e.area_out = gap * depth;
+      e.hydraulic_diameter = 2 * gap * depth / (gap + depth);
+    }
     e.length = kPi * e.bend_radius;
     e.span_in = s0.span;
     e.span_out = s1.span;
@@ -442,7 +496,7 @@ void Builder::holes() {
     e.chamber = p->name;
     e.enters_from = segment_at(*p, span);
     e.upstream = st.node;
-    e.downstream = sink(kind);
+    e.downstream = sink(kind, h.row);
     Opening o;
     o.row = h.row;
     o.shape = h.shape;
@@ -481,8 +535,25 @@ double Builder::compound_angle(const features::HoleMeasure& h) const {
   return kUnset;
 }
 
+// The pins' mean length across the chamber: the axial extent (v range) of each pin_fin_<nnn>'s
+// cylindrical faces on the part. Returns {pins, mean length}.
+std::pair<int, double> pin_lengths(const brep::NamedShape& blade) {
+  std::map<std::string, std::pair<double, double>> range;
+  for (const brep::NamedFace& f : blade.faces) {
+    if (f.name.rfind("pin_fin_", 0) != 0 || BRepAdaptor_Surface(f.face).GetType() != GeomAbs_Cylinder) continue;
+    double u0, u1, v0, v1;
+    BRepTools::UVBounds(f.face, u0, u1, v0, v1);
+    const auto it = range.find(f.name);
+    range[f.name] = it == range.end() ? std::pair{v0, v1} : std::pair{std::min(v0, it->second.first), std::max(v1, it->second.second)};
+  }
+  double sum = 0;
+  for (const auto& [name, r] : range) sum += r.second - r.first;
+  return {static_cast<int>(range.size()), range.empty() ? 0.0 : sum / static_cast<double>(range.size())};
+}
+
 // Trailing-edge slots: one element per slot (faces te_slot_<nn> on the blade), from the last chamber's
-// station nearest the slot's span to the trailing-edge sink; pin fins upstream as a pin bank.
+// station nearest the slot's span to the trailing-edge sink; the pin fins upstream described with each
+// slot (its share of the bank, docs/network.md: not in the deck).
 void Builder::slots() {
   const features::CoreDefinition* cd = core_of(c_);
   if (!cd || !cd->trailing_edge || in_.part->empty()) return;
@@ -492,11 +563,7 @@ void Builder::slots() {
   std::map<std::string, Bnd_Box> boxes;
   for (const brep::NamedFace& f : in_.part->front().geometry.faces)
     if (f.name.rfind("te_slot_", 0) == 0) BRepBndLib::Add(f.face, boxes[f.name]);
-  int pins = 0;
-  std::set<std::string> pin_names;
-  for (const brep::NamedFace& f : in_.part->front().geometry.faces)
-    if (f.name.rfind("pin_fin_", 0) == 0) pin_names.insert(f.name);
-  pins = static_cast<int>(pin_names.size());
+  const auto [pins, pin_length] = pin_lengths(in_.part->front().geometry);
   for (const auto& [name, box] : boxes) {
     double x0, y0, z0, x1, y1, z1;
     box.Get(x0, y0, z0, x1, y1, z1);
@@ -509,20 +576,25 @@ void Builder::slots() {
     e.chamber = p->name;
     e.enters_from = segment_at(*p, span);
     e.upstream = st.node;
-    e.downstream = sink(config::SinkKind::TrailingEdge);
+    e.downstream = sink(config::SinkKind::TrailingEdge, "te_slots");
     Opening o;
     o.row = "te_slots";
     o.shape = "slot";
     o.metering_area = o.exit_area = te.slot_height * te.slot_width;
     o.diameter = 2 * te.slot_height * te.slot_width / (te.slot_height + te.slot_width);
-    o.sink = "trailing_edge";
+    o.sink = net_.node(e.downstream).name.substr(5);
     e.opening = o;
     e.area_in = e.area_out = o.metering_area;
     e.hydraulic_diameter = o.diameter;
     e.span_in = e.span_out = span;
     e.faces = {name};
-    if (te.pin_fins) {
-      e.pins = pin_bank(*te.pin_fins, pins);
+    if (te.pin_fins && pins > 0) {
+      // The bank's minimum gap shared by the slots: (S - D) x pin length per pin of a row.
+      PinBank bank = pin_bank(*te.pin_fins, pins);
+      bank.height = pin_length;
+      bank.gap_area = (te.pin_fins->spanwise_pitch - te.pin_fins->diameter) * pin_length * pins / std::max(bank.rows, 1) /
+                      static_cast<double>(boxes.size());
+      e.pins = bank;
       e.faces.push_back("pin_fin_*");
     }
     add_element(e);
@@ -589,12 +661,62 @@ Network Builder::run() {
   return std::move(net_);
 }
 
+// A closed end beyond a passage's last exit carries no flow and is pruned from the network; where fewer
+// than kMinSegments segments remain, the longest remaining ones (inner ones first: splitting the last one
+// can move its end exit's station and prune it) get a station at their middle. Returns the new spans per
+// passage (empty: every passage has enough).
+std::map<std::string, std::vector<double>> stations_to_add(const Network& net) {
+  std::map<std::string, std::vector<std::pair<double, double>>> live;
+  for (const Element& e : net.elements)
+    if (e.kind == ElementKind::Segment) live[e.chamber].emplace_back(std::min(e.span_in, e.span_out), std::max(e.span_in, e.span_out));
+  std::map<std::string, std::vector<double>> add;
+  for (auto& [name, segs] : live) {
+    if (static_cast<int>(segs.size()) >= kMinSegments) continue;
+    std::sort(segs.begin(), segs.end());
+    std::vector<std::pair<double, double>> inner(segs.begin() + (segs.size() > 2 ? 1 : 0), segs.end() - (segs.size() > 2 ? 1 : 0));
+    for (int k = static_cast<int>(segs.size()); k < kMinSegments; ++k) {
+      auto longest = std::max_element(inner.begin(), inner.end(),
+                                      [](const auto& x, const auto& y) { return x.second - x.first < y.second - y.first; });
+      const double mid = 0.5 * (longest->first + longest->second), hi = longest->second;
+      longest->second = mid;
+      inner.emplace_back(mid, hi);
+      add[name].push_back(mid);
+    }
+  }
+  return add;
+}
+
 }  // namespace
 
 Network build_network(const NetworkInput& in) {
   if (!in.config || !in.config->coolant || !in.model || !in.part || !in.passages)
     throw NetworkError("network: the build has no coolant section or no measured passages");
-  return Builder(in).run();
+  // The end stations are cut on the built part; the report's sections too when an insert sits in a
+  // chamber (the report cuts the blade alone: the insert's metal is not excluded there). Elsewhere the
+  // report's sections are the built part's (walls closed over the holes), without cutting again.
+  const auto [hub, tip] = end_station_spans(in);
+  std::vector<double> spans{hub, tip};
+  if (in.part->size() > 1)
+    for (const features::PassageMeasure& m : in.passages->passages)
+      for (const auto& s : m.sections) spans.push_back(s.span);
+  Sections cuts = measure_stations(*in.model, *in.part, spans);
+  std::map<std::string, std::vector<double>> extra;
+  Network net = Builder(in, cuts, extra).run();
+  for (int pass = 0; pass < 3; ++pass) {
+    const std::map<std::string, std::vector<double>> add = stations_to_add(net);
+    if (add.empty()) break;
+    std::vector<double> more;
+    for (const auto& [name, s] : add) {
+      more.insert(more.end(), s.begin(), s.end());
+      extra[name].insert(extra[name].end(), s.begin(), s.end());
+    }
+    for (auto& [name, secs] : measure_stations(*in.model, *in.part, more)) {
+      auto& all = cuts[name];
+      all.insert(all.end(), secs.begin(), secs.end());
+    }
+    net = Builder(in, cuts, extra).run();
+  }
+  return net;
 }
 
 }  // namespace cg::network

@@ -97,6 +97,10 @@ ojson network_json(const Network& net) {
       o["bend_angle_deg"] = e.bend_angle_deg;
       o["bend_radius_mm"] = e.bend_radius;
       o["bend_radius_dh"] = e.bend_radius / e.hydraulic_diameter;
+      if (!std::isnan(e.bend_gap)) {
+        o["turnaround_gap_mm"] = e.bend_gap;
+        o["turnaround_depth_mm"] = e.bend_depth;
+      }
     }
     if (e.turbulators) {
       const Turbulation& t = *e.turbulators;
@@ -108,8 +112,9 @@ ojson network_json(const Network& net) {
     if (e.pins) {
       const PinBank& p = *e.pins;
       o["pin_fins"] = {{"diameter_mm", p.diameter}, {"s_d", p.s_d}, {"x_d", p.x_d}, {"rows", p.rows}, {"pins", p.pins},
-                       {"loss_per_row", p.loss_per_row},
-                       {"correlation", "Metzger, Fan & Haley f = 0.317 Re^-0.132 at Re 1e4; not in the deck"}};
+                       {"height_mm", p.height}, {"gap_area_mm2", p.gap_area}, {"loss_per_row", p.loss_per_row},
+                       {"correlation", "Metzger staggered short pins: K = 4 f per row at the minimum gap, f = 0.317 Re_D^-0.132 "
+                                       "(Re_D 1e3-1e5), loss_per_row at Re_D 1e4; not in network.inp (docs/network.md)"}};
     }
     if (e.opening) o["opening"] = opening_json(*e.opening);
     o["faces"] = e.faces;

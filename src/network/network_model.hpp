@@ -53,7 +53,9 @@ struct Turbulation {
 struct PinBank {
   double diameter = 0, s_d = 0, x_d = 0;
   int rows = 0, pins = 0;
-  double loss_per_row = 0;  ///< velocity heads per row (docs/network.md)
+  double height = 0;        ///< mm, the pins' mean length across the chamber (their faces on the part)
+  double gap_area = 0;      ///< mm^2, one slot's share of the minimum gap between the pins of a row
+  double loss_per_row = 0;  ///< velocity heads per row at the minimum gap, at Re_D 1e4 (docs/network.md)
 };
 
 /// A film or showerhead hole, a slot, or an insert's jets.
@@ -86,8 +88,9 @@ struct Element {
   double span_in = kUnset, span_out = kUnset;
   double radius_in = kUnset, radius_out = kUnset;  ///< mm from the rotation axis
   double bend_angle_deg = kUnset, bend_radius = kUnset;
+  double bend_gap = kUnset, bend_depth = kUnset;  ///< turnaround: rib tip to end wall, cavity depth there (mm)
   std::optional<Turbulation> turbulators;
-  std::optional<PinBank> pins;
+  std::optional<PinBank> pins;      ///< slots: the pin fins upstream (their share of the bank)
   std::optional<Opening> opening;
   std::vector<std::string> faces;  ///< names of the faces it comes from
 };

@@ -74,8 +74,10 @@ ojson results_json(const Network& net, const NetworkSolution& sol) {
     if (!chamber_flow.count(to)) chamber_order.push_back(to);
     chamber_flow[to] += mf(e);
   }
-  for (const Element& e : net.elements)  // passages fed straight from the supply (open ends)
-    if (e.kind == ElementKind::Segment && net.node(e.upstream).kind == NodeKind::Supply) {
+  // A passage from the supply straight to a sink (one segment, both ends open); a segment from the
+  // supply into a station is counted above.
+  for (const Element& e : net.elements)
+    if (e.kind == ElementKind::Segment && net.node(e.upstream).kind == NodeKind::Supply && net.node(e.downstream).chamber.empty()) {
       if (!chamber_flow.count(e.chamber)) chamber_order.push_back(e.chamber);
       chamber_flow[e.chamber] += mf(e);
     }

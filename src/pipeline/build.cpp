@@ -3,6 +3,7 @@
 #include "src/brep/blade_solid.hpp"
 #include "src/pipeline/cooling.hpp"
 #include "src/pipeline/cooling_stage_cache.hpp"
+#include "src/pipeline/network_job.hpp"
 #include "src/pipeline/stage_runner.hpp"
 
 namespace cg::pipeline {
@@ -27,8 +28,8 @@ std::string failure(const std::exception_ptr& e) {
 // decoded): the B-rep reader rebuilds the axes of elementary surfaces (gp_Ax3) to within an ulp, so
 // only then is a build bit for bit the same whether its cooling stage came from the cache or not. It
 // costs ~0.03 s on the built-in example (1.5 MB of shapes).
-features::PassagesResult cooling_stage(const config::Config& c, BuildResult& r, features::Verification verification,
-                                       StageCache* cache) {
+features::PassagesResult cooling_stage(const config::Config& c, const features::CoolingPlan& plan, BuildResult& r,
+                                       features::Verification verification, StageCache* cache) {
   const bool on = cache && cache->options().mode != StageCacheMode::kOff;
   const std::string key = on ? cooling_stage_key(c, verification) : std::string();
   if (on)
@@ -42,7 +43,7 @@ features::PassagesResult cooling_stage(const config::Config& c, BuildResult& r, 
                              "); built again");
       }
     }
-  features::PassagesResult built = apply_cooling(c.cooling, r.model, r.part.front().geometry, verification);
+  features::PassagesResult built = apply_cooling(c.cooling, r.model, plan, r.part.front().geometry, verification);
   StageCacheEntry entry;
   features::PassagesResult canonical;
   try {
@@ -76,7 +77,11 @@ blade::BladeModel validate(const config::Config& config, ProgressSink* progress)
 BuildResult run_build(const config::Config& config, const BuildOptions& options, ProgressSink* progress) {
   BuildResult r;
   StageRunner stages(progress, r.timings);
-  stages.run("blade_model", "blade model", [&] { r.model = validate(config, progress); });
+  stages.run("blade_model", "blade model", [&] { r.model = config::build_model(config, progress); });
+  // The plan (what validate checks): every placement the feature stages then build on.
+  features::CoolingPlan plan;
+  if (!config.cooling.empty())
+    stages.run("plan", "cooling plan (placements and checks before any boolean)", [&] { plan = plan_cooling(config.cooling, r.model); });
   stages.run("solid", "solid (blade surface trimmed to the flow path)", [&] {
     brep::BladeSolid solid = brep::build_blade_solid(r.model, progress);
     for (const std::string& w : solid.warnings) r.warnings.push_back("solid: " + w);
@@ -93,14 +98,14 @@ BuildResult run_build(const config::Config& config, const BuildOptions& options,
     std::optional<features::PassagesResult> cooled;
     if (!config.cooling.passages.empty())
       stages.run("cooling" + suffix, "cooling features (chambers, ribs, passages)", [&] {
-        cooled = cooling_stage(config, r, verification, options.stage_cache);
+        cooled = cooling_stage(config, plan, r, verification, options.stage_cache);
         r.part.front().geometry = cooled->blade;
         r.cooling = cooled->report;
         if (cooled->checked) known_checks[0] = cooled->check;
       });
     if (!config.cooling.film.empty())
       stages.run("film" + suffix, "film cooling holes and impingement inserts", [&] {
-        features::FilmCoolingResult film = apply_film(config.cooling, r.model, *cooled, {verification, progress});
+        features::FilmCoolingResult film = apply_film(config.cooling, r.model, plan, *cooled, {verification, progress});
         r.part.front().geometry = std::move(film.blade);
         if (film.holes_cut) known_checks[0] = film.blade_checked ? std::optional(film.check) : std::nullopt;
         for (std::size_t i = 0; i < film.inserts.size(); ++i) {
@@ -135,6 +140,8 @@ BuildResult run_build(const config::Config& config, const BuildOptions& options,
     build_features(features::Verification::EachStep, "_rechecked");
     verify_bodies("_rechecked");
   }
+  if (r.valid() && r.cooling && config.coolant && config::has_format(config.output.formats, config::OutputFormat::Network))
+    stages.run("coolant_network", "coolant flow network (CalculiX)", [&] { r.network = solve_network(config, r); });
   return r;
 }
 

@@ -13,6 +13,8 @@
 //   film         film holes and impingement inserts (when "cooling" has film_rows, showerhead or inserts),
 //                against the core of the cooling stage; inserts become bodies insert_1, ... of the Part
 //   verify       brep::verify_solid on every body of the Part (the cooled blade's check is reused)
+//   coolant_network  the coolant flow network of the valid part, solved by CalculiX (network_job.hpp;
+//                only when the config selects the output format "network") -> BuildResult::network
 // A later stage slots in as one more StageRunner::run call in run_build (e.g. cooling features applied
 // to bodies[0].geometry between "solid" and "verify"); outputs are written by outputs.cpp.
 #include <optional>

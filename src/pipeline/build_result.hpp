@@ -2,6 +2,8 @@
 // What a build produced (pipeline::run_build, build.hpp): the model, the part with its checks, the
 // stages' records and the feature stages' reports. Plain data: the jobs after a build (outputs, report,
 // mesh, grid) read it without depending on the build's algorithm.
+#include <nlohmann/json.hpp>
+
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,6 +16,15 @@
 #include "src/pipeline/stage_records.hpp"
 
 namespace cg::pipeline {
+
+/// The coolant flow network of a built part as the output format "network" writes it (docs/network.md).
+struct NetworkFiles {
+  std::string json, deck, results;   ///< network.json, network.inp, network_results.json
+  std::string film_holes;            ///< film_holes.csv (empty without film holes)
+  nlohmann::ordered_json summary;    ///< headline numbers (report.json "network")
+  std::vector<std::string> warnings;  ///< solver missing or not converged (also on stderr)
+  std::string error;                 ///< why no network could be made from the part (then the rest is empty)
+};
 
 struct BuildResult {
   blade::BladeModel model;
@@ -34,6 +45,9 @@ struct BuildResult {
   std::optional<features::PassageReport> cooling;
   /// What the film stage measured (per hole, row, chamber, insert); none without film input.
   std::optional<features::FilmReport> film;
+  /// The coolant flow network, solved by the stage "coolant_network" when the config selects the output
+  /// format "network" and the valid part has cooling passages; none otherwise.
+  std::optional<NetworkFiles> network;
 
   /// Every check of every body passed.
   bool valid() const;

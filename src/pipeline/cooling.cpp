@@ -26,23 +26,24 @@ features::CoolingPlan plan_cooling(const config::CoolingConfig& cooling, const b
 }
 
 features::PassagesResult apply_cooling(const config::CoolingConfig& cooling, const blade::BladeModel& model,
-                                       const brep::NamedShape& blade, features::Verification verification) {
+                                       const features::CoolingPlan& plan, const brep::NamedShape& blade,
+                                       features::Verification verification) {
   try {
-    return features::build_passages(model, blade, cooling.passages, verification);
+    return features::build_passages(model, blade, cooling.passages, plan.core, plan.trailing_edge, verification);
   } catch (const features::PassageInputError& e) {
     throw config::cooling_error(e);
   }
 }
 
 features::FilmCoolingResult apply_film(const config::CoolingConfig& cooling, const blade::BladeModel& model,
-                                       const features::PassagesResult& cooled,
+                                       const features::CoolingPlan& plan, const features::PassagesResult& cooled,
                                        const features::FeatureOptions& options) {
   check_film_has_core(cooling);
-  require(cooled.core != nullptr, "film stage: the cooling stage built no core");
+  require(cooled.core != nullptr && plan.film && plan.film_cavity, "film stage: no core was built or no film planned");
   try {
-    features::FilmCavity cavity = features::film_cavity_of_core(model, *cooling.passages.core, *cooled.core);
-    features::add_wall_feature_obstacles(cavity.target, cooled.wall_features);
-    return features::build_film_cooling(model, cooled.blade, std::move(cavity), cooling.film, options);
+    features::FilmPlan film = *plan.film;
+    features::check_film_holes_against(film.holes, features::wall_feature_obstacles(cooled.wall_features), cooling.film.limits);
+    return features::build_film_cooling(model, cooled.blade, *plan.film_cavity, std::move(film), cooling.film, options);
   } catch (const features::FilmInputError& e) {
     throw config::film_error(e);
   }

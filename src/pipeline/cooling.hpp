@@ -19,16 +19,18 @@ namespace cg::pipeline {
 /// the result.
 features::CoolingPlan plan_cooling(const config::CoolingConfig& cooling, const blade::BladeModel& model);
 
+/// The passages of `cooling` built into `blade` on `plan` (plan_cooling of the same cooling and model).
 /// `verification`: see features::build_passages.
 features::PassagesResult apply_cooling(const config::CoolingConfig& cooling, const blade::BladeModel& model,
-                                       const brep::NamedShape& blade,
+                                       const features::CoolingPlan& plan, const brep::NamedShape& blade,
                                        features::Verification verification = features::Verification::EachStep);
 
 /// The film stage: the film rows, showerhead and inserts of `cooling` built into `cooled` (the result of
-/// apply_cooling, which must have built a core). Film input the blade cannot take: ConfigError.
-/// `options`: verification and progress (see features::build_film_cooling).
+/// apply_cooling, which must have built a core) on `plan`'s film cavity and holes; the planned holes are
+/// checked against the turbulators, pins and slots `cooled` built. Film input the blade cannot take:
+/// ConfigError. `options`: verification and progress (see features::build_film_cooling).
 features::FilmCoolingResult apply_film(const config::CoolingConfig& cooling, const blade::BladeModel& model,
-                                       const features::PassagesResult& cooled,
+                                       const features::CoolingPlan& plan, const features::PassagesResult& cooled,
                                        const features::FeatureOptions& options = {});
 
 }  // namespace cg::pipeline

@@ -3,29 +3,13 @@
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
-#include <mutex>
 
 #include "export/atomic_file.hpp"
 #include "src/config/json_fields.hpp"
-#include "src/network/network_stage.hpp"
 
 namespace cg::pipeline {
 namespace fs = std::filesystem;
 namespace {
-
-// The headline of the last network written, for the report of the same build result.
-struct LastNetwork {
-  std::mutex mutex;
-  const BuildResult* owner = nullptr;
-  Handle(TopoDS_TShape) shape;
-  nlohmann::ordered_json summary;
-  std::vector<std::string> warnings;
-};
-
-LastNetwork& last() {
-  static LastNetwork l;
-  return l;
-}
 
 void write_text(OutputDirectory& d, const std::string& name, const std::string& text) {
   d.write(name, [&](const fs::path& t) {
@@ -35,31 +19,15 @@ void write_text(OutputDirectory& d, const std::string& name, const std::string& 
   });
 }
 
-void write_network(OutputDirectory& d, const config::Config& c, const BuildResult& r, ProgressSink*) {
+void write_network(OutputDirectory& d, const config::Config&, const BuildResult& r, ProgressSink*) {
   if (!r.cooling) throw io::ExportError("network: the blade has no internal cooling passages (no \"cooling\" section)");
-  network::NetworkInput in;
-  in.config = &c;
-  in.model = &r.model;
-  in.part = &r.part;
-  in.passages = &*r.cooling;
-  in.film = r.film ? &*r.film : nullptr;
-  network::NetworkRun run;
-  try {
-    run = network::run_network(in);
-  } catch (const network::NetworkError& e) {
-    throw io::ExportError(std::string("network: ") + e.what());
-  }
-  write_text(d, "network.json", run.json.dump(2) + "\n");
-  write_text(d, "network.inp", run.deck);
-  write_text(d, "network_results.json", run.results.dump(2) + "\n");
-  if (!run.film_holes.empty()) write_text(d, "film_holes.csv", run.film_holes);
-  for (const std::string& w : run.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
-  LastNetwork& l = last();
-  std::lock_guard<std::mutex> lock(l.mutex);
-  l.owner = &r;
-  l.shape = r.part.empty() ? Handle(TopoDS_TShape)() : r.part.front().geometry.shape.TShape();
-  l.summary = run.summary;
-  l.warnings = run.warnings;
+  if (!r.network) throw io::ExportError("network: this build did not solve the coolant network (its config did not select the format)");
+  if (!r.network->error.empty()) throw io::ExportError("network: " + r.network->error);
+  write_text(d, "network.json", r.network->json);
+  write_text(d, "network.inp", r.network->deck);
+  write_text(d, "network_results.json", r.network->results);
+  if (!r.network->film_holes.empty()) write_text(d, "film_holes.csv", r.network->film_holes);
+  for (const std::string& w : r.network->warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
 }
 
 }  // namespace
@@ -72,11 +40,9 @@ OutputWriter network_writer() {
 }
 
 void add_network_report(const BuildResult& r, io::ReportContent& report) {
-  LastNetwork& l = last();
-  std::lock_guard<std::mutex> lock(l.mutex);
-  if (l.owner != &r || r.part.empty() || l.shape != r.part.front().geometry.shape.TShape()) return;
-  report.extra["network"] = l.summary;
-  for (const std::string& w : l.warnings)
+  if (!r.network || !r.network->error.empty()) return;
+  report.extra["network"] = r.network->summary;
+  for (const std::string& w : r.network->warnings)
     if (std::find(report.warnings.begin(), report.warnings.end(), w) == report.warnings.end()) report.warnings.push_back(w);
 }
 

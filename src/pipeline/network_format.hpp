@@ -8,10 +8,11 @@
 
 namespace cg::pipeline {
 
+/// Writes BuildResult::network; throws io::ExportError when the build made none or it has an error.
 OutputWriter network_writer();
 
 /// Adds "network" (headline numbers: status, total and per-chamber flow, worst backflow margin) and
-/// the network's warnings to a report, when the network of `result` was solved in this run.
+/// the network's warnings to a report, when the build solved the network.
 void add_network_report(const BuildResult& result, io::ReportContent& report);
 
 }  // namespace cg::pipeline

@@ -17,6 +17,8 @@
 
 #include "brep/temp_files.hpp"
 #include "cli/run_cli.hpp"
+#include "support/ccx_run.hpp"
+#include "support/fanno_exact.hpp"
 #include "src/blade/section.hpp"
 #include "src/brep/verify.hpp"
 
@@ -51,6 +53,57 @@ void check_outputs(const fs::path& dir, const std::string& expected_name) {
   const std::string step = read_text(dir / "blade.step");
   for (const char* n : {"blade_wall", "hub", "casing"})
     BOOST_TEST(step.find(std::string("ADVANCED_FACE('") + n + "'") != std::string::npos, n);
+}
+
+// The coolant network of c3x_vane.json's ten radial passages (its "coolant": supply 2.1 bar / 340 K at
+// the open hub, 2.0 bar at the open tip): ccx runs the network.inp CoolingGen wrote (its own run, read
+// from its .dat), and each passage's flow is compared with the exact Fanno + Colebrook integration
+// (tests/support/fanno_exact.hpp) of a smooth tube of the passage's diameter (NASA CR-168015 Fig. 7:
+// 6.30 mm x 7, 3.10 mm x 2, 1.98 mm) over the span, gas properties as network.json states them.
+// Tolerance 3e-4 relative: ccx's Fanno element agrees with this integration to 1e-5 on one pipe
+// (test_network_deck), the .dat has 7 digits, and the deck's passages are 0.02 mm (1.4e-4) shorter
+// than the span (end stations 0.01 mm inside the open ends: about +7e-5 of flow). The split between
+// the passages (each one's share of the total) against the ratio of their exact flows (resistances) to
+// the same tolerance; the 6.30 mm passages carry clearly more than the 1.98 mm one.
+void check_radial_passage_network(const fs::path& out, const nlohmann::json& cfg) {
+  const cg::test::DeckRead deck = cg::test::read_deck(read_text(out / "network.inp"));
+  const cg::test::CcxRun run = cg::test::run_ccx(out / "network.inp");
+  BOOST_TEST_REQUIRE(run.converged, run.log);
+  const nlohmann::json net = nlohmann::json::parse(read_text(out / "network.json"));
+  const cg::test::FannoGas gas{net.at("gas").at("gas_constant_j_kg_k").get<double>(), net.at("gas").at("cp_j_kg_k").get<double>(),
+                               net.at("gas").at("viscosity_pa_s").get<double>()};
+  const double pt = cfg.at("coolant").at("supply").at("total_pressure_pa").get<double>();
+  const double tt = cfg.at("coolant").at("supply").at("total_temperature_k").get<double>();
+  const double sink = cfg.at("coolant").at("sinks").at("static_pressure_pa").get<double>();
+  const double span = cfg.at("flow_path").at("span").get<double>(), pi = 3.14159265358979323846;
+  const std::vector<double> diameters{6.30, 6.30, 6.30, 6.30, 6.30, 6.30, 6.30, 3.10, 3.10, 1.98};
+  std::vector<double> ccx(10, 0), exact(10, 0);
+  for (const auto& [id, name] : deck.name)
+    for (std::size_t k = 0; k < 10; ++k)
+      if (name == "radial_passage_" + std::to_string(k + 1) + "_seg_00") ccx[k] = run.mass_flow.at(deck.elements.at(id)[1]) * 1e3;
+  double sum_ccx = 0, sum_exact = 0, worst = 0, worst_split = 0;
+  for (std::size_t k = 0; k < 10; ++k) {
+    const double d = diameters[k];
+    exact[k] = cg::test::fanno_mass_flow({0.25 * pi * d * d, d, span, 0.0}, gas, pt, tt, sink);
+    BOOST_TEST(std::abs(ccx[k] - exact[k]) / exact[k] < 3e-4, "radial_passage_" << k + 1 << ": ccx " << ccx[k] << " kg/s, exact " << exact[k]);
+    worst = std::max(worst, std::abs(ccx[k] - exact[k]) / exact[k]);
+    sum_ccx += ccx[k];
+    sum_exact += exact[k];
+  }
+  for (std::size_t k = 0; k < 10; ++k) {
+    const double split = (ccx[k] / sum_ccx) / (exact[k] / sum_exact) - 1;
+    BOOST_TEST(std::abs(split) < 3e-4, "radial_passage_" << k + 1 << " share " << ccx[k] / sum_ccx << ", exact " << exact[k] / sum_exact);
+    worst_split = std::max(worst_split, std::abs(split));
+  }
+  BOOST_TEST(ccx[0] / ccx[9] > 10);
+  // network_results.json reports each passage's flow once (the supply's segment into it).
+  const nlohmann::json res = nlohmann::json::parse(read_text(out / "network_results.json"));
+  for (const auto& c : res.at("chambers")) {
+    const std::size_t k = std::stoul(c.at("name").get<std::string>().substr(15)) - 1;
+    BOOST_TEST(std::abs(c.at("mass_flow_kg_s").get<double>() - ccx[k]) <= 1e-6 * ccx[k], c.at("name") << ": " << c.at("mass_flow_kg_s"));
+  }
+  BOOST_TEST_MESSAGE("c3x_vane passages vs exact Fanno + Colebrook: worst relative " << worst << ", split " << worst_split
+                     << "; flows 6.30 / 3.10 / 1.98 mm: " << ccx[0] << " / " << ccx[7] << " / " << ccx[9] << " kg/s");
 }
 
 }  // namespace
@@ -114,6 +167,7 @@ BOOST_AUTO_TEST_CASE(straight_c3x_vane_builds) {
   area -= 0.25 * pi * (7 * 6.30 * 6.30 + 2 * 3.10 * 3.10 + 1.98 * 1.98);
   BOOST_TEST(std::abs(volume / span - area) < 1e-4 * area, volume / span << " vs " << area);
   BOOST_TEST(std::abs(report.at("solid").at("bbox_mm").at("size").at(2).get<double>() - span) < 1e-6);
+  check_radial_passage_network(dir.path / "out", nlohmann::json::parse(read_text(cfg)));
 }
 
 // The AP242 schema option reaches the file.

@@ -77,7 +77,7 @@ const Cooled& cooled() {
     c->config = parse(config_doc());
     c->model = config::build_model(c->config);
     const brep::BladeSolid s = brep::build_blade_solid(c->model);
-    c->passages = pipeline::apply_cooling(c->config.cooling, c->model, {s.solid, s.faces});
+    c->passages = pipeline::apply_cooling(c->config.cooling, c->model, pipeline::plan_cooling(c->config.cooling, c->model), {s.solid, s.faces});
   }
   return *c;
 }
@@ -101,13 +101,14 @@ double distance(const TopoDS_Shape& a, const TopoDS_Shape& b) {
 
 bool starts(const std::string& s, const std::string& p) { return s.compare(0, p.size(), p) == 0; }
 
-// The ConfigError of building the film input `edit` makes (after the passages), "" when it builds.
+// The ConfigError of building the film input `edit` makes (its plan, then the film stage on the passages
+// built from the unedited input), "" when it builds.
 std::string film_error(const std::function<void(json&)>& edit) {
   json d = config_doc();
   edit(d["cooling"]);
   try {
     const config::Config c = parse(d);
-    pipeline::apply_film(c.cooling, cooled().model, cooled().passages);
+    pipeline::apply_film(c.cooling, cooled().model, pipeline::plan_cooling(c.cooling, cooled().model), cooled().passages);
   } catch (const config::ConfigError& e) {
     return e.what();
   }
@@ -242,10 +243,10 @@ BOOST_AUTO_TEST_CASE(bad_input_names_the_field) {
   std::string e = film_error([](json& c) { c["film_rows"][1]["chord"] = 0.35; });
   BOOST_TEST(has(e, "cooling.film_rows[1].chord"), e);
   BOOST_TEST(has(e, "close to rib_1"), e);
-  // A row that feeds chamber 2 but names chamber 1.
+  // A row that feeds chamber 2 but names chamber 1 (the plan's definition check says it first).
   e = film_error([](json& c) { c["film_rows"][1]["chamber"] = 1; });
   BOOST_TEST(has(e, "cooling.film_rows[1].chamber"), e);
-  BOOST_TEST(has(e, "feeds from chamber_2"), e);
+  BOOST_TEST(has(e, "over chamber_2"), e);
   // A row reaching over the tip cap.
   e = film_error([](json& c) { c["film_rows"][1]["span_end"] = 0.98; });
   BOOST_TEST(has(e, "cooling.film_rows[1].span_end"), e);

@@ -84,7 +84,7 @@ void expect_geometry_error(const std::function<void(json&)>& edit, const std::st
   try {
     features::WallLines lines(model().surface, core_build().inner_wall.surface);
     features::build_turbulators(model(), def, core_build(), lines);
-    features::build_trailing_edge(model(), def, core_build(), lines);
+    features::build_trailing_edge(def, features::plan_trailing_edge(model(), def, core_build(), lines), lines);
     BOOST_ERROR("no error for " << path);
   } catch (const features::PassageInputError& e) {
     check_message(config::cooling_error(e).what(), path, details);
@@ -148,16 +148,17 @@ BOOST_AUTO_TEST_CASE(turbulator_taller_than_its_chamber) {
                         RefusedBy::Validate);
 }
 
+// The plan places the slots and pins (plan_trailing_edge): all of these are refused by validate.
 BOOST_AUTO_TEST_CASE(trailing_edge_that_does_not_fit) {
   // The lip must lie downstream of the last chamber's end (this blade's TE region is ~1 mm long).
   expect_geometry_error([](json& d) { core_of(d)["trailing_edge"]["cutback_length"] = 3.0; },
                         "cooling.core.trailing_edge.cutback_length", {"must be <", "at span"}, RefusedBy::Validate);
   // Slot and lip thicker than the TE region: no suction-side wall left under the cutback.
   expect_geometry_error([](json& d) { core_of(d)["trailing_edge"]["slot_height"] = 3.0; },
-                        "cooling.core.trailing_edge.slot_height", {"suction-side wall", "at span"});
+                        "cooling.core.trailing_edge.slot_height", {"suction-side wall", "at span"}, RefusedBy::Validate);
   // Too many pin rows reach the last rib's fillet.
   expect_geometry_error([](json& d) { core_of(d)["trailing_edge"]["pin_fins"]["rows"] = 12; },
-                        "cooling.core.trailing_edge.pin_fins.rows", {"reaches rib 3"});
+                        "cooling.core.trailing_edge.pin_fins.rows", {"reaches rib 3"}, RefusedBy::Validate);
 }
 
 BOOST_AUTO_TEST_CASE(centreline_slots_that_do_not_fit) {
@@ -169,12 +170,12 @@ BOOST_AUTO_TEST_CASE(centreline_slots_that_do_not_fit) {
   };
   // Taller than the TE region allows (0.1 mm of wall left on each side at the crease).
   expect_geometry_error([&](json& d) { centreline(d)["slot_height"] = 3.0; }, "cooling.core.trailing_edge.slot_height",
-                        {"less than 0.1 mm of wall", "at span", "must be <="});
+                        {"less than 0.1 mm of wall", "at span", "must be <="}, RefusedBy::Validate);
   expect_geometry_error([&](json& d) { centreline(d)["slot_height"] = 1.5; }, "cooling.core.trailing_edge.slot_height",
-                        {"must be <="});
+                        {"must be <="}, RefusedBy::Validate);
   // A taper that closes the slots before they leave the blade.
   expect_geometry_error([&](json& d) { centreline(d)["land_taper_deg"] = 30.0; },
-                        "cooling.core.trailing_edge.land_taper_deg", {"closes the slot", "must be <"});
+                        "cooling.core.trailing_edge.land_taper_deg", {"closes the slot", "must be <"}, RefusedBy::Validate);
   // A taper that widens the inlets (upstream of the crease) into their neighbours.
   expect_geometry_error(
       [&](json& d) {
@@ -182,7 +183,7 @@ BOOST_AUTO_TEST_CASE(centreline_slots_that_do_not_fit) {
         te["pitch"] = 1.1;
         te["land_taper_deg"] = 5.0;
       },
-      "cooling.core.trailing_edge.land_taper_deg", {"touch their neighbours", "must be <"});
+      "cooling.core.trailing_edge.land_taper_deg", {"touch their neighbours", "must be <"}, RefusedBy::Validate);
   // Cutback-only fields.
   expect_config_error([&](json& d) { centreline(d)["cutback_length"] = 0.5; }, "cooling.core.trailing_edge.cutback_length",
                       {"only for"});

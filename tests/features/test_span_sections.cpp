@@ -49,8 +49,9 @@ const Built& built() {
   b->config = config::parse_config(d, COOLINGGEN_SOURCE_DIR "/data/examples", "light");
   b->model = config::build_model(b->config);
   const brep::BladeSolid s = brep::build_blade_solid(b->model);
-  b->passages = pipeline::apply_cooling(b->config.cooling, b->model, {s.solid, s.faces}, features::Verification::None);
-  b->film = pipeline::apply_film(b->config.cooling, b->model, b->passages, {features::Verification::None, nullptr});
+  const features::CoolingPlan plan = pipeline::plan_cooling(b->config.cooling, b->model);
+  b->passages = pipeline::apply_cooling(b->config.cooling, b->model, plan, {s.solid, s.faces}, features::Verification::None);
+  b->film = pipeline::apply_film(b->config.cooling, b->model, plan, b->passages, {features::Verification::None, nullptr});
   BOOST_TEST_MESSAGE("light example built in " << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()
                                                << " s");
   return *b;

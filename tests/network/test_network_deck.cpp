@@ -1,13 +1,14 @@
 // The CalculiX deck writer (src/network/ccx_deck.hpp) and solver run on networks of straight pipes,
-// against an exact adiabatic Fanno-flow integration with the Colebrook friction factor written here,
-// independently of the product: a single pipe, and a split between two pipes of different length.
+// against an exact adiabatic Fanno-flow integration with the Colebrook friction factor
+// (tests/support/fanno_exact.hpp, independent of the product): a single pipe, and a split between two
+// pipes of different length.
 #define BOOST_TEST_MODULE network_deck
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
-#include <functional>
 
 #include "brep/temp_files.hpp"
+#include "support/fanno_exact.hpp"
 #include "src/network/ccx_deck.hpp"
 #include "src/network/ccx_solve.hpp"
 
@@ -19,48 +20,10 @@ namespace {
 constexpr double kPt = 2.0e6, kTt = 800, kSink = 1.9e6;  // Pa, K, Pa: subsonic pipes
 const Gas kAir{287.05, 1100, 3.6e-5};
 
-struct Pipe {
-  double area, dh, length, ks;  // mm^2, mm, mm, mm
-};
+using Pipe = test::FannoPipe;
 
-// Darcy friction factor: Colebrook's implicit law, by fixed-point iteration to machine precision.
-double colebrook(double re, double rel) {
-  double lambda = 0.02;
-  for (int i = 0; i < 200; ++i) lambda = std::pow(-2 * std::log10(rel / 3.7 + 2.51 / (re * std::sqrt(lambda))), -2);
-  return lambda;
-}
-
-double bisect(const std::function<double(double)>& f, double lo, double hi) {
-  for (int i = 0; i < 200; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    ((f(lo) < 0) == (f(mid) < 0) ? lo : hi) = mid;
-  }
-  return 0.5 * (lo + hi);
-}
-
-// Exact adiabatic Fanno flow: for a mass flow m (kg/s) the inlet Mach number from the inlet totals, the
-// outlet Mach number from lambda L / D = F(M1) - F(M2), and the outlet total pressure. Returns the m
-// whose outlet total pressure is `pt_out` (or the choking flow when the pipe chokes first).
 double fanno_mass_flow(const Pipe& p, double pt_in, double pt_out) {
-  const double g = kAir.cp / (kAir.cp - kAir.gas_constant), a = p.area * 1e-6, d = p.dh * 1e-3;
-  const auto flow = [&](double mach) {
-    return a * pt_in / std::sqrt(kAir.gas_constant * kTt) * std::sqrt(g) * mach *
-           std::pow(1 + 0.5 * (g - 1) * mach * mach, -(g + 1) / (2 * (g - 1)));
-  };
-  const auto fanno = [&](double mach) {
-    const double m2 = mach * mach;
-    return (1 - m2) / (g * m2) + (g + 1) / (2 * g) * std::log((g + 1) * m2 / (2 + (g - 1) * m2));
-  };
-  const auto outlet_pt = [&](double m) {
-    const double m1 = bisect([&](double mach) { return flow(mach) - m; }, 1e-9, 1.0);
-    const double re = m * d / (a * kAir.viscosity);
-    const double target = fanno(m1) - colebrook(re, p.ks / p.dh) * p.length / p.dh;
-    if (target <= 0) return 0.0;  // the pipe chokes before its end: no such flow
-    const double m2 = bisect([&](double mach) { return fanno(mach) - target; }, m1, 1.0);
-    const double k = (g + 1) / (2 * (g - 1));
-    return pt_in * (m1 / m2) * std::pow((2 + (g - 1) * m2 * m2) / (2 + (g - 1) * m1 * m1), k);
-  };
-  return bisect([&](double m) { return outlet_pt(m) - pt_out; }, 1e-9, 0.999 * flow(1.0));
+  return test::fanno_mass_flow(p, {kAir.gas_constant, kAir.cp, kAir.viscosity}, pt_in, kTt, pt_out);
 }
 
 Network pipes_network(const std::vector<Pipe>& pipes) {

@@ -38,6 +38,10 @@ const fs::path kC3x = COOLINGGEN_SOURCE_DIR "/data/examples/c3x_vane.json";
 config::Config c3x_uncooled() {
   config::Config c = config::load_config_file(kC3x);
   c.cooling = {};
+  // ... and without the coolant network of its passages (a default format of the example).
+  c.coolant.reset();
+  c.output.formats.erase(std::remove(c.output.formats.begin(), c.output.formats.end(), config::OutputFormat::Network),
+                         c.output.formats.end());
   return c;
 }
 
