@@ -2,7 +2,7 @@
 # Builds the libFuzzer harnesses of the input readers (fuzz/) with clang under ASan + UBSan in build-fuzz
 # and runs each for FUZZ_SECONDS (default 60) on its seed corpus: fuzz/seeds/<target>, the regression
 # inputs (tests/fuzz_regressions/<target>), the examples' configs (data/examples, data/repro) and their
-# point files (data/c3x); configs that import a blade are left out (see below). Prints the executions per run;
+# point files (data/c3x). Prints the executions per run;
 # fails on any crash, sanitizer report, broken promise, timeout (> 10 s per input) or > 2 GB of memory.
 # The reproducer of a finding is written to build-fuzz/findings/ (replay: build-fuzz/fuzz/<target> FILE).
 set -euo pipefail
@@ -36,13 +36,9 @@ run() {
   fi
 }
 # The two harnesses side by side (one core each): the stage costs one FUZZ_SECONDS, not two.
-# The examples' configs as seeds, but for those with "blade.import": reading one cuts the imported blade at
-# the streamlines (the blade model's work, seconds per input under the sanitizers, past -timeout), and
-# the harness leaves the blade model out (fuzz/fuzz_config.cpp). The geomTurbo reader's hostile inputs are
-# tests/cli/test_cli_import.cpp's.
-rm -rf "$out/seeds-examples" && mkdir -p "$out/seeds-examples"
-grep -L '"import"' data/examples/*.json | xargs -I{} cp {} "$out/seeds-examples/"
-run fuzz_config "$out/config.dict" fuzz/seeds/config tests/fuzz_regressions/config "$out/seeds-examples" data/repro &
+# Every example config is a seed, those with blade.import too: the reader reads the imported file's syntax
+# only (the cut at the streamlines is the blade model's, build_model).
+run fuzz_config "$out/config.dict" fuzz/seeds/config tests/fuzz_regressions/config data/examples data/repro &
 config_job=$!
 run fuzz_point_file fuzz/point_file.dict fuzz/seeds/point_file tests/fuzz_regressions/point_file data/c3x || status=1
 wait "$config_job" || status=1

@@ -156,7 +156,7 @@ py::dict validate(const py::handle& config, const py::object& progress_callback)
   py::dict d;
   d["name"] = c.name;
   d["flow_path"] = m.trim.straight ? "straight" : "meridional";
-  d["sections"] = c.blade.sections.size();
+  d["sections"] = config::section_count(c);
   return d;
 }
 

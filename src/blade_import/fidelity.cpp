@@ -136,7 +136,7 @@ blade::ImportRecord measure_fidelity(const ImportedBlade& b, const SlicedBlade& 
   if (worst && worst->distance > tolerance) {
     static const char* where[] = {"at its point on this line", "half-way after its point on this line",
                                   "half-way to the next section"};
-    throw InvalidGeometry(b.file + ":" + std::to_string(worst->line) + ": section " + std::to_string(worst->section + 1) +
+    throw InvalidGeometry(b.file_of(worst->section) + ":" + std::to_string(worst->line) + ": section " + std::to_string(worst->section + 1) +
                           ": the built blade lies " + (worst->distance >= kFar ? "more than " : "") +
                           format_number(worst->distance) + " mm from the input " +
                           where[worst->kind] + ", more than blade.import.tolerance " + format_number(tolerance) +

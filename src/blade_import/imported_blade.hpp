@@ -20,6 +20,7 @@ struct ImportedSection {
   std::vector<Eigen::Vector3d> suction, pressure;  // mm, CoolingGen frame
   std::vector<int> suction_lines, pressure_lines;   // file line of each point
   int line = 0;                                     // file line where the section starts (suction side)
+  std::string file;                                 // its own file (section tables); empty: the blade's
 };
 
 struct ImportedBlade {
@@ -31,6 +32,11 @@ struct ImportedBlade {
   int hub_line = 0, casing_line = 0;
   int number_of_blades = 0;                     // 0 = not given
   double tip_gap_le = 0, tip_gap_te = 0;        // mm, clearance between blade tip and casing
+
+  /// The file section k came from (for messages).
+  const std::string& file_of(std::size_t k) const {
+    return k < sections.size() && !sections[k].file.empty() ? sections[k].file : file;
+  }
 };
 
 }  // namespace cg::blade_import

@@ -1,9 +1,9 @@
 #include "src/blade_import/input_surface.hpp"
 
-#include <Eigen/Dense>
 #include <cmath>
 
 #include "src/analyze/arc_length.hpp"
+#include "src/blade_import/outline_checks.hpp"
 #include "src/core/constants.hpp"
 #include "src/core/error.hpp"
 #include "src/core/format.hpp"
@@ -13,7 +13,7 @@ namespace cg::blade_import {
 namespace {
 
 [[noreturn]] void fail(const ImportedBlade& b, std::size_t k, int line, const std::string& what) {
-  throw InvalidGeometry(b.file + ":" + std::to_string(line) + ": section " + std::to_string(k + 1) + ": " + what);
+  throw InvalidGeometry(b.file_of(k) + ":" + std::to_string(line) + ": section " + std::to_string(k + 1) + ": " + what);
 }
 
 // Sides: enough points, none repeated, none turning back.
@@ -21,47 +21,7 @@ void check_side(const ImportedBlade& b, std::size_t k, const std::vector<Eigen::
                 const std::vector<int>& lines, const char* side) {
   if (p.size() < 3)
     fail(b, k, b.sections[k].line, std::string("the ") + side + " side has " + std::to_string(p.size()) + " points, needs >= 3");
-  for (std::size_t i = 0; i + 1 < p.size(); ++i) {
-    const double d = (p[i + 1] - p[i]).norm();
-    if (d < 1e-6)
-      fail(b, k, lines[i + 1], std::string("duplicated point: the ") + side + " side's points at lines " +
-                                   std::to_string(lines[i]) + " and " + std::to_string(lines[i + 1]) + " coincide");
-    if (i + 2 < p.size()) {
-      const Eigen::Vector3d a = (p[i + 1] - p[i]).normalized(), c = (p[i + 2] - p[i + 1]).normalized();
-      if (a.dot(c) < std::cos(135.0 * kPi / 180))
-        fail(b, k, lines[i + 1], std::string("points out of order: the ") + side + " side turns back at line " +
-                                     std::to_string(lines[i + 1]) + " (points must run LE -> TE)");
-    }
-  }
-}
-
-// The outline projected on its best-fit plane must not cross itself.
-void check_crossing(const ImportedBlade& b, std::size_t k, const std::vector<Eigen::Vector3d>& loop,
-                    const std::vector<int>& lines) {
-  Eigen::Vector3d c = Eigen::Vector3d::Zero();
-  for (const auto& p : loop) c += p;
-  c /= static_cast<double>(loop.size());
-  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-  for (const auto& p : loop) cov += (p - c) * (p - c).transpose();
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(cov);
-  const Eigen::Vector3d e1 = es.eigenvectors().col(2), e2 = es.eigenvectors().col(1);
-  std::vector<Eigen::Vector2d> q;
-  for (const auto& p : loop) q.emplace_back((p - c).dot(e1), (p - c).dot(e2));
-  const std::size_t n = q.size();
-  auto cross = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); };
-  for (std::size_t i = 0; i < n; ++i) {
-    const Eigen::Vector2d a0 = q[i], a1 = q[(i + 1) % n];
-    for (std::size_t j = i + 2; j < n; ++j) {
-      if (i == 0 && j == n - 1) continue;  // neighbours across the closing segment
-      const Eigen::Vector2d b0 = q[j], b1 = q[(j + 1) % n];
-      const double d1 = cross(a1 - a0, b0 - a0), d2 = cross(a1 - a0, b1 - a0);
-      const double d3 = cross(b1 - b0, a0 - b0), d4 = cross(b1 - b0, a1 - b0);
-      if (((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0)) && d1 != 0 && d2 != 0 && d3 != 0 && d4 != 0)
-        fail(b, k, lines[i], "the outline crosses itself: the segment from line " + std::to_string(lines[i]) + " to " +
-                                 std::to_string(lines[(i + 1) % n]) + " crosses the one from line " +
-                                 std::to_string(lines[j]) + " to " + std::to_string(lines[(j + 1) % n]));
-    }
-  }
+  if (const auto f = run_fault(p, lines, false, std::string("the ") + side + " side", "LE -> TE")) fail(b, k, f->line, f->what);
 }
 
 // Side fractions clustered at both ends: (1 - cos(pi i / m)) / 2.
@@ -79,7 +39,7 @@ std::string section_name(const ImportedBlade& blade, std::size_t k) {
 
 InputSurface::InputSurface(const ImportedBlade& b, int samples_per_side, double gap_tolerance)
     : kind_(b.kind), m_(samples_per_side) {
-  require(b.sections.size() >= 2, b.file + ": " + std::to_string(b.sections.size()) +
+  require(b.sections.size() >= 2, b.file_of(0) + ": " + std::to_string(b.sections.size()) +
                                       " section given; at least 2 (reaching past hub and casing) are needed");
   const std::vector<double> f = side_fractions(m_);
   samples_.assign(static_cast<std::size_t>(2 * m_), {});
@@ -104,7 +64,7 @@ InputSurface::InputSurface(const ImportedBlade& b, int samples_per_side, double 
       loop.push_back(s.pressure[i]);
       lines.push_back(s.pressure_lines[i]);
     }
-    check_crossing(b, k, loop, lines);
+    if (const auto f = crossing_fault(loop, lines)) fail(b, k, f->line, f->what);
     std::vector<double> params = interpolation_parameters<3>(loop, ParamMethod::Centripetal, true);
     BSplineCurve<3> curve = interpolate_closed<3>(loop, 3, params, periodic_interpolation_knots(params, 3));
     const double t_te = params[s.suction.size() - 1];

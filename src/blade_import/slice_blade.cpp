@@ -39,7 +39,7 @@ std::vector<Eigen::Vector2d> tip_contour(const ImportedBlade& b) {
 
 [[noreturn]] void not_reaching(const ImportedBlade& b, bool hub, double by) {
   const std::size_t k = hub ? 0 : b.sections.size() - 1;
-  throw InvalidGeometry(b.file + ":" + std::to_string(b.sections[k].line) + ": section " + std::to_string(k + 1) +
+  throw InvalidGeometry(b.file_of(k) + ":" + std::to_string(b.sections[k].line) + ": section " + std::to_string(k + 1) +
                         " does not reach the " + (hub ? "hub" : (b.tip_gap_le > 0 || b.tip_gap_te > 0 ? "casing less the tip gap" : "casing")) +
                         ": it lies up to " + format_number(std::abs(by)) +
                         " mm inside the flow path; the first and last sections must reach to or past hub and casing");
@@ -122,17 +122,24 @@ blade::BladeSectionDefinition section_of_cut(const ImportedBlade& b, std::vector
 
 }  // namespace
 
-SlicedBlade slice_blade(const ImportedBlade& b, const ImportOptions& o, const blade::BladeOptions& options) {
+SlicedBlade slice_blade(const ImportedBlade& b, const ImportOptions& o, const blade::BladeOptions& options,
+                        const blade::MeridionalNetDefinition* channel) {
   SlicedBlade out;
   std::size_t most = 0;
   for (const auto& s : b.sections) most = std::max({most, s.suction.size(), s.pressure.size()});
   const int m = o.samples_per_side > 0 ? o.samples_per_side : std::clamp(static_cast<int>(2 * most), 96, 300);
   out.surface = std::make_shared<const InputSurface>(b, m, o.tolerance);
   const InputSurface& surf = *out.surface;
-  const int n = o.spans > 0 ? o.spans : std::clamp(static_cast<int>(b.sections.size()), 11, 21);
+  const int n = cut_count(o, b.sections.size());
   for (int i = 0; i < n; ++i) out.spans.push_back(static_cast<double>(i) / (n - 1));
 
   blade::MeridionalNetDefinition net_def;
+  if (channel) {  // its streamlines and sampling; the LE line is the import's
+    net_def = *channel;
+    net_def.leading_edge.clear();
+    net_def.trailing_edge.clear();
+    net_def.stations.clear();
+  }
   const std::vector<Eigen::Vector2d> casing = tip_contour(b);
   std::optional<ChannelSide> side;
   double span = 0;

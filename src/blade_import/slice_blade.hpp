@@ -11,16 +11,11 @@
 #include <memory>
 
 #include "src/blade/blade_surface.hpp"
+#include "src/blade_import/import_options.hpp"
 #include "src/blade_import/imported_blade.hpp"
 #include "src/blade_import/input_surface.hpp"
 
 namespace cg::blade_import {
-
-struct ImportOptions {
-  double tolerance = 0.01;    // mm: fidelity limit (fidelity.hpp) and LE/TE gap of the input sides
-  int spans = 0;              // cuts from hub to casing; 0 = one per input section, in [11, 21]
-  int samples_per_side = 0;   // chordwise samples per side; 0 = twice the most points on a side, in [96, 300]
-};
 
 struct SlicedBlade {
   blade::BladeDefinition definition;  // flow path and point sections (options: the caller's)
@@ -29,7 +24,10 @@ struct SlicedBlade {
 };
 
 /// Throws InvalidGeometry "<file>:<line>: ..." for hostile input (input_surface.hpp) and for sections
-/// that do not reach the hub or the casing (naming the section).
-SlicedBlade slice_blade(const ImportedBlade& blade, const ImportOptions& options, const blade::BladeOptions& blade_options);
+/// that do not reach the hub or the casing (naming the section). `channel` (optional): the config's
+/// meridional flow path (hub and casing equal to the blade's), whose explicit streamlines and sampling
+/// the cuts follow; its LE, TE and station lines are not used (the LE line is the import's).
+SlicedBlade slice_blade(const ImportedBlade& blade, const ImportOptions& options, const blade::BladeOptions& blade_options,
+                        const blade::MeridionalNetDefinition* channel = nullptr);
 
 }  // namespace cg::blade_import

@@ -19,7 +19,7 @@ namespace {
 void print_summary(const config::Config& c, const pipeline::BuildResult& r, const pipeline::WrittenOutputs& w) {
   const brep::SolidCheck& k = r.checks.front();
   std::printf("%s: %s flow path, %zu sections\n", c.name.c_str(), r.model.trim.straight ? "straight" : "meridional",
-              c.blade.sections.size());
+              config::section_count(c));
   std::printf("  volume %.4f mm^3, surface %.4f mm^2, %d faces, bbox [%.3f %.3f %.3f] - [%.3f %.3f %.3f] mm\n", k.volume,
               k.area(), k.face_count, k.bbox_min[0], k.bbox_min[1], k.bbox_min[2], k.bbox_max[0], k.bbox_max[1],
               k.bbox_max[2]);

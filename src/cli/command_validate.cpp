@@ -19,7 +19,7 @@ Command add_validate_command(CLI::App& app) {
             const config::Config c = load_config_argument(*path);
             const blade::BladeModel m = pipeline::validate(c);
             std::printf("%s: valid (%s flow path, %zu sections)\n", path->c_str(),
-                        m.trim.straight ? "straight" : "meridional", c.blade.sections.size());
+                        m.trim.straight ? "straight" : "meridional", config::section_count(c));
             if (!c.cooling.empty())
               std::printf("planned and checked: the core's walls, chambers, turnaround ends, turbulators, trailing-edge slots and pin "
                           "fins, every film and showerhead hole (wall crossing, chamber, ligaments to other holes, ribs and end walls), "

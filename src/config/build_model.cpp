@@ -2,8 +2,8 @@
 // names the part of the config it comes from (apart from config.cpp's reading, which needs no model).
 #include "src/blade/meridional_net.hpp"
 #include "src/blade/section.hpp"
-#include "src/blade_import/fidelity.hpp"
 #include "src/config/config.hpp"
+#include "src/config/imported_model.hpp"
 #include "src/config/point_checks.hpp"
 
 namespace cg::config {
@@ -18,9 +18,9 @@ blade::BladeModel build_model(const Config& config, ProgressSink* progress) {
       throw ConfigError(std::string("flow_path: ") + e.what());
     }
   }
+  if (config.blade_import) return build_imported_model(config, progress);
   const double steps = static_cast<double>(def.sections.size() + 2);
-  // Imported blades: the cuts were made and checked by the import.
-  for (std::size_t i = 0; i < (config.blade_import ? 0 : def.sections.size()); ++i) {
+  for (std::size_t i = 0; i < def.sections.size(); ++i) {
     const std::string name = "sections[" + std::to_string(i) + "]";
     report_progress(progress, static_cast<double>(i + 1) / steps, name);
     check_cancel(progress, name);
@@ -45,24 +45,11 @@ blade::BladeModel build_model(const Config& config, ProgressSink* progress) {
   }
   report_progress(progress, (steps - 1) / steps, "blade surface");
   check_cancel(progress, "blade surface");
-  const auto build = [&] {
-    try {
-      return blade::build_blade(def);
-    } catch (const InvalidGeometry& e) {
-      throw ConfigError(std::string(config.blade_import ? "blade.import.file: the blade cut from it: "
-                                                        : "blade model (flow_path + sections): ") + e.what());
-    }
-  };
-  blade::BladeModel model = build();
-  if (const auto& im = config.blade_import) {
-    try {
-      model.imported = blade_import::measure_fidelity(*im->blade, *im->sliced, model, im->options.tolerance);
-    } catch (const InvalidGeometry& e) {
-      throw ConfigError(std::string("blade.import.tolerance: ") + e.what());
-    }
-    model.imported->format = im->format;
+  try {
+    return blade::build_blade(def);
+  } catch (const InvalidGeometry& e) {
+    throw ConfigError(std::string("blade model (flow_path + sections): ") + e.what());
   }
-  return model;
 }
 
 }  // namespace cg::config

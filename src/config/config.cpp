@@ -8,6 +8,7 @@
 #include "src/blade/meridional_net.hpp"
 #include "src/blade/section.hpp"
 #include "src/blade_import/geomturbo_reader.hpp"
+#include "src/blade_import/section_table_reader.hpp"
 #include "src/config/handoff_fields.hpp"
 #include "src/config/json_document.hpp"
 #include "src/config/json_fields.hpp"
@@ -194,30 +195,56 @@ blade::BladeOptions blade_options(const Field& f) {
   return o;
 }
 
-// blade.import: reads the file and cuts it at the flow path's streamlines (src/blade_import).
-void import_blade(const Field& f, const std::filesystem::path& base_dir, Config& c) {
-  f.expect_object({"format", "file", "tolerance", "spans", "samples_per_side"});
-  f.at("format").choice({"geomturbo"});
-  BladeImport im;
-  std::filesystem::path p = f.at("file").string();
+std::string resolved(const Field& f, const std::filesystem::path& base_dir) {
+  std::filesystem::path p = f.string();
   if (p.is_relative()) p = base_dir / p;
-  im.file = p.string();
+  return p.string();
+}
+
+// blade.import's file(s), read for their syntax only; build_model cuts the blade (imported_model.cpp).
+void read_import_files(const Field& f, const std::filesystem::path& base_dir, BladeImport& im) {
+  const bool tables = im.format == "sections";
+  for (const char* key : {"file", "files", "frame", "unit"})
+    if (f.has(key) && (std::string(key) == "file") == tables)
+      fail(f.path() + "." + key, "is not given with format \"" + im.format + "\" (" +
+                                     (tables ? "files, frame and unit" : "file") + " instead)");
+  try {
+    if (!tables) {
+      im.field = f.path() + ".file";
+      im.files = {resolved(f.at("file"), base_dir)};
+      im.blade = std::make_shared<const blade_import::ImportedBlade>(blade_import::read_geomturbo(im.files[0]));
+      return;
+    }
+    im.field = f.path() + ".files";
+    im.frame = f.at("frame").choice({"xyz", "xrtheta"}) == 0 ? blade_import::TableFrame::Xyz : blade_import::TableFrame::XRTheta;
+    const double k = blade::millimetres_per(f.has("unit") ? length_unit(f.at("unit")) : blade::LengthUnit::Millimetre);
+    const Field files = f.at("files");
+    const std::size_t n = files.expect_array(2);
+    for (std::size_t i = 0; i < n; ++i) {
+      im.files.push_back(resolved(files.item(i), base_dir));
+      im.field = files.item(i).path();
+      im.tables.push_back(blade_import::read_section_table(im.files.back(), im.frame, k));
+    }
+    im.field = f.path() + ".files";
+  } catch (const InvalidGeometry& e) {
+    fail(im.field, e.what());
+  }
+}
+
+// blade.import: the format, the options and the file(s).
+void import_blade(const Field& f, const std::filesystem::path& base_dir, Config& c) {
+  f.expect_object({"format", "file", "files", "frame", "unit", "tolerance", "spans", "samples_per_side"});
+  static const char* formats[] = {"geomturbo", "sections"};
+  BladeImport im;
+  im.format = formats[f.at("format").choice({"geomturbo", "sections"})];
   im.options.tolerance = f.number_or("tolerance", im.options.tolerance, closed(1e-4, 1), "mm");
   im.options.spans = f.integer_or("spans", 0, 0, 201);
   if (im.options.spans == 1) fail(f.path() + ".spans", "must be 0 (automatic) or in [2, 201], got 1");
   im.options.samples_per_side = f.integer_or("samples_per_side", 0, 0, 2000);
   if (im.options.samples_per_side > 0 && im.options.samples_per_side < 8)
     fail(f.path() + ".samples_per_side", "must be 0 (automatic) or in [8, 2000]");
-  try {
-    auto blade = std::make_shared<blade_import::ImportedBlade>(blade_import::read_geomturbo(im.file));
-    im.blade = blade;
-    im.sliced = std::make_shared<blade_import::SlicedBlade>(blade_import::slice_blade(*blade, im.options, c.blade.options));
-  } catch (const InvalidGeometry& e) {
-    fail(f.path() + ".file", e.what());
-  }
-  c.blade = im.sliced->definition;
-  for (std::size_t i = 0; i < c.blade.sections.size(); ++i)
-    c.point_sources.push_back({f.path() + ".file (cut at span " + format_number(c.blade.sections[i].placement.span) + ")", "", {}});
+  read_import_files(f, base_dir, im);
+  im.cuts = blade_import::cut_count(im.options, im.blade ? im.blade->sections.size() : im.tables.size());
   c.blade_import = std::move(im);
 }
 
@@ -249,11 +276,19 @@ Config parse_config(const nlohmann::json& document, const std::filesystem::path&
   root.at("units").choice({"mm"});
   if (root.has("blade")) c.blade.options = blade_options(root.at("blade"));
   if (root.has("blade") && root.at("blade").has("import")) {
-    for (const char* key : {"flow_path", "sections"})
-      if (root.has(key))
-        fail(key, std::string("is not given with blade.import (the imported file gives the blade") +
-                      (key[0] == 'f' ? " and its CHANNEL the hub and casing)" : "'s sections)"));
+    if (root.has("sections")) fail("sections", "is not given with blade.import (the imported file gives the blade's sections)");
     import_blade(root.at("blade").at("import"), base_dir, c);
+    if (c.blade_import->format == "geomturbo") {
+      if (root.has("flow_path"))
+        fail("flow_path", "is not given with blade.import format \"geomturbo\" (its CHANNEL gives the hub and casing)");
+    } else {
+      if (!root.has("flow_path"))
+        fail("flow_path", "is required with blade.import format \"" + c.blade_import->format +
+                              "\" (the hub and casing the imported blade is cut at)");
+      c.blade.flow_path = flow_path(root.at("flow_path"));
+      if (c.blade_import->frame == blade_import::TableFrame::XRTheta && std::holds_alternative<blade::StraightFlowPath>(c.blade.flow_path))
+        fail("blade.import.frame", "\"xrtheta\" needs a meridional flow_path (a straight one's sections are x y z)");
+    }
   } else {
     c.blade.flow_path = flow_path(root.at("flow_path"));
   }
@@ -310,8 +345,12 @@ Config parse_config(const nlohmann::json& document, const std::filesystem::path&
     if (c.cooling.empty()) fail("output.formats", "\"network\" needs a \"cooling\" section (the coolant circuit is its passages)");
   }
   if (root.has("mesh")) c.mesh = mesh_config(root.at("mesh"));
-  if (root.has("grid")) c.grid = parse_grid_config(root.at("grid"), c.blade.sections.size());
+  if (root.has("grid")) c.grid = parse_grid_config(root.at("grid"), section_count(c));
   return c;
+}
+
+std::size_t section_count(const Config& config) {
+  return config.blade_import ? static_cast<std::size_t>(config.blade_import->cuts) : config.blade.sections.size();
 }
 
 Config parse_config_text(const std::string& text, const std::filesystem::path& base_dir, const std::string& default_name,

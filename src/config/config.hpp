@@ -14,7 +14,9 @@
 #include <vector>
 
 #include "src/blade/blade_surface.hpp"
-#include "src/blade_import/slice_blade.hpp"
+#include "src/blade_import/import_options.hpp"
+#include "src/blade_import/imported_blade.hpp"
+#include "src/blade_import/section_table_reader.hpp"
 #include "src/config/config_error.hpp"
 #include "src/config/coolant_config.hpp"
 #include "src/config/cooling_config.hpp"
@@ -58,15 +60,21 @@ struct PointSource {
   std::vector<int> lines;  ///< file line of each point (empty for inline values)
 };
 
-/// "blade.import": a blade designed by another tool (src/blade_import). The file is read and cut at
-/// the flow path's streamlines while parsing (its sections become the definition's point sections);
-/// build_model measures the built blade against it.
+/// "blade.import": a blade designed by another tool (src/blade_import). The config reader reads the
+/// file(s) (their syntax: a geomTurbo file or section table that is not one is refused naming its
+/// line); build_model (imported_model.hpp) makes the section tables' sides, cuts the blade
+/// at the flow path's streamlines into point sections, builds the blade from them and measures it
+/// against the file (the geometry checks: open or crossing sections, sections not reaching hub or
+/// casing, fidelity beyond the tolerance).
 struct BladeImport {
-  std::string format = "geomturbo";
-  std::string file;  ///< resolved path
+  std::string format = "geomturbo";  ///< "geomturbo" | "sections"
+  std::string field = "blade.import.file";  ///< the field geometry errors name ("blade.import.files")
+  std::vector<std::string> files;  ///< resolved paths (geomturbo: one)
   blade_import::ImportOptions options;
-  std::shared_ptr<const blade_import::ImportedBlade> blade;
-  std::shared_ptr<const blade_import::SlicedBlade> sliced;
+  std::shared_ptr<const blade_import::ImportedBlade> blade;  ///< geomturbo: as read
+  std::vector<blade_import::SectionTable> tables;            ///< sections: as read, hub -> tip
+  blade_import::TableFrame frame = blade_import::TableFrame::Xyz;
+  int cuts = 0;  ///< stream-surface cuts = sections of the blade model (import_options.hpp)
 };
 
 struct Config {
@@ -98,6 +106,8 @@ Config parse_config_text(const std::string& text, const std::filesystem::path& b
 /// Reads and parses a config file (base directory = the file's directory, default name = its stem).
 /// A missing file, a directory or an unreadable file is a ConfigError saying which.
 Config load_config_file(const std::filesystem::path& file);
+/// Sections of the blade model: the config's, or an imported blade's cuts.
+std::size_t section_count(const Config& config);
 
 /// Builds the blade model from a parsed config; errors of the model are rethrown as ConfigError
 /// naming the part of the config they come from ("flow_path", "sections[i]", "blade").

@@ -18,7 +18,7 @@ GridResult run_grid(const config::Config& c, ProgressSink* progress) {
   GridResult out;
   StageRunner stages(progress, out.timings);
   stages.run("blade_model", "blade model", [&] { out.model = validate(c); });
-  for (int k : config::grid_sections(c.grid, c.blade.sections.size())) {
+  for (int k : config::grid_sections(c.grid, config::section_count(c))) {
     SectionGridRun run;
     run.section = k;
     run.span = out.model.section_spans.at(static_cast<std::size_t>(k));

@@ -25,12 +25,18 @@ json ab(const Eigen::Vector2d& p) { return json::array({p.x(), p.y()}); }
 // The blade model's per-section diagnostics (issue 8 items 2 and 5): the edge circles found (and
 // whether the profile follows them as exact arcs); the surface's tolerance, achieved deviation and pole
 // counts are in blade_surface. The 3D section's LE and TE are at the surface parameters u_le, u_te.
+// An imported blade's sections are its cuts (point sections made by the import, at the model's spans).
 json section_entry(const config::Config& c, const blade::BladeModel& m, std::size_t i) {
-  const auto& def = c.blade.sections[i];
-  const bool points = std::holds_alternative<blade::PointSectionDefinition>(def.shape);
-  json e{{"span", def.placement.span}, {"kind", points ? "points" : "parametric"}};
-  if (points && !std::get<blade::PointSectionDefinition>(def.shape).file.empty())
-    e["file"] = std::get<blade::PointSectionDefinition>(def.shape).file;
+  json e;
+  if (c.blade_import) {
+    e = json{{"span", i < m.section_spans.size() ? m.section_spans[i] : 0.0}, {"kind", "points"}};
+  } else {
+    const auto& def = c.blade.sections[i];
+    const bool points = std::holds_alternative<blade::PointSectionDefinition>(def.shape);
+    e = json{{"span", def.placement.span}, {"kind", points ? "points" : "parametric"}};
+    if (points && !std::get<blade::PointSectionDefinition>(def.shape).file.empty())
+      e["file"] = std::get<blade::PointSectionDefinition>(def.shape).file;
+  }
   if (i >= m.profiles.size() || i >= m.section_curves.size()) return e;
   const blade::SectionProfile& p = m.profiles[i];
   const BSplineCurve<3>& curve = m.section_curves[i];
@@ -78,11 +84,11 @@ json import_entry(const blade::ImportRecord& r) {
 
 nlohmann::ordered_json report_model(const config::Config& c, const blade::BladeModel& m) {
   json sections = json::array();
-  for (std::size_t i = 0; i < c.blade.sections.size(); ++i) sections.push_back(section_entry(c, m, i));
+  for (std::size_t i = 0; i < config::section_count(c); ++i) sections.push_back(section_entry(c, m, i));
   const auto& s = m.surface;
   nlohmann::ordered_json out = json{{"name", c.name},
               {"description", c.description},
-              {"flow_path", std::holds_alternative<blade::StraightFlowPath>(c.blade.flow_path) ? "straight" : "meridional"},
+              {"flow_path", m.trim.straight ? "straight" : "meridional"},
               {"span_length_mm", m.span_length},
               {"sections", sections},
               {"blade_surface",
@@ -116,7 +122,8 @@ void hash_inputs(Sha256& h, const nlohmann::json& document, const config::Config
     const auto* p = std::get_if<blade::PointSectionDefinition>(&s.shape);
     if (p && !p->file.empty()) files.push_back(p->file);
   }
-  if (c.blade_import) files.push_back(c.blade_import->file);  // a changed import file changes the blade
+  if (c.blade_import)  // a changed import file changes the blade
+    files.insert(files.end(), c.blade_import->files.begin(), c.blade_import->files.end());
   files.insert(files.end(), c.cooling.source_files.begin(), c.cooling.source_files.end());
   for (const std::string& f : files) {
     std::ifstream in(f, std::ios::binary);

@@ -6,8 +6,7 @@
 #include <fstream>
 
 #include "acceptance/handoff_checks.hpp"
-#include "src/blade_import/geomturbo_writer.hpp"
-#include "src/config/config.hpp"
+#include "acceptance/import_round_trip.hpp"
 
 using namespace cg;
 
@@ -41,30 +40,7 @@ BOOST_AUTO_TEST_CASE(iges_brep_mode_reads_as_solids) {
   test::check_volumes(r.volumes, build(), "IGES brep mode");
 }
 
-// Round trip with cooling: the blade written as geomTurbo (the library's writer, no cooling needed),
-// then `coolinggen build` of the same config with blade.import of that file instead of flow_path and
-// sections: a valid cooled part with the same feature names, and the import's figures within 0.01 mm.
+// Round trip with cooling through geomTurbo (acceptance/import_round_trip.hpp).
 BOOST_AUTO_TEST_CASE(geomturbo_round_trip_cools_the_same) {
-  test::TempDir dir("acceptance_centreline_import");
-  const auto source = std::filesystem::path(COOLINGGEN_SOURCE_DIR) / "data/examples/hpt_rotor_centreline.json";
-  blade_import::write_geomturbo_file((dir.path / "blade.geomTurbo").string(),
-                                     config::build_model(config::load_config_file(source)));
-  auto cfg = nlohmann::json::parse(test::read_text(source));
-  cfg.erase("flow_path");
-  cfg.erase("sections");
-  cfg["blade"]["import"] = {{"format", "geomturbo"}, {"file", "blade.geomTurbo"}};
-  cfg["output"]["formats"] = nlohmann::json::array();
-  std::ofstream(dir.path / "imported.json") << cfg.dump();
-  const test::Run run = test::run_cli("build " + test::q(dir.path / "imported.json") + " -o " + test::q(dir.path / "out") + " -q", dir.path);
-  BOOST_TEST_REQUIRE(run.exit_code == 0, run.err);
-  const auto report = nlohmann::json::parse(test::read_text(dir.path / "out" / "report.json"));
-  std::multiset<std::string> names;
-  for (const auto& body : report.at("bodies")) {
-    BOOST_TEST(body.at("valid").get<bool>());
-    for (const auto& [name, count] : body.at("faces").items())
-      for (int k = 0; k < count.get<int>(); ++k) names.insert(name);
-  }
-  const std::set<std::string> imported(names.begin(), names.end()), original(build().face_names.begin(), build().face_names.end());
-  BOOST_TEST(imported == original, "feature names of the imported blade's part equal the original's");
-  BOOST_TEST(report.at("model").at("import").at("deviation").at("max_mm").get<double>() <= 0.01);
+  test::expect_round_trip_cools_the_same(build(), "hpt_rotor_centreline.json", test::ImportVia::GeomTurbo);
 }

@@ -11,10 +11,13 @@
 #include <sstream>
 
 #include "cli/run_cli.hpp"
+#include "cli/section_tables.hpp"
 #include "src/algo/project_point_surface.hpp"
+#include "src/blade_import/geomturbo_reader.hpp"
 #include "src/blade_import/geomturbo_writer.hpp"
 #include "src/config/builtin_example.hpp"
 #include "src/config/config.hpp"
+#include "src/pipeline/report.hpp"
 
 using namespace cg;
 
@@ -30,8 +33,13 @@ struct RoundTrip {
   double import_s = 0, parametric_s = 0;
 };
 
+// How the exported blade comes back: as the geomTurbo file, or as one 3D section table per exported
+// section (written here from the file's points: the outline once around, starting mid pressure side,
+// in metres and x r theta for annular rows, mm and x y z for cascades).
+enum class Via { GeomTurbo, Tables };
+
 // Exports `c`'s blade, imports it again, measures both ways.
-RoundTrip round_trip(const config::Config& c, const std::string& tag) {
+RoundTrip round_trip(const config::Config& c, const std::string& tag, Via via = Via::GeomTurbo) {
   RoundTrip r;
   auto t0 = std::chrono::steady_clock::now();
   const blade::BladeModel original = config::build_model(c);
@@ -40,7 +48,8 @@ RoundTrip round_trip(const config::Config& c, const std::string& tag) {
   const auto file = dir.path / "blade.geomTurbo";
   blade_import::GeomTurboWriteOptions wo;
   blade_import::write_geomturbo_file(file.string(), original, wo);
-  const nlohmann::json doc = {{"units", "mm"}, {"blade", {{"import", {{"format", "geomturbo"}, {"file", file.string()}}}}}};
+  const nlohmann::json doc = via == Via::Tables ? test::tables_import(file, dir.path, c.source.at("flow_path"))
+                            : nlohmann::json{{"units", "mm"}, {"blade", {{"import", {{"format", "geomturbo"}, {"file", file.string()}}}}}};
   t0 = std::chrono::steady_clock::now();
   const config::Config ci = config::parse_config(doc, dir.path, tag);
   const blade::BladeModel imported = config::build_model(ci);
@@ -62,25 +71,33 @@ RoundTrip round_trip(const config::Config& c, const std::string& tag) {
   return r;
 }
 
+// Prints the figures of a round trip and checks both deviations against the 0.01 mm limit.
+void expect_close(const RoundTrip& r, const std::string& what) {
+  BOOST_TEST_MESSAGE(what << " round trip: between sections " << r.max_between << " mm, record " << r.max_record
+                          << " mm; import " << r.import_s << " s / parametric " << r.parametric_s << " s = "
+                          << r.import_s / r.parametric_s);
+  BOOST_TEST(r.max_between <= 0.01, what);
+  BOOST_TEST(r.max_record <= 0.01, what);
+}
+
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(round_trip_builtin_rotor_zrth) {
-  const RoundTrip r = round_trip(config::builtin_example_config(), "builtin");
-  BOOST_TEST_MESSAGE("built-in rotor geomTurbo round trip: between sections " << r.max_between << " mm, record "
-                     << r.max_record << " mm; import " << r.import_s << " s / parametric " << r.parametric_s << " s = "
-                     << r.import_s / r.parametric_s);
-  BOOST_TEST(r.max_between <= 0.01);
-  BOOST_TEST(r.max_record <= 0.01);
+  expect_close(round_trip(config::builtin_example_config(), "builtin"), "built-in rotor geomTurbo");
 }
 
 BOOST_AUTO_TEST_CASE(round_trip_c3x_cascade_xyz) {
   const config::Config c = config::load_config_file(std::filesystem::path(COOLINGGEN_SOURCE_DIR) / "data/examples/c3x_vane.json");
-  const RoundTrip r = round_trip(c, "c3x");
-  BOOST_TEST_MESSAGE("C3X cascade geomTurbo round trip: between sections " << r.max_between << " mm, record "
-                     << r.max_record << " mm; import " << r.import_s << " s / parametric " << r.parametric_s << " s = "
-                     << r.import_s / r.parametric_s);
-  BOOST_TEST(r.max_between <= 0.01);
-  BOOST_TEST(r.max_record <= 0.01);
+  expect_close(round_trip(c, "c3x"), "C3X cascade geomTurbo");
+}
+
+BOOST_AUTO_TEST_CASE(round_trip_builtin_rotor_section_tables_xrtheta) {
+  expect_close(round_trip(config::builtin_example_config(), "builtin_tables", Via::Tables), "built-in rotor section-table");
+}
+
+BOOST_AUTO_TEST_CASE(round_trip_c3x_section_tables_xyz) {
+  const config::Config c = config::load_config_file(std::filesystem::path(COOLINGGEN_SOURCE_DIR) / "data/examples/c3x_vane.json");
+  expect_close(round_trip(c, "c3x_tables", Via::Tables), "C3X section-table");
 }
 
 // ---- hostile input -------------------------------------------------------------------------------
@@ -189,4 +206,131 @@ BOOST_AUTO_TEST_CASE(point_line_not_three_numbers) {
   std::string t = file_text(valid());
   t.replace(t.find("\n-2 "), 4, "\n-2 x");
   expect_refused(validate(t, "garbled"), "garbled", "expected");
+}
+
+// The config reader reads the file (syntax) only; its geometry is checked where the blade model is
+// built (build_model, which `coolinggen validate` runs), naming the same field.
+BOOST_AUTO_TEST_CASE(geometry_checked_by_the_model_build_not_the_reader) {
+  auto s = valid();
+  s[0] = profile(3);
+  test::TempDir dir("import_stage");
+  std::ofstream(dir.path / "short.geomTurbo") << file_text(s);
+  const nlohmann::json doc = {{"units", "mm"}, {"blade", {{"import", {{"format", "geomturbo"}, {"file", "short.geomTurbo"}}}}}};
+  const config::Config c = config::parse_config(doc, dir.path, "short");  // no cut, no geometry check
+  BOOST_TEST(config::section_count(c) == 11u);
+  try {
+    config::build_model(c);
+    BOOST_ERROR("build_model accepted a blade that does not reach the hub");
+  } catch (const config::ConfigError& e) {
+    const std::string what = e.what();
+    BOOST_TEST(what.rfind("blade.import.file: ", 0) == 0, what);
+    BOOST_TEST(what.find("does not reach the hub") != std::string::npos, what);
+  }
+}
+
+// ---- hostile section tables (format "sections", a straight flow path of span 20 mm) ----------------
+
+namespace {
+
+// One table per profile: the outline once around (suction LE -> TE, pressure back), x y z in mm.
+std::vector<std::vector<std::array<double, 3>>> tables_of(const std::vector<Profile>& secs) {
+  std::vector<std::vector<std::array<double, 3>>> out;
+  for (const Profile& p : secs) {
+    std::vector<std::array<double, 3>> t;
+    for (const auto& q : p.suction) t.push_back({q[2], q[1], q[0]});
+    for (std::size_t i = p.pressure.size() - 2; i >= 1; --i) t.push_back({p.pressure[i][2], p.pressure[i][1], p.pressure[i][0]});
+    out.push_back(t);
+  }
+  return out;
+}
+
+test::Run validate_tables(const std::vector<std::vector<std::array<double, 3>>>& tables, const std::string& tag,
+                          bool with_flow_path = true) {
+  static test::TempDir dir("import_tables");
+  nlohmann::json files = nlohmann::json::array();
+  for (std::size_t k = 0; k < tables.size(); ++k) {
+    const std::string name = tag + "_" + std::to_string(k) + ".txt";
+    std::ofstream out(dir.path / name);
+    out << "x y z\n";
+    for (const auto& p : tables[k]) out << p[0] << " " << p[1] << " " << p[2] << "\n";
+    files.push_back(name);
+  }
+  nlohmann::json doc = {{"units", "mm"}, {"blade", {{"import", {{"format", "sections"}, {"files", files}, {"frame", "xyz"}}}}}};
+  if (with_flow_path) doc["flow_path"] = {{"type", "straight"}, {"span", 20}};
+  const auto cfg = dir.path / (tag + ".json");
+  std::ofstream(cfg) << doc.dump();
+  return test::run_cli("validate " + test::q(cfg), dir.path);
+}
+
+void expect_table_refused(const test::Run& r, const std::string& tag, const std::string& file, const std::string& words) {
+  BOOST_TEST(r.exit_code == 2, tag << ": exit " << r.exit_code << " " << r.err);
+  BOOST_TEST(test::count_lines(r.err) == 1, tag << ": " << r.err);
+  BOOST_TEST(r.err.find("blade.import.files") != std::string::npos, tag << ": " << r.err);
+  BOOST_TEST(r.err.find(file + ":") != std::string::npos, tag << ": names the file and line: " << r.err);
+  BOOST_TEST(r.err.find(words) != std::string::npos, tag << ": " << r.err);
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(tables_valid_small_cascade_validates) {
+  const test::Run r = validate_tables(tables_of(valid()), "tvalid");
+  BOOST_TEST(r.exit_code == 0, r.err);
+}
+
+BOOST_AUTO_TEST_CASE(tables_need_a_flow_path) {
+  const test::Run r = validate_tables(tables_of(valid()), "tnoflow", false);
+  BOOST_TEST(r.exit_code == 2, r.err);
+  BOOST_TEST(r.err.find("error: flow_path: is required with blade.import format \"sections\"") != std::string::npos, r.err);
+}
+
+BOOST_AUTO_TEST_CASE(tables_hostile) {
+  auto t = tables_of(valid());
+  auto open = t;
+  open[1].resize(9);  // the suction side only
+  expect_table_refused(validate_tables(open, "topen"), "open", "topen_1.txt", "section 2: open section");
+  auto dup = t;
+  dup[0].insert(dup[0].begin() + 3, dup[0][3]);
+  expect_table_refused(validate_tables(dup, "tdup"), "duplicated", "tdup_0.txt", "section 1: duplicated point");
+  auto unordered = t;
+  std::swap(unordered[2][12], unordered[2][13]);
+  expect_table_refused(validate_tables(unordered, "tunord"), "unordered", "tunord_2.txt", "section 3: points out of order");
+  auto crossing = t;
+  crossing[1][12][1] = 5;  // a pressure-side point beyond the suction side
+  expect_table_refused(validate_tables(crossing, "tcross"), "crossing", "tcross_1.txt", "section 2: the outline crosses itself");
+  auto short_hub = t;
+  short_hub[0] = tables_of({profile(3)})[0];
+  expect_table_refused(validate_tables(short_hub, "tshort"), "short", "tshort_0.txt", "section 1 does not reach the hub");
+  const test::Run r = [&] {
+    static test::TempDir dir("import_tables_garbled");
+    std::ofstream(dir.path / "g.txt") << "x y z\n1 2 3\n1 2 x\n";
+    const auto cfg = dir.path / "g.json";
+    std::ofstream(cfg) << R"({"units": "mm", "flow_path": {"type": "straight", "span": 20}, "blade": {"import":
+      {"format": "sections", "files": ["g.txt", "g.txt"], "frame": "xyz"}}})";
+    return test::run_cli("validate " + test::q(cfg), dir.path);
+  }();
+  BOOST_TEST(r.exit_code == 2, r.err);
+  BOOST_TEST(r.err.find("error: blade.import.files[0]: ") != std::string::npos, r.err);
+  BOOST_TEST(r.err.find("g.txt:3: expected three numbers (x y z)") != std::string::npos, r.err);
+}
+
+// Every table's bytes enter the input hash (a study's stage cache must not reuse a blade from an older table).
+BOOST_AUTO_TEST_CASE(tables_bytes_enter_the_input_hash) {
+  test::TempDir dir("import_tables_hash");
+  const auto t = tables_of(valid());
+  nlohmann::json files = nlohmann::json::array();
+  auto write = [&](double last_y) {
+    for (std::size_t k = 0; k < t.size(); ++k) {
+      std::ofstream out(dir.path / ("h" + std::to_string(k) + ".txt"));
+      for (std::size_t i = 0; i < t[k].size(); ++i)
+        out << t[k][i][0] << " " << (k == 2 && i == 5 ? last_y : t[k][i][1]) << " " << t[k][i][2] << "\n";
+    }
+  };
+  for (std::size_t k = 0; k < t.size(); ++k) files.push_back("h" + std::to_string(k) + ".txt");
+  const nlohmann::json doc = {{"units", "mm"}, {"flow_path", {{"type", "straight"}, {"span", 20}}},
+                              {"blade", {{"import", {{"format", "sections"}, {"files", files}, {"frame", "xyz"}}}}}};
+  write(t[2][5][1]);
+  const std::string before = pipeline::input_hash(config::parse_config(doc, dir.path, "h"));
+  write(t[2][5][1] + 0.001);
+  const std::string after = pipeline::input_hash(config::parse_config(doc, dir.path, "h"));
+  BOOST_TEST(before != after);
 }

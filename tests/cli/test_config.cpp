@@ -255,7 +255,7 @@ BOOST_AUTO_TEST_CASE(schema_documents_the_fields) {
   document_keys(example(), keys);
   for (const char* k : {"file", "values", "unit", "le_index", "te_index", "suction_side", "rotation_deg", "scale", "offset",
                         "theta_deg", "stations", "samples", "points_per_side", "product_name", "$schema", "span", "points",
-                        "formats"})
+                        "formats", "files", "frame", "tolerance", "spans", "samples_per_side"})
     keys.insert(k);
   for (const auto& k : keys) BOOST_TEST(names.count(k) == 1u, "schema lacks " << k);
 }
