@@ -1,6 +1,7 @@
 #include "src/config/config.hpp"
 
 #include <algorithm>
+#include <regex>
 #include <fstream>
 #include <limits>
 #include <sstream>
@@ -248,18 +249,22 @@ void import_blade(const Field& f, const std::filesystem::path& base_dir, Config&
   c.blade_import = std::move(im);
 }
 
-// coolant.sinks.rows names exit rows the cooling section has: film_row_<k>, showerhead_<k>, te_slots.
+// coolant.sinks.rows names exit rows: film_row_<k>, showerhead_<k>, te_slots. A row of that form the
+// cooling section does not have (a variant with fewer rows than the one the coolant section was written
+// for) has no exit to apply to; any other name is refused, naming the rows this blade has.
 void check_sink_rows(const CoolantConfig& coolant, const CoolingConfig& cooling) {
   std::vector<std::string> rows;
   for (std::size_t k = 1; k <= cooling.film.rows.size(); ++k) rows.push_back("film_row_" + std::to_string(k));
   if (cooling.film.showerhead)
     for (int k = 1; k <= cooling.film.showerhead->rows; ++k) rows.push_back("showerhead_" + std::to_string(k));
   if (cooling.passages.core && cooling.passages.core->trailing_edge) rows.push_back("te_slots");
+  static const std::regex row_name("(film_row|showerhead)_[1-9][0-9]*|te_slots");
   for (const auto& [name, p] : coolant.sink_by_row)
-    if (std::find(rows.begin(), rows.end(), name) == rows.end()) {
+    if (!std::regex_match(name, row_name)) {
       std::string known;
       for (const std::string& r : rows) known += (known.empty() ? "" : ", ") + r;
-      fail("coolant.sinks.rows." + name, "is no exit row of this blade (" + (known.empty() ? std::string("it has none") : "its rows: " + known) + ")");
+      fail("coolant.sinks.rows." + name, "is no exit row name (film_row_<k>, showerhead_<k>, te_slots; this blade's: " +
+                                             (known.empty() ? std::string("none") : known) + ")");
     }
 }
 
@@ -339,7 +344,7 @@ Config parse_config(const nlohmann::json& document, const std::filesystem::path&
     for (const OutputFormatInfo& f : kOutputFormats)
       if (f.by_default == DefaultOutput::Written || f.format == OutputFormat::Network) c.output.formats.push_back(f.format);
   }
-  if (c.coolant) check_sink_rows(*c.coolant, c.cooling);
+  if (c.coolant && !c.cooling.empty()) check_sink_rows(*c.coolant, c.cooling);  // without cooling it is not used
   if (has_format(c.output.formats, OutputFormat::Network)) {
     if (!c.coolant) fail("coolant", "required when output.formats lists \"network\" (supply, sinks: docs/configuration.md)");
     if (c.cooling.empty()) fail("output.formats", "\"network\" needs a \"cooling\" section (the coolant circuit is its passages)");

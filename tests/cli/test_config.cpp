@@ -252,7 +252,9 @@ BOOST_AUTO_TEST_CASE(schema_documents_the_fields) {
   BOOST_TEST(schema.at("$schema").get<std::string>() == "http://json-schema.org/draft-07/schema#");
   std::set<std::string> names, keys;
   schema_property_names(schema, names);
-  document_keys(example(), keys);
+  json doc = example();
+  doc["coolant"]["sinks"].erase("rows");  // its keys are exit rows' names, not fields
+  document_keys(doc, keys);
   for (const char* k : {"file", "values", "unit", "le_index", "te_index", "suction_side", "rotation_deg", "scale", "offset",
                         "theta_deg", "stations", "samples", "points_per_side", "product_name", "$schema", "span", "points",
                         "formats", "files", "frame", "tolerance", "spans", "samples_per_side"})
