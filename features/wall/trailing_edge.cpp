@@ -39,6 +39,7 @@ struct TeFrame {
   Vec3 o, x, y, z;
   double te_x = 0;      // x of the TE point
   double crease_x = 0;  // x of the crease (the chamber's TE end)
+  double crease_y = 0;  // y of the crease
   Vec3 at(double a, double b, double c) const { return o + a * x + b * y + c * z; }
 };
 
@@ -78,6 +79,7 @@ TeFrame te_frame(const blade::BladeCoordinates& coords, const CoreDefinition& de
   }
   f.te_x = (P - f.o).dot(f.x);
   f.crease_x = (cr.crease - f.o).dot(f.x);
+  f.crease_y = (cr.crease - f.o).dot(f.y);
   return f;
 }
 
@@ -426,7 +428,7 @@ SlotInfo plan_slot(const std::string& name, double s, const TrailingEdgeDefiniti
   info.z = f.z;
   info.te_x = f.te_x;
   info.crease_x = f.crease_x;
-  info.crease_y = (blade::inner_wall_crease(coords, def.wall_thickness, s).crease - f.o).dot(f.y);
+  info.crease_y = f.crease_y;
   info.height = te.slot_height;
   info.width = te.slot_width;
   info.x_end = f.te_x + 1.0;
@@ -459,6 +461,7 @@ TeFrame frame_of(const SlotInfo& info) {
   f.z = info.z;
   f.te_x = info.te_x;
   f.crease_x = info.crease_x;
+  f.crease_y = info.crease_y;
   return f;
 }
 
