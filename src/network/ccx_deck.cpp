@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 #include <Eigen/Dense>
 
 #include "src/core/constants.hpp"
+#include "src/network/ccx_layout.hpp"
 
 namespace cg::network {
 namespace {
@@ -43,6 +45,10 @@ double conductance(const Element& e, double rho) {
       a = std::min(e.area_in, e.area_out);
       k = 1.5;
       break;
+    case ElementKind::PinBank:
+      a = e.area_in;
+      k = e.pins->rows * e.pins->loss_per_row;
+      break;
     default:
       a = e.opening->metering_area;
       k = 1 / (0.65 * 0.65);
@@ -50,8 +56,14 @@ double conductance(const Element& e, double rho) {
   return a * 1e-6 * std::sqrt(2 * rho / k);
 }
 
+struct Section {
+  Section(std::string t, std::string d, std::string n = "") : type(std::move(t)), data(std::move(d)), note(std::move(n)) {}
+  std::string type, data;
+  std::string note;  // a comment line before it ("" none)
+};
+
 // The *FLUID SECTION type and data line of an element.
-std::pair<std::string, std::string> section(const Network& net, const Element& e, double flow, double rho, double t) {
+Section section(const Network& net, const Element& e, double flow, double rho, double t) {
   switch (e.kind) {
     case ElementKind::Segment: {
       // Fanno's equations are ill-conditioned near Mach 0 (ccx oscillated on the C3X vane's plenum-like
@@ -71,6 +83,13 @@ std::pair<std::string, std::string> section(const Network& net, const Element& e
     case ElementKind::Rotation:
       // Downstream radius, upstream radius, efficiency, core swirl ratio, omega (rad/s), no T change.
       return {"VORTEX FORCED", num(e.radius_out) + "," + num(e.radius_in) + ",1.,1.," + num(net.omega) + ",0."};
+    case ElementKind::PinBank: {
+      // Metzger's loss of all rows at the bank's Reynolds number, on the minimum gap's area.
+      const PinBank& b = *e.pins;
+      return {"RESTRICTOR USER", num(e.area_in) + "," + num(e.area_in) + "," + num(e.hydraulic_diameter) + "," + num(b.rows * b.loss_per_row),
+              "** " + e.name + ": Metzger pin bank, " + std::to_string(b.rows) + " rows x K " + num(b.loss_per_row) + " at Re_D " +
+                  num(b.re_d) + ", on the minimum gap's area"};
+    }
     case ElementKind::Bend:
       return {"RESTRICTOR BEND IDEL CIRC", num(e.area_in) + "," + num(e.area_out) + "," + num(e.hydraulic_diameter) + "," +
                                                num(e.bend_radius) + "," + num(e.bend_angle_deg)};
@@ -166,45 +185,27 @@ std::string ccx_deck(const Network& net) {
   // Every exit gets its own copy of its sink (CalculiX's connectivity check walks the network from the
   // input/output elements and loses a node reached twice in one sweep: shared sink nodes made it report
   // connected elements as unconnected). Inputs: one INOUT element per supply node.
-  std::vector<int> supplies, exits;  // node ids; element ids
-  for (const Node& n : net.nodes)
-    if (n.kind == NodeKind::Supply) supplies.push_back(n.id);
-  for (const Element& e : net.elements)
-    if (net.node(e.downstream).kind == NodeKind::Sink) exits.push_back(e.id);
-  const int n_io = static_cast<int>(supplies.size() + exits.size());
-  const int copy_base = nn + ne + n_io;  // exit k's sink node: copy_base + k + 1
-  std::vector<int> downstream(static_cast<std::size_t>(ne) + 1);
-  for (const Element& e : net.elements) downstream[static_cast<std::size_t>(e.id)] = e.downstream;
-  for (std::size_t k = 0; k < exits.size(); ++k) downstream[static_cast<std::size_t>(exits[k])] = copy_base + static_cast<int>(k) + 1;
+  const DeckLayout layout = deck_layout(net);
+  const std::vector<int>& supplies = layout.supplies;
+  const std::vector<int>& exits = layout.exits;
 
   std::string s = "** CoolingGen coolant flow network (docs/network.md); units N, mm, s, tonne, K\n";
   for (const Element& e : net.elements) s += "** element " + std::to_string(e.id) + " " + e.name + "\n";
   for (const Node& n : net.nodes) s += "** node " + std::to_string(n.id) + " " + n.name + "\n";
-  s += "** nodes " + std::to_string(copy_base + 1) + "-" + std::to_string(copy_base + static_cast<int>(exits.size())) +
-       ": each exit's copy of its sink\n";
+  if (!exits.empty())
+    s += "** nodes " + std::to_string(layout.exit_nodes.front()) + "-" + std::to_string(layout.exit_nodes.back()) +
+         ": each exit's copy of its sink\n";
   s += "*NODE,NSET=NCORNER\n";
   for (int id = 1; id <= nn; ++id) s += std::to_string(id) + "," + std::to_string(id) + ".,0.,0.\n";
-  for (std::size_t k = 0; k < exits.size(); ++k) {
-    const int id = copy_base + static_cast<int>(k) + 1;
-    s += std::to_string(id) + "," + std::to_string(id) + ".,0.,0.\n";
-  }
+  for (int id : layout.exit_nodes) s += std::to_string(id) + "," + std::to_string(id) + ".,0.,0.\n";
   s += "*NODE,NSET=NMID\n";
-  for (int k = 1; k <= ne + n_io; ++k) s += std::to_string(nn + k) + "," + std::to_string(nn + k) + ".,1.,0.\n";
-  for (const Element& e : net.elements) {
-    s += "*ELEMENT,TYPE=D,ELSET=E" + std::to_string(e.id) + "\n";
-    s += std::to_string(e.id) + "," + std::to_string(e.upstream) + "," + std::to_string(mid_node(net, e.id)) + "," +
-         std::to_string(downstream[static_cast<std::size_t>(e.id)]) + "\n";
-  }
+  for (const DeckElement& d : layout.elements) s += std::to_string(d.mid) + "," + std::to_string(d.mid) + ".,1.,0.\n";
+  auto line = [](const DeckElement& d) {
+    return std::to_string(d.id) + "," + std::to_string(d.first) + "," + std::to_string(d.mid) + "," + std::to_string(d.last) + "\n";
+  };
+  for (int k = 0; k < ne; ++k) s += "*ELEMENT,TYPE=D,ELSET=E" + std::to_string(k + 1) + "\n" + line(layout.elements[static_cast<std::size_t>(k)]);
   s += "*ELEMENT,TYPE=D,ELSET=EINOUT\n";
-  int io = ne;
-  for (int node : supplies) {
-    ++io;
-    s += std::to_string(io) + ",0," + std::to_string(nn + io) + "," + std::to_string(node) + "\n";
-  }
-  for (int e : exits) {
-    ++io;
-    s += std::to_string(io) + "," + std::to_string(downstream[static_cast<std::size_t>(e)]) + "," + std::to_string(nn + io) + ",0\n";
-  }
+  for (std::size_t k = static_cast<std::size_t>(ne); k < layout.elements.size(); ++k) s += line(layout.elements[k]);
   s += "*MATERIAL,NAME=GAS\n*CONDUCTIVITY\n1.\n*FLUID CONSTANTS\n" + num(net.gas.cp * 1e6) + "," +
        num(net.gas.viscosity * 1e-6) + "\n*SPECIFIC GAS CONSTANT\n" + num(net.gas.gas_constant * 1e6) + "\n";
   const Guess g = guess(net);
@@ -213,8 +214,9 @@ std::string ccx_deck(const Network& net) {
     if (n.kind == NodeKind::Supply) t_gas = n.temperature;
   for (const Element& e : net.elements) {
     const double rho = g.pressure[static_cast<std::size_t>(e.upstream - 1)] / (net.gas.gas_constant * t_gas);
-    const auto [type, data] = section(net, e, g.flow[static_cast<std::size_t>(e.id - 1)], rho, t_gas);
-    s += "*FLUID SECTION,ELSET=E" + std::to_string(e.id) + ",TYPE=" + type + ",MATERIAL=GAS\n" + data + "\n";
+    const Section sec = section(net, e, g.flow[static_cast<std::size_t>(e.id - 1)], rho, t_gas);
+    if (!sec.note.empty()) s += sec.note + "\n";
+    s += "*FLUID SECTION,ELSET=E" + std::to_string(e.id) + ",TYPE=" + sec.type + ",MATERIAL=GAS\n" + sec.data + "\n";
   }
   s += "*FLUID SECTION,ELSET=EINOUT,TYPE=INOUT,MATERIAL=GAS\n";
   s += "*PHYSICAL CONSTANTS,ABSOLUTE ZERO=0.\n";
@@ -225,7 +227,8 @@ std::string ccx_deck(const Network& net) {
   // Fixed pressure and temperature: supplies (total) and the exits' sink copies (static).
   std::vector<std::pair<int, const Node*>> fixed;
   for (int node : supplies) fixed.emplace_back(node, &net.node(node));
-  for (int e : exits) fixed.emplace_back(downstream[static_cast<std::size_t>(e)], &net.node(net.elements[static_cast<std::size_t>(e - 1)].downstream));
+  for (std::size_t k = 0; k < exits.size(); ++k)
+    fixed.emplace_back(layout.exit_nodes[k], &net.node(net.elements[static_cast<std::size_t>(exits[k] - 1)].downstream));
   s += "*INITIAL CONDITIONS,TYPE=TOTAL PRESSURE\n";
   for (const Node& n : net.nodes)
     if (n.kind == NodeKind::Junction) s += std::to_string(n.id) + "," + num(p[static_cast<std::size_t>(n.id - 1)] * kMPa) + "\n";

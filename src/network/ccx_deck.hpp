@@ -1,9 +1,7 @@
 #pragma once
 // The network as a CalculiX input deck (network.inp; element types and units in docs/network.md and
-// ../shared notes): units N-mm-s-tonne-K (pressures MPa, mass flow t/s). Corner nodes are the
-// network's node ids; the mid node of element e is nodes.size() + e; each supply node gets an INOUT
-// element from the outside (node 0) and each exit its own copy of its sink node with an INOUT element to
-// the outside, numbered after the network's elements (the deck's comment lines say which is which).
+// ../shared notes): units N-mm-s-tonne-K (pressures MPa, mass flow t/s); its element and node numbers
+// are ccx_layout.hpp's (the deck's comment lines say which is which).
 #include <string>
 #include <vector>
 

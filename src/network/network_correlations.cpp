@@ -51,7 +51,7 @@ PinBank pin_bank(const features::PinFinDefinition& p, int pins) {
   b.x_d = p.streamwise_pitch / p.diameter;
   b.rows = p.rows;
   b.pins = pins;
-  b.loss_per_row = pin_row_loss(1e4);
+  b.loss_per_row = pin_row_loss(b.re_d);
   return b;
 }
 

@@ -20,7 +20,7 @@ Turbulation turbulation(const features::TurbulatorDefinition& t, double dh, doub
 /// perimeter-weighted friction factor (ribbed walls f_r, smooth walls a smooth channel's at Re 2e4).
 double equivalent_roughness(const Turbulation& t, double dh);
 /// A staggered pin-fin bank: S/D, X/D, rows, and the loss per row in velocity heads at the minimum gap
-/// at Re_D = 1e4 (pin_row_loss).
+/// at Re_D = 1e4 (pin_row_loss; the network stage moves it to the solved flow's Re_D).
 PinBank pin_bank(const features::PinFinDefinition& p, int pins);
 /// Loss per pin row in velocity heads at the minimum gap: K = 4 f with Metzger's staggered short-pin
 /// friction factor f = 0.317 Re_D^-0.132 (Re_D on the pin diameter and the gap velocity; clamped to the

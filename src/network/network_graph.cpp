@@ -14,6 +14,7 @@
 #include "features/passages/section_surface.hpp"
 #include "src/blade/blade_coordinates.hpp"
 #include "src/core/constants.hpp"
+#include "src/network/ccx_connectivity.hpp"
 #include "src/network/network_correlations.hpp"
 #include "src/network/network_sections.hpp"
 
@@ -106,6 +107,8 @@ class Builder {
   void slots();
   double compound_angle(const features::HoleMeasure& h) const;
   void prune_dead_ends();
+  int pin_bank_element(const features::PinFinDefinition& def, int pins, double pin_length, std::size_t slots, const Passage& p,
+                       const std::string& slot, double span, int station);
   int sink(config::SinkKind kind, const std::string& row = "");
   Passage* find(const std::string& name) {
     for (Passage& p : passages_)
@@ -552,8 +555,8 @@ std::pair<int, double> pin_lengths(const brep::NamedShape& blade) {
 }
 
 // Trailing-edge slots: one element per slot (faces te_slot_<nn> on the blade), from the last chamber's
-// station nearest the slot's span to the trailing-edge sink; the pin fins upstream described with each
-// slot (its share of the bank, docs/network.md: not in the deck).
+// station nearest the slot's span to the trailing-edge sink; with pin fins, the slot's share of the pin
+// bank in front of it as an element of its own (station -> pin bank -> slot).
 void Builder::slots() {
   const features::CoreDefinition* cd = core_of(c_);
   if (!cd || !cd->trailing_edge || in_.part->empty()) return;
@@ -570,12 +573,14 @@ void Builder::slots() {
     const blade::BladeLocateResult loc = coords_->locate(Vec3(0.5 * (x0 + x1), 0.5 * (y0 + y1), 0.5 * (z0 + z1)));
     const double span = loc.found ? loc.coordinate.span : 0.5;
     const Station& st = p->stations[static_cast<std::size_t>(nearest_station(*p, span))];
+    int from = st.node;
+    if (te.pin_fins && pins > 0) from = pin_bank_element(*te.pin_fins, pins, pin_length, boxes.size(), *p, name, span, st.node);
     Element e;
     e.name = name;
     e.kind = ElementKind::Slot;
     e.chamber = p->name;
     e.enters_from = segment_at(*p, span);
-    e.upstream = st.node;
+    e.upstream = from;
     e.downstream = sink(config::SinkKind::TrailingEdge, "te_slots");
     Opening o;
     o.row = "te_slots";
@@ -588,17 +593,38 @@ void Builder::slots() {
     e.hydraulic_diameter = o.diameter;
     e.span_in = e.span_out = span;
     e.faces = {name};
-    if (te.pin_fins && pins > 0) {
-      // The bank's minimum gap shared by the slots: (S - D) x pin length per pin of a row.
-      PinBank bank = pin_bank(*te.pin_fins, pins);
-      bank.height = pin_length;
-      bank.gap_area = (te.pin_fins->spanwise_pitch - te.pin_fins->diameter) * pin_length * pins / std::max(bank.rows, 1) /
-                      static_cast<double>(boxes.size());
-      e.pins = bank;
-      e.faces.push_back("pin_fin_*");
-    }
     add_element(e);
   }
+}
+
+// The pin bank in front of slot `slot`: its share of the bank's minimum gap ((S - D) x pin length per pin
+// of a row, over the slots), the gap's hydraulic diameter and the rows' depth, from the station to a
+// node of its own at the slot's inlet. Returns that node.
+int Builder::pin_bank_element(const features::PinFinDefinition& def, int pins, double pin_length, std::size_t slots,
+                              const Passage& p, const std::string& slot, double span, int station) {
+  PinBank bank = pin_bank(def, pins);
+  bank.height = pin_length;
+  const double gap = def.spanwise_pitch - def.diameter;
+  bank.gap_area = gap * pin_length * pins / std::max(bank.rows, 1) / static_cast<double>(slots);
+  Node n;
+  n.name = slot + "_inlet";
+  n.chamber = p.name;
+  n.span = span;
+  Element e;
+  e.name = slot + "_pins";
+  e.kind = ElementKind::PinBank;
+  e.chamber = p.name;
+  e.enters_from = segment_at(p, span);
+  e.upstream = station;
+  e.downstream = add_node(n);
+  e.area_in = e.area_out = bank.gap_area;
+  e.hydraulic_diameter = 2 * gap * pin_length / (gap + pin_length);
+  e.length = bank.rows * def.streamwise_pitch;
+  e.span_in = e.span_out = span;
+  e.pins = bank;
+  e.faces = {"pin_fin_*"};
+  add_element(e);
+  return e.downstream;
 }
 
 // A closed end beyond the last hole carries no flow (and CalculiX refuses a node with one element):
@@ -655,6 +681,8 @@ Network Builder::run() {
   holes();
   slots();
   prune_dead_ends();
+  if (!number_nodes_for_ccx(net_))
+    net_.notes.push_back("no node numbering tried passes CalculiX 2.20's connectivity check (docs/network.md)");
   if (net_.omega > 0)
     net_.notes.push_back("rotation: forced vortex per segment (pressure rise exact for isentropic rotation); node "
                          "temperatures stay at the supply's (the relative-frame rise is not carried)");

@@ -52,6 +52,7 @@ const char* name(ElementKind k) {
     case ElementKind::Jets: return "jets";
     case ElementKind::FilmHole: return "film_hole";
     case ElementKind::Slot: return "slot";
+    case ElementKind::PinBank: return "pin_bank";
   }
   return "";
 }
@@ -112,9 +113,9 @@ ojson network_json(const Network& net) {
     if (e.pins) {
       const PinBank& p = *e.pins;
       o["pin_fins"] = {{"diameter_mm", p.diameter}, {"s_d", p.s_d}, {"x_d", p.x_d}, {"rows", p.rows}, {"pins", p.pins},
-                       {"height_mm", p.height}, {"gap_area_mm2", p.gap_area}, {"loss_per_row", p.loss_per_row},
+                       {"height_mm", p.height}, {"gap_area_mm2", p.gap_area}, {"re_d", p.re_d}, {"loss_per_row", p.loss_per_row},
                        {"correlation", "Metzger staggered short pins: K = 4 f per row at the minimum gap, f = 0.317 Re_D^-0.132 "
-                                       "(Re_D 1e3-1e5), loss_per_row at Re_D 1e4; not in network.inp (docs/network.md)"}};
+                                       "(Re_D 1e3-1e5) at re_d (the solved flow's); in network.inp as RESTRICTOR USER, rows x K (docs/network.md)"}};
     }
     if (e.opening) o["opening"] = opening_json(*e.opening);
     o["faces"] = e.faces;

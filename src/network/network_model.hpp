@@ -37,6 +37,7 @@ enum class ElementKind {
   Jets,           ///< impingement jet holes of an insert (one element, `count` holes)
   FilmHole,       ///< one film or showerhead hole
   Slot,           ///< one trailing-edge slot
+  PinBank,        ///< a slot's share of the pin-fin bank in front of it (Metzger's loss, docs/network.md)
 };
 
 /// Rib turbulators along a segment.
@@ -49,13 +50,14 @@ struct Turbulation {
   double ribbed_fraction = 0;  ///< of the wetted perimeter
 };
 
-/// Staggered pin-fin rows upstream of the slots.
+/// Staggered pin-fin rows upstream of the slots (one slot's share of the bank).
 struct PinBank {
   double diameter = 0, s_d = 0, x_d = 0;
   int rows = 0, pins = 0;
   double height = 0;        ///< mm, the pins' mean length across the chamber (their faces on the part)
   double gap_area = 0;      ///< mm^2, one slot's share of the minimum gap between the pins of a row
-  double loss_per_row = 0;  ///< velocity heads per row at the minimum gap, at Re_D 1e4 (docs/network.md)
+  double re_d = 1e4;        ///< Reynolds number (pin diameter, gap velocity) of the loss: the solved flow's once solved
+  double loss_per_row = 0;  ///< velocity heads per row at the minimum gap at re_d (docs/network.md)
 };
 
 /// A film or showerhead hole, a slot, or an insert's jets.
@@ -90,7 +92,7 @@ struct Element {
   double bend_angle_deg = kUnset, bend_radius = kUnset;
   double bend_gap = kUnset, bend_depth = kUnset;  ///< turnaround: rib tip to end wall, cavity depth there (mm)
   std::optional<Turbulation> turbulators;
-  std::optional<PinBank> pins;      ///< slots: the pin fins upstream (their share of the bank)
+  std::optional<PinBank> pins;      ///< pin banks: the pins in front of a slot
   std::optional<Opening> opening;
   std::vector<std::string> faces;  ///< names of the faces it comes from
 };

@@ -38,5 +38,7 @@ BOOST_AUTO_TEST_CASE(report_html_with_a_truncated_model_says_broken, *utf::preco
 BOOST_AUTO_TEST_CASE(network_deck_converges_in_ccx_and_conserves_mass) {
   test::check_network_deck(build(), {153, 2, {"chamber_1", "chamber_2", "chamber_3", "chamber_4"}});
 }
+// One pin bank in front of each of the 18 slots, its loss against Metzger's correlation by hand.
+BOOST_AUTO_TEST_CASE(pin_banks_in_the_deck_follow_metzger) { test::check_pin_banks(build(), 18); }
 // The example's slots are 0.4 mm high (cooling.core.trailing_edge.slot_height).
 BOOST_AUTO_TEST_CASE(film_holes_csv_on_the_outer_wall_along_the_cylinders) { test::check_film_holes_csv(build(), 153, 0.4); }
