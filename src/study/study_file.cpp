@@ -139,6 +139,10 @@ Study load_study(const fs::path& file) {
     std::vector<std::string> names;
     for (std::size_t i = 0; i < n; ++i) names.push_back(o.item(i).string());
     s.outputs = config::parse_output_formats(names, o.path());
+  } else if (s.base.contains("coolant") && s.base.contains("cooling")) {
+    // The coolant network is a default output of a cooled config with a "coolant" section (its headline
+    // numbers are results.csv columns).
+    s.outputs = config::parse_output_formats({"network"}, "outputs");
   }
   check_paths(s);
   return s;

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/run_cli.hpp"
+#include "support/ccx_run.hpp"
 #include "src/config/config.hpp"
 #include "src/pipeline/build.hpp"
 #include "src/pipeline/cooling_stage_cache.hpp"
@@ -202,4 +203,52 @@ BOOST_AUTO_TEST_CASE(sweep_with_and_without_the_cache) {
     if (i > 0) BOOST_TEST(a["timings_s"]["cooling"].get<double>() < 0.2 * b["timings_s"]["cooling"].get<double>(), id);
   }
   BOOST_TEST(fs::exists(on / "cache" / "cooling" / key / "shapes.bin"));
+}
+
+// A sweep of the coolant's boundary conditions only (the network is not a geometry input; the study gives
+// no outputs: the network is the default of a base with a coolant section): the cooling
+// stage is built once and taken from the cache twice; every variant's network converges and the coolant
+// flow grows with the supply pressure. One variant's network.inp is run again by ccx here (the light
+// variant of docs/network.md's checks): converged, the supply's flow equal to the exits', one element per
+// film hole of the row.
+BOOST_AUTO_TEST_CASE(coolant_sweep_reuses_the_cooling_stage_and_solves_each_network) {
+  TempDir dir("stage_cache_coolant");
+  json base = light_film();
+  base["coolant"] = {{"supply", {{"total_pressure_pa", 2.0e6}, {"total_temperature_k", 850}}},
+                     {"sinks", {{"static_pressure_pa", 1.3e6}}},
+                     {"rotational_speed_rpm", 13000}};
+  const json study{{"name", "supply_pressure"},
+                   {"base", base},
+                   {"parameters", {{{"name", "supply"}, {"path", "coolant.supply.total_pressure_pa"}, {"values", {1.8e6, 2.2e6, 2.6e6}}}}},
+                   {"design", {{"type", "grid"}}}};
+  std::ofstream(dir.path / "study.json") << study.dump(1);
+  const test::Run r = test::run_cli("sweep " + q(dir.path / "study.json") + " -o " + q(dir.path / "out") + " --jobs 1 -q", dir.path);
+  BOOST_TEST_REQUIRE(r.exit_code == 0, r.err);
+  const auto rows = test::read_results(dir.path / "out" / "results.csv");
+  BOOST_TEST_REQUIRE(rows.size() == 3u);
+  const char* outcomes[] = {"stored", "hit", "hit"};
+  double previous = 0;
+  for (int i = 0; i < 3; ++i) {
+    BOOST_TEST(rows[static_cast<std::size_t>(i)].at("status") == "built");
+    BOOST_TEST(rows[static_cast<std::size_t>(i)].at("network_status") == "converged");
+    const double flow = std::stod(rows[static_cast<std::size_t>(i)].at("coolant_mass_flow_kg_s"));
+    BOOST_TEST(flow > previous, "variant " << i << ": " << flow << " kg/s after " << previous);
+    previous = flow;
+    const json rep = json::parse(read_text(dir.path / "out" / "variants" / ("00" + std::to_string(i)) / "report.json"));
+    BOOST_TEST(rep["stage_cache"][0]["outcome"] == outcomes[i], i);
+  }
+  const fs::path inp = dir.path / "out" / "variants" / "000" / "network.inp";
+  const test::DeckRead deck = test::read_deck(read_text(inp));
+  const test::CcxRun run = test::run_ccx(inp);
+  BOOST_TEST_REQUIRE(run.converged, run.log.substr(run.log.size() > 2000 ? run.log.size() - 2000 : 0));
+  double supply = 0, exits = 0;
+  int holes = 0;
+  for (const auto& [id, n] : deck.elements) {
+    if (n[0] == 0) supply += run.mass_flow.at(n[1]);
+    if (n[2] == 0) exits += run.mass_flow.at(n[1]);
+  }
+  for (const auto& [id, type] : deck.type) holes += type == "ORIFICE MS_MS" && deck.name.count(id) && deck.name.at(id).rfind("film_row_", 0) == 0;
+  BOOST_TEST(supply > 0);
+  BOOST_TEST(std::abs(supply - exits) <= 1e-6 * supply, supply << " t/s in, " << exits << " out");
+  BOOST_TEST(holes == std::stoi(rows[0].at("hole_count")));
 }
