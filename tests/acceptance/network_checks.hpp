@@ -54,32 +54,12 @@ inline void check_network_deck(const ProductBuild& b, const NetworkExpect& e) {
   const DeckRead deck = read_deck(text);
   const CcxRun run = run_ccx(b.file("network.inp"));
   BOOST_TEST_REQUIRE(run.converged, "ccx on network.inp: " << run.log.substr(run.log.size() > 2000 ? run.log.size() - 2000 : 0));
-  // Mass balance at every corner node (node 0 is the outside): 1e-6 of its throughput, or where more the
-  // rounding of the .dat's 7 significant digits (half a unit of the last digit of every flow at the node).
-  std::map<int, double> in, out, rounding, gross;
-  double supply = 0, exits = 0;
-  for (const auto& [id, n] : deck.elements) {
-    BOOST_TEST_REQUIRE(run.mass_flow.count(n[1]), "mass flow of element " << id);
-    const double m = run.mass_flow.at(n[1]);
-    const double half_digit = m == 0 ? 0 : 0.5 * std::pow(10.0, std::floor(std::log10(std::abs(m))) - 6);
-    if (n[0] != 0) out[n[0]] += m, rounding[n[0]] += half_digit, gross[n[0]] += std::abs(m);
-    if (n[2] != 0) in[n[2]] += m, rounding[n[2]] += half_digit, gross[n[2]] += std::abs(m);
-    if (n[0] == 0) supply += m;
-    if (n[2] == 0) exits += m;
-  }
-  double worst = 0, worst_relative = 0;
-  for (const auto& [node, m_in] : in) {
-    // Relative to the node's throughput (half the sum of |flow| of its elements: a hole with backflow
-    // brings coolant in through an element drawn as leaving).
-    const double m_out = out[node], scale = 0.5 * gross[node];
-    const double allowed = std::max(1e-6 * scale, rounding[node]);
-    worst = std::max(worst, std::abs(m_in - m_out) / allowed);
-    worst_relative = std::max(worst_relative, std::abs(m_in - m_out) / scale);
-  }
-  BOOST_TEST(worst <= 1.0, "mass imbalance at a node beyond 1e-6 and the printed digits: relative " << worst_relative);
+  const NodeBalance bal = node_balance(deck, run);
+  const double supply = bal.supply, exits = bal.exits;
+  BOOST_TEST(bal.worst <= 1.0, "mass imbalance at a node beyond 1e-6 and the printed digits: relative " << bal.worst_relative);
   BOOST_TEST(supply > 0);
   BOOST_TEST(std::abs(supply - exits) / supply < 1e-6, "supply " << supply << " t/s, exits " << exits);
-  BOOST_TEST_MESSAGE("network: largest relative node imbalance " << worst_relative << " (printed digits)");
+  BOOST_TEST_MESSAGE("network: largest relative node imbalance " << bal.worst_relative << " (printed digits)");
   // Elements by kind, from the deck's sections and names.
   int holes = 0, bends = 0;
   std::map<std::string, int> segments;

@@ -6,7 +6,9 @@
 #define BOOST_TEST_MODULE stage_cache
 #include <boost/test/unit_test.hpp>
 
+#include <cstdlib>
 #include <filesystem>
+#include <map>
 #include <functional>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -209,8 +211,8 @@ BOOST_AUTO_TEST_CASE(sweep_with_and_without_the_cache) {
 // no outputs: the network is the default of a base with a coolant section): the cooling
 // stage is built once and taken from the cache twice; every variant's network converges and the coolant
 // flow grows with the supply pressure. One variant's network.inp is run again by ccx here (the light
-// variant of docs/network.md's checks): converged, the supply's flow equal to the exits', one element per
-// film hole of the row.
+// variant of docs/network.md's checks): converged, mass conserved at every node, the supply's flow equal
+// to the exits', one element per film hole of the row, at least 9 segments per chamber.
 BOOST_AUTO_TEST_CASE(coolant_sweep_reuses_the_cooling_stage_and_solves_each_network) {
   TempDir dir("stage_cache_coolant");
   json base = light_film();
@@ -241,14 +243,32 @@ BOOST_AUTO_TEST_CASE(coolant_sweep_reuses_the_cooling_stage_and_solves_each_netw
   const test::DeckRead deck = test::read_deck(read_text(inp));
   const test::CcxRun run = test::run_ccx(inp);
   BOOST_TEST_REQUIRE(run.converged, run.log.substr(run.log.size() > 2000 ? run.log.size() - 2000 : 0));
-  double supply = 0, exits = 0;
+  const test::NodeBalance bal = test::node_balance(deck, run);
+  BOOST_TEST(bal.worst <= 1.0, "node imbalance " << bal.worst_relative);
+  BOOST_TEST(bal.supply > 0);
+  BOOST_TEST(std::abs(bal.supply - bal.exits) <= 1e-6 * bal.supply, bal.supply << " t/s in, " << bal.exits << " out");
   int holes = 0;
-  for (const auto& [id, n] : deck.elements) {
-    if (n[0] == 0) supply += run.mass_flow.at(n[1]);
-    if (n[2] == 0) exits += run.mass_flow.at(n[1]);
+  std::map<std::string, int> segments;
+  for (const auto& [id, type] : deck.type) {
+    const std::string n = deck.name.count(id) ? deck.name.at(id) : "";
+    holes += type == "ORIFICE MS_MS" && n.rfind("film_row_", 0) == 0;
+    if (n.find("_seg_") != std::string::npos) ++segments[n.substr(0, n.find("_seg_"))];
   }
-  for (const auto& [id, type] : deck.type) holes += type == "ORIFICE MS_MS" && deck.name.count(id) && deck.name.at(id).rfind("film_row_", 0) == 0;
-  BOOST_TEST(supply > 0);
-  BOOST_TEST(std::abs(supply - exits) <= 1e-6 * supply, supply << " t/s in, " << exits << " out");
   BOOST_TEST(holes == std::stoi(rows[0].at("hole_count")));
+  BOOST_TEST(segments.count("chamber_1") == 1u);  // chamber 2 has no exit: no flow, pruned (docs/network.md)
+  for (const auto& [chamber, count] : segments) BOOST_TEST(count >= 9, chamber << ": " << count << " segments");
+
+  // Without ccx on PATH (the cooling stage from the study's cache): built and written, exit 0, the
+  // network's status "no_solver" in report.json and a warning on stderr, never a silent zero.
+  const std::string path = std::getenv("PATH") ? std::getenv("PATH") : "";
+  setenv("PATH", "/nonexistent", 1);
+  const test::Run nosolver = test::run_cli("build " + q(dir.path / "out" / "variants" / "000" / "config.json") + " -o " +
+                                               q(dir.path / "nosolver") + " -q --stage-cache " + q(dir.path / "out" / "cache"),
+                                           dir.path);
+  setenv("PATH", path.c_str(), 1);
+  BOOST_TEST(nosolver.exit_code == 0, nosolver.err);
+  BOOST_TEST(nosolver.err.find("warning: network: no CalculiX solver") != std::string::npos, nosolver.err);
+  const json rep = json::parse(read_text(dir.path / "nosolver" / "report.json"));
+  BOOST_TEST(rep["network"]["status"] == "no_solver", rep["network"].dump());
+  BOOST_TEST(!rep["network"].contains("total_mass_flow_kg_s"));
 }

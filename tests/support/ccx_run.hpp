@@ -3,6 +3,7 @@
 // connectivity from its *ELEMENT cards (names from its comment lines), and `ccx` run on a copy of it,
 // its .dat parsed.
 #include <array>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <map>
@@ -90,6 +91,35 @@ inline CcxRun run_ccx(const std::filesystem::path& deck) {
     }
   }
   return r;
+}
+
+/// Mass balance of a ccx run at every corner node of the deck (node 0 is the outside): `worst` is the
+/// largest imbalance over what is allowed there, 1e-6 of the node's throughput (half the sum of |flow|
+/// of its elements: a hole with backflow brings coolant in through an element drawn as leaving) or, where
+/// more, the rounding of the .dat's 7 significant digits (half a unit of the last digit of every flow).
+struct NodeBalance {
+  double worst = 0, worst_relative = 0;
+  double supply = 0, exits = 0;  ///< t/s through the INOUT elements
+};
+
+inline NodeBalance node_balance(const DeckRead& deck, const CcxRun& run) {
+  NodeBalance b;
+  std::map<int, double> in, out, rounding, gross;
+  for (const auto& [id, n] : deck.elements) {
+    const double m = run.mass_flow.at(n[1]);
+    const double half_digit = m == 0 ? 0 : 0.5 * std::pow(10.0, std::floor(std::log10(std::abs(m))) - 6);
+    if (n[0] != 0) out[n[0]] += m, rounding[n[0]] += half_digit, gross[n[0]] += std::abs(m);
+    if (n[2] != 0) in[n[2]] += m, rounding[n[2]] += half_digit, gross[n[2]] += std::abs(m);
+    if (n[0] == 0) b.supply += m;
+    if (n[2] == 0) b.exits += m;
+  }
+  for (const auto& [node, m_in] : in) {
+    const double m_out = out[node], scale = 0.5 * gross[node];
+    const double allowed = std::max(1e-6 * scale, rounding[node]);
+    b.worst = std::max(b.worst, std::abs(m_in - m_out) / allowed);
+    b.worst_relative = std::max(b.worst_relative, std::abs(m_in - m_out) / scale);
+  }
+  return b;
 }
 
 }  // namespace cg::test
