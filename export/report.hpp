@@ -37,6 +37,14 @@ struct ReportContent {
 
 nlohmann::ordered_json report_json(const ReportContent& content);
 
+/// report.json's "solid" object of a check (with `faces`, name -> count) and its "checks" object;
+/// solid_check_of reads both back: the one serialisation of a SolidCheck (the stage cache stores its
+/// checks this way). A check's seconds are not in the report (read back as 0); a NaN is null there and
+/// NaN again when read. Throws std::runtime_error (nlohmann's) on a malformed object.
+nlohmann::ordered_json solid_json(const brep::SolidCheck& check, const std::map<std::string, int>& faces);
+nlohmann::ordered_json checks_json(const brep::SolidCheck& check);
+brep::SolidCheck solid_check_of(const nlohmann::ordered_json& solid, const nlohmann::ordered_json& checks);
+
 /// Writes report_json(content), pretty-printed, through write_atomically. Throws ExportError.
 void write_report(const std::filesystem::path& file, const ReportContent& content);
 

@@ -16,6 +16,7 @@
 #include <limits>
 #include <sstream>
 
+#include "export/report.hpp"
 #include "export/version.hpp"
 #include "features/passages/core_passages.hpp"
 #include "src/config/cooling_film_config.hpp"
@@ -30,15 +31,15 @@ using json = nlohmann::ordered_json;  // an entry keeps the order of what it hol
 using Vec3 = Eigen::Vector3d;
 
 // Bump when the entry's layout changes.
-constexpr const char* kFormat = "coolinggen stage cache 2";
+constexpr const char* kFormat = "coolinggen stage cache 3";
 
 // The types an entry stores field by field (or restores in part, see the header); the passage report
-// is stored as report.json has it (PassageReport::to_json / from_json). A new field changes the size:
+// and the blade's check are stored as report.json has them (PassageReport::to_json / from_json,
+// io::solid_json / checks_json / solid_check_of). A new field changes the size:
 // place it in the entry (encode and decode below) or in the header's list of what is not restored, then
 // update the size. Sizes on x86-64 Linux with libstdc++ (the platform the project builds
 // and tests on; elsewhere the guard is skipped).
 #if defined(__x86_64__) && defined(__GLIBCXX__)
-static_assert(sizeof(brep::Check) == 80 && sizeof(brep::SolidCheck) == 568, "SolidCheck changed: update its codec");
 static_assert(sizeof(features::ChamberInfo) == 88 && sizeof(blade::InnerWallSection) == 64 && sizeof(blade::InnerWall) == 160,
               "ChamberInfo or the inner wall changed: update its codec");
 static_assert(sizeof(features::FeatureTool) == 144 && sizeof(features::WallFeatureBuild) == 200 &&
@@ -122,38 +123,6 @@ std::vector<TopoDS_Shape> shapes_of(const std::string& bytes) {
 }
 
 // ---- checks and the passage report
-
-json check_json(const brep::SolidCheck& k) {
-  json checks = json::array();
-  for (const brep::Check* c : k.checks()) checks.push_back({c->name, c->passed, c->message, num(c->seconds)});
-  return {{"checks", checks},
-          {"volume", num(k.volume)},
-          {"volume_error", num(k.volume_error)},
-          {"area", num(k.area_)},
-          {"bbox_min", nums(std::vector<double>(k.bbox_min.begin(), k.bbox_min.end()))},
-          {"bbox_max", nums(std::vector<double>(k.bbox_max.begin(), k.bbox_max.end()))},
-          {"face_count", k.face_count},
-          {"solid_count", k.solid_count},
-          {"mesh_triangles", k.mesh_triangles}};
-}
-
-brep::SolidCheck check_of(const json& j) {
-  brep::SolidCheck k;
-  brep::Check* checks[] = {&k.one_solid, &k.brep_valid, &k.no_free_edges, &k.oriented_shells, &k.closed_mesh, &k.positive_volume};
-  const json& cs = j.at("checks");
-  if (cs.size() != std::size(checks)) throw Error("stage cache: wrong number of solid checks");
-  for (std::size_t i = 0; i < cs.size(); ++i)
-    *checks[i] = {cs[i].at(0).get<std::string>(), cs[i].at(1).get<bool>(), cs[i].at(2).get<std::string>(), unnum(cs[i].at(3))};
-  k.volume = unnum(j.at("volume"));
-  k.volume_error = unnum(j.at("volume_error"));
-  k.area_ = unnum(j.at("area"));
-  const std::vector<double> lo = unnums(j.at("bbox_min")), hi = unnums(j.at("bbox_max"));
-  for (std::size_t i = 0; i < 3; ++i) k.bbox_min[i] = lo.at(i), k.bbox_max[i] = hi.at(i);
-  k.face_count = j.at("face_count").get<int>();
-  k.solid_count = j.at("solid_count").get<int>();
-  k.mesh_triangles = j.at("mesh_triangles").get<int>();
-  return k;
-}
 
 // ---- the core's parts the film stage reads
 
@@ -346,7 +315,7 @@ StageCacheEntry encode_cooling_stage(const features::PassagesResult& r) {
             {"blade_faces", face_names(r.blade)},
             {"tools", tools},
             {"report", r.report.to_json()},
-            {"check", check_json(r.check)},
+            {"check", r.checked ? json{{"solid", io::solid_json(r.check, {})}, {"checks", io::checks_json(r.check)}} : json(nullptr)},
             {"checked", r.checked},
             {"core", r.core ? core_json(*r.core) : json(nullptr)}};
   if (r.core && !same_surface(surface_of(e.data["core"]["inner_wall"]["surface"]), r.core->inner_wall.surface))
@@ -366,7 +335,7 @@ features::PassagesResult decode_cooling_stage(const StageCacheEntry& e, const bl
     for (const json& t : d.at("tools").at(ToolGroups::names[i])) g.lists[i]->push_back(tool_of(t, shapes.at(next++)));
   if (next != shapes.size()) throw Error("stage cache: the entry has more shapes than tools");
   r.report = features::PassageReport::from_json(d.at("report"));
-  r.check = check_of(d.at("check"));
+  if (!d.at("check").is_null()) r.check = io::solid_check_of(d.at("check").at("solid"), d.at("check").at("checks"));
   r.checked = d.at("checked").get<bool>();
   if (!d.at("core").is_null()) r.core = std::make_shared<const features::CoreBuild>(core_of(d.at("core"), model));
   return r;
