@@ -90,6 +90,20 @@ BOOST_AUTO_TEST_CASE(turbulator_repro_builds) {
   BOOST_TEST(turbulators == 14);
 }
 
+// A rotor variant whose rib fillets meet the end walls at a shallow angle (random designs, seed 11, 56):
+// BRepMesh folded its triangles over those shared edges in the closed-mesh check's first two meshes, so
+// a valid solid failed closed_mesh and the inlets' step failed (exit 3). The check's finer retry meshes
+// it closed: built, valid.
+BOOST_AUTO_TEST_CASE(fillet_end_wall_mesh_fold_builds) {
+  test::TempDir dir("cli_mesh_fold");
+  const test::Run r =
+      test::run_cli("build " + test::q(kRepro / "fillet_end_wall_mesh_fold.json") + " -o " + test::q(dir.path / "out"), dir.path);
+  BOOST_TEST_REQUIRE(r.exit_code == 0, r.err);
+  const json report = load(dir.path / "out" / "report.json");
+  BOOST_TEST(report.at("valid").get<bool>());
+  BOOST_TEST_MESSAGE("closed_mesh: " << report.at("checks").at("closed_mesh").at("message").get<std::string>());
+}
+
 // The C3X film vane with its rib moved (random designs, issue 21): the insert's outermost jet lines fell
 // beside its sheet and removed nothing (exit 3). Every jet now crosses the sheet: built, valid, and the
 // insert's volume equals the independent one (1e-5 relative, as tests/features/test_insert.cpp).
