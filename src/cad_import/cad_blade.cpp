@@ -148,18 +148,22 @@ blade_import::ImportedBlade read_cad_blade(const std::string& path, CadFormat fo
   if (wall_faces == 0) throw InvalidGeometry(path + ": every face lies on the hub or the casing; no blade wall is left");
   surfaces.set_sector(faces);
 
+  // Interior cuts are moved off round span fractions (by 1.37 % of their spacing), where CAD faces are
+  // often split: a cut along a face boundary would be ambiguous.
   const double inset = 0.25 * o.tolerance / surfaces.height();
   std::vector<double> spans;
-  std::vector<blade_import::SectionTable> tables;
-  for (int i = 0; i < o.cuts; ++i) {
-    const double s = inset + (1 - 2 * inset) * i / (o.cuts - 1);
-    spans.push_back(s);
+  for (int i = 0; i < o.cuts; ++i)
+    spans.push_back(i == 0 ? inset : i == o.cuts - 1 ? 1 - inset : (i + 0.0137) / (o.cuts - 1));
+  std::vector<blade_import::SectionTable> tables(spans.size());
+  std::vector<int> order{0, o.cuts - 1};  // the ends first: a blade short of hub or casing is named so
+  for (int i = 1; i + 1 < o.cuts; ++i) order.push_back(i);
+  for (const int i : order) {
+    const double s = spans[static_cast<std::size_t>(i)];
     const StreamCut cut = cut_faces(walls, surfaces.at(s), o.tolerance, o.chord_error);
-    blade_import::SectionTable t;
+    blade_import::SectionTable& t = tables[static_cast<std::size_t>(i)];
     t.file = path + " (cut at span " + format_number(s) + ", point number as line)";
     t.points = outline(cut, path, s, i, o.cuts);
     for (std::size_t k = 0; k < t.points.size(); ++k) t.lines.push_back(static_cast<int>(k) + 1);
-    tables.push_back(std::move(t));
   }
   blade_import::ImportedBlade b = blade_import::blade_from_tables(tables, kind, hub, casing);
   b.file = path;

@@ -2,8 +2,8 @@
 // A blade given as CAD (blade.import format "step" or "iges") turned into the import's input sections:
 // the file's faces (a solid's, a shell's or loose surfaces; faces lying on the hub or casing are left
 // out) cut at `cuts` stream surfaces of the config's flow path (annular rows: surfaces of revolution of
-// its streamlines; cascades: planes z = const), evenly spaced in span from just inside the hub to just
-// inside the casing (a quarter of the tolerance: a blade ending exactly on hub and casing, as solids do,
+// its streamlines; cascades: planes z = const), about evenly spaced in span from just inside the hub to
+// just inside the casing (a quarter of the tolerance: a blade ending exactly on hub and casing, as solids do,
 // is cut where it has a wall; slice_blade extrapolates the rest). Each cut must be one closed outline;
 // it becomes a section table handed to blade_from_tables, so LE/TE detection, slicing, the blade model
 // and the fidelity are those of every import. The faces are also sampled on a grid of their surface
