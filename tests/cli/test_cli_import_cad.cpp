@@ -27,6 +27,7 @@
 #include "src/brep/blade_solid.hpp"
 #include "src/config/builtin_example.hpp"
 #include "src/config/config.hpp"
+#include "src/pipeline/report.hpp"
 
 using namespace cg;
 namespace fs = std::filesystem;
@@ -168,6 +169,17 @@ BOOST_AUTO_TEST_CASE(c3x_cooled_on_imported_step_same_features) {
   }
   BOOST_TEST(names[0].count("radial_passage_1") == 1u);
   BOOST_TEST((names[0] == names[1]), "feature names of the part on the imported blade equal the original's");
+}
+
+// The file's bytes enter the input hash (a study's stage cache must not reuse a blade of an older file);
+// the config reader does not cut the blade, so this costs no import.
+BOOST_AUTO_TEST_CASE(step_file_bytes_enter_the_input_hash) {
+  test::TempDir dir("import_cad_hash");
+  write_blade(config::build_model(c3x()), As::NamedStep, dir.path / "blade.step");
+  const nlohmann::json doc = import_config(c3x().source, "step", dir.path / "blade.step");
+  const std::string before = pipeline::input_hash(config::parse_config(doc, kExamples, "hash"));
+  std::ofstream(dir.path / "blade.step", std::ios::app) << "\n";
+  BOOST_TEST(pipeline::input_hash(config::parse_config(doc, kExamples, "hash")) != before);
 }
 
 // ---- hostile files ---------------------------------------------------------------------------------
