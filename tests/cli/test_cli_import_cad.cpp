@@ -1,14 +1,16 @@
 // blade.import formats "step" and "iges": our own uncooled blades (the built-in rotor, the C3X vane as a
 // straight cascade) written as CAD by OCCT's writers (the product's named STEP; a STEP re-split by
 // ShapeUpgrade and written by a plain STEPControl_Writer, so it carries no face names and a different
-// face split; IGES trimmed surfaces, i.e. loose faces), imported again: the ORIGINAL wall at points
+// face split; IGES trimmed surfaces, i.e. loose faces; the wall surface alone, past hub and casing), imported again: the ORIGINAL wall at points
 // between the import's cuts lies within 0.01 mm of the imported wall; a cooled build on an imported
 // blade is valid with the same feature names as the original's; hostile files are refused by
 // `coolinggen validate` with one line naming blade.import.file, exit 2.
 #define BOOST_TEST_MODULE cli_import_cad
 #include <boost/test/unit_test.hpp>
 
+#include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
+#include <Precision.hxx>
 #include <BRepGProp.hxx>
 #include <GProp_GProps.hxx>
 #include <IGESControl_Writer.hxx>
@@ -21,6 +23,7 @@
 #include <fstream>
 #include <set>
 
+#include "adaptors/occt_convert.hpp"
 #include "cli/run_cli.hpp"
 #include "export/step_writer.hpp"
 #include "src/algo/project_point_surface.hpp"
@@ -46,10 +49,18 @@ int face_count(const TopoDS_Shape& s) {
   return n;
 }
 
-enum class As { NamedStep, SplitStep, Iges };
+enum class As { NamedStep, SplitStep, Iges, WallSurface };
 
-// The uncooled blade solid of `model` written to `file` as `as` says; returns the faces written.
+// The uncooled blade solid of `model` written to `file` as `as` says (WallSurface: only the wall's
+// surface as one face, over-built past hub and casing as aero tools give it); returns the faces written.
 int write_blade(const blade::BladeModel& model, As as, const fs::path& file) {
+  if (as == As::WallSurface) {
+    STEPControl_Writer w;
+    const TopoDS_Face face = BRepBuilderAPI_MakeFace(occt::to_occt(model.surface), Precision::Confusion()).Face();
+    BOOST_TEST_REQUIRE(w.Transfer(face, STEPControl_AsIs) == IFSelect_RetDone);
+    BOOST_TEST_REQUIRE(w.Write(file.c_str()) == IFSelect_RetDone);
+    return 1;
+  }
   const brep::BladeSolid solid = brep::build_blade_solid(model);
   if (as == As::NamedStep) {
     io::write_step(file, solid.solid, solid.faces);
@@ -135,6 +146,9 @@ BOOST_AUTO_TEST_CASE(rotor_split_step_without_names) { round_trip(config::builti
 BOOST_AUTO_TEST_CASE(rotor_iges_faces) { round_trip(config::builtin_example_config(), As::Iges, "rotor_iges"); }
 
 BOOST_AUTO_TEST_CASE(c3x_cascade_iges_faces) { round_trip(c3x(), As::Iges, "c3x_iges"); }
+
+// The usual aero hand-over: the wall surface alone, reaching past hub and casing (no end faces).
+BOOST_AUTO_TEST_CASE(c3x_wall_surface_past_hub_and_casing) { round_trip(c3x(), As::WallSurface, "c3x_wall_surface"); }
 
 // The C3X vane (radial passages: a light cooled build) built by the CLI on its blade imported from the
 // product's named STEP: valid, the same feature names as the example's own build.
