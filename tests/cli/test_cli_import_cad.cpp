@@ -1,8 +1,9 @@
 // blade.import formats "step" and "iges": our own uncooled blades (the built-in rotor, the C3X vane as a
 // straight cascade) written as CAD by OCCT's writers (the product's named STEP; a STEP re-split by
 // ShapeUpgrade and written by a plain STEPControl_Writer, so it carries no face names and a different
-// face split; IGES trimmed surfaces, i.e. loose faces; the wall surface alone, past hub and casing), imported again: the ORIGINAL wall at points
-// between the import's cuts lies within 0.01 mm of the imported wall; a cooled build on an imported
+// face split; IGES trimmed surfaces, i.e. loose faces; the wall surface alone, past hub and casing),
+// imported again: the ORIGINAL wall at points between the import's cuts lies within 0.01 mm of the
+// imported wall; a cooled build on an imported
 // blade is valid with the same feature names as the original's; hostile files are refused by
 // `coolinggen validate` with one line naming blade.import.file, exit 2.
 #define BOOST_TEST_MODULE cli_import_cad
@@ -17,6 +18,10 @@
 #include <STEPControl_Writer.hxx>
 #include <ShapeUpgrade_ShapeDivideArea.hxx>
 #include <TopExp_Explorer.hxx>
+#include <BRepBuilderAPI_Transform.hxx>
+#include <BRep_Builder.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
 #include <TopoDS_Vertex.hxx>
 
 #include <chrono>
@@ -240,4 +245,53 @@ BOOST_AUTO_TEST_CASE(blade_short_of_the_casing) {
   const brep::BladeSolid short_blade = brep::build_blade_solid(m.surface, hub, tip);
   io::write_step(dir.path / "short.step", short_blade.solid, short_blade.faces);
   expect_refused(dir.path / "short.step", "step", "does not reach the casing");
+}
+
+namespace {
+
+void write_plain_step(const TopoDS_Shape& shape, const fs::path& file) {
+  STEPControl_Writer w;
+  BOOST_TEST_REQUIRE(w.Transfer(shape, STEPControl_AsIs) == IFSelect_RetDone);
+  BOOST_TEST_REQUIRE(w.Write(file.c_str()) == IFSelect_RetDone);
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(two_blades_in_one_file) {
+  test::TempDir dir("import_cad_two");
+  const TopoDS_Solid blade = brep::build_blade_solid(config::build_model(c3x())).solid;
+  gp_Trsf shift;
+  shift.SetTranslation(gp_Vec(0, 150, 0));
+  TopoDS_Compound both;
+  BRep_Builder b;
+  b.MakeCompound(both);
+  b.Add(both, blade);
+  b.Add(both, BRepBuilderAPI_Transform(blade, shift, Standard_True).Shape());
+  write_plain_step(both, dir.path / "two.step");
+  expect_refused(dir.path / "two.step", "step", "is not one closed outline (2 loops)");
+}
+
+BOOST_AUTO_TEST_CASE(wall_with_a_face_missing) {
+  test::TempDir dir("import_cad_hole");
+  const TopoDS_Solid blade = brep::build_blade_solid(config::build_model(c3x())).solid;
+  GProp_GProps props;
+  BRepGProp::SurfaceProperties(blade, props);
+  ShapeUpgrade_ShapeDivideArea split(blade);
+  split.MaxArea() = props.Mass() / 12;
+  BOOST_TEST_REQUIRE(split.Perform());
+  // Every face but the largest wall piece (the hub and casing faces are smaller than it).
+  TopoDS_Face largest;
+  double most = 0;
+  for (TopExp_Explorer e(split.Result(), TopAbs_FACE); e.More(); e.Next()) {
+    GProp_GProps f;
+    BRepGProp::SurfaceProperties(e.Current(), f);
+    if (f.Mass() > most) most = f.Mass(), largest = TopoDS::Face(e.Current());
+  }
+  TopoDS_Compound rest;
+  BRep_Builder b;
+  b.MakeCompound(rest);
+  for (TopExp_Explorer e(split.Result(), TopAbs_FACE); e.More(); e.Next())
+    if (!e.Current().IsSame(largest)) b.Add(rest, e.Current());
+  write_plain_step(rest, dir.path / "hole.step");
+  expect_refused(dir.path / "hole.step", "step", "ends open at");
 }
