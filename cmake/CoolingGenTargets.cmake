@@ -47,8 +47,12 @@ vtk_module_autoinit(TARGETS coolinggen_mesh MODULES ${VTK_LIBRARIES})
 # Blades designed by other tools (geomTurbo): read, checked, cut at our streamlines into the model's
 # point sections, fidelity measured (no OCCT).
 cg_add_library(coolinggen_import DIRS src/blade_import DEPS coolinggen_model)
-# Configuration file (JSON) -> plain option structs and the blade model's definitions (no OCCT).
-cg_add_library(coolinggen_config DIRS src/config DEPS coolinggen_import coolinggen_model nlohmann_json::nlohmann_json)
+# Blades given as CAD (STEP, IGES): read by OCCT, their faces cut at our stream surfaces into the
+# import's section outlines and sampled for its fidelity.
+cg_add_library(coolinggen_cad_import DIRS src/cad_import DEPS coolinggen_import coolinggen_brep)
+# Configuration file (JSON) -> plain option structs and the blade model's definitions (no OCCT in its
+# reader; build_model's import of a STEP / IGES blade goes through coolinggen_cad_import).
+cg_add_library(coolinggen_config DIRS src/config DEPS coolinggen_import coolinggen_cad_import coolinggen_model nlohmann_json::nlohmann_json)
 # The coolant circuit of a built part as a flow network, solved by CalculiX (ccx) in a child process.
 cg_add_library(coolinggen_network DIRS src/network DEPS coolinggen_brep coolinggen_config nlohmann_json::nlohmann_json)
 # The whole job (config -> verified, exported model) as a library call; the CLI is a thin layer on it.
@@ -58,7 +62,7 @@ cg_add_library(coolinggen_pipeline DIRS src/pipeline DEPS OpenSSL::Crypto coolin
 add_library(coolinggen INTERFACE)
 add_library(coolinggen::coolinggen ALIAS coolinggen)
 target_link_libraries(coolinggen INTERFACE coolinggen_pipeline coolinggen_network coolinggen_config coolinggen_mesh coolinggen_export
-  coolinggen_brep coolinggen_import coolinggen_model coolinggen_adaptors coolinggen_kernel)
+  coolinggen_brep coolinggen_cad_import coolinggen_import coolinggen_model coolinggen_adaptors coolinggen_kernel)
 
 # The CLI: its commands in a library (tests/cli links it to test them without a process), main.cpp
 # in the executable.
@@ -72,7 +76,7 @@ target_link_libraries(coolinggen_cli PRIVATE coolinggen_cli_commands)
 install(TARGETS coolinggen_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 
 install(TARGETS coolinggen coolinggen_pipeline coolinggen_network coolinggen_config coolinggen_mesh coolinggen_export coolinggen_brep
-  coolinggen_import coolinggen_model coolinggen_kernel coolinggen_adaptors coolinggen_occt_deps coolinggen_vtk_deps coolinggen_gmsh_deps
+  coolinggen_import coolinggen_cad_import coolinggen_model coolinggen_kernel coolinggen_adaptors coolinggen_occt_deps coolinggen_vtk_deps coolinggen_gmsh_deps
   coolinggen_cgns_deps
   EXPORT CoolingGenTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 foreach(d src adaptors features export)

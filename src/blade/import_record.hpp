@@ -18,10 +18,11 @@ struct ImportedSectionFidelity {
   DeviationFigures at_points;       // the given points inside the flow path
   DeviationFigures between_points;  // the section's interpolant half-way between consecutive points
   DeviationFigures to_next;         // the input surface half-way to the next section (empty for the last)
+  DeviationFigures on_faces;        // STEP / IGES: points of the input faces between this cut and the next
 };
 
 struct ImportRecord {
-  std::string format;  // "geomturbo"
+  std::string format;  // "geomturbo" | "sections" | "step" | "iges"
   std::string file;
   std::string row;     // "annular" | "cascade"
   int number_of_blades = 0;  // 0 = not given

@@ -121,14 +121,32 @@ LeadingTrailingEdge detect_leading_trailing_edge(const BSplineCurve<2>& c) {
   require(c.is_periodic(), "LE/TE detection: the section curve must be closed (periodic)");
   const Samples s = sample(c);
   const std::vector<Eigen::Vector2d>& p = s.p;
-  // Longest extent among the samples (O(n^2) on 16 points per span: cheap at section sizes).
+  // Longest extent among the samples: the first pair (i < j) of greatest distance. Pairs that cannot
+  // reach a known lower bound of it (|pi - pj| <= |pi - m| + |pj - m|, m the samples' mean; the bound
+  // is the farthest sample from the one farthest from m) are skipped, so dense sections (an imported
+  // CAD blade's cuts) do not pay n^2 distances; the pair found is the plain double loop's.
+  Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+  for (const auto& q : p) mean += q;
+  mean /= static_cast<double>(p.size());
+  std::vector<double> rad(p.size());
+  std::size_t far = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    rad[i] = (p[i] - mean).norm();
+    if (rad[i] > rad[far]) far = i;
+  }
+  double lower = 0;
+  for (const auto& q : p) lower = std::max(lower, (q - p[far]).norm());
+  const double cut = lower * (1 - 1e-9);  // rounding margin: never skips a pair that could tie
   std::size_t bi = 0, bj = 0;
   double d2 = -1;
-  for (std::size_t i = 0; i < p.size(); ++i)
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (rad[i] + rad[far] < cut) continue;  // rad[far] is the largest r
     for (std::size_t j = i + 1; j < p.size(); ++j) {
+      if (rad[i] + rad[j] < cut) continue;
       const double d = (p[i] - p[j]).squaredNorm();
       if (d > d2) d2 = d, bi = i, bj = j;
     }
+  }
   const double extent = std::sqrt(d2);
   if (end_width(p, p[bj], p[bi], 0.05 * extent) > end_width(p, p[bi], p[bj], 0.05 * extent)) std::swap(bi, bj);
   // Now bi is the LE end, bj the TE end.

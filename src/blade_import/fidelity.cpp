@@ -16,8 +16,8 @@ constexpr double kFar = 1.0;  // mm
 struct Probe {
   Eigen::Vector3d point;
   std::size_t section;
-  int kind;  // 0 at a point, 1 between points, 2 towards the next section
-  int line;
+  int kind;  // 0 at a point, 1 between points, 2 towards the next section, 3 on an input face
+  int line;  // file line (kind 3: the face's number)
   double distance = -1;  // < 0: outside the flow path
 };
 
@@ -56,8 +56,9 @@ bool local_foot(const BSplineSurface<3>& s, const Eigen::Vector3d& P, double& u,
   return false;
 }
 
-std::vector<Probe> probes(const InputSurface& surf) {
+std::vector<Probe> probes(const ImportedBlade& b, const InputSurface& surf) {
   std::vector<Probe> out;
+  for (const SurfaceSample& p : b.surface_samples) out.push_back({p.point, p.section, 3, p.face});
   for (std::size_t k = 0; k < surf.sections(); ++k) {
     const auto& pts = surf.loop_points(k);
     const auto& par = surf.point_params(k);
@@ -82,7 +83,7 @@ std::vector<Probe> probes(const InputSurface& surf) {
 blade::ImportRecord measure_fidelity(const ImportedBlade& b, const SlicedBlade& sliced, const blade::BladeModel& model,
                                      double tolerance) {
   const InputSurface& surf = *sliced.surface;
-  std::vector<Probe> ps = probes(surf);
+  std::vector<Probe> ps = probes(b, surf);
   const int workers = std::min(parallel_workers(), 4);
   std::vector<std::unique_ptr<SurfaceProjector>> proj;
   std::vector<std::unique_ptr<ChannelSide>> sides;
@@ -118,12 +119,12 @@ blade::ImportRecord measure_fidelity(const ImportedBlade& b, const SlicedBlade& 
   r.cuts = static_cast<int>(sliced.spans.size());
   r.samples_per_side = surf.samples_per_side();
   for (std::size_t k = 0; k < surf.sections(); ++k)
-    r.sections.push_back({static_cast<int>(k + 1), b.sections[k].line, {}, {}, {}});
+    r.sections.push_back({static_cast<int>(k + 1), b.sections[k].line, {}, {}, {}, {}});
   const Probe* worst = nullptr;
   for (const Probe& p : ps) {
     if (p.distance < 0) continue;
     auto& s = r.sections[p.section];
-    add(p.kind == 0 ? s.at_points : p.kind == 1 ? s.between_points : s.to_next, p.distance);
+    add(p.kind == 0 ? s.at_points : p.kind == 1 ? s.between_points : p.kind == 2 ? s.to_next : s.on_faces, p.distance);
     add(r.overall, p.distance);
     if (!worst || p.distance > worst->distance) worst = &p;
   }
@@ -131,8 +132,16 @@ blade::ImportRecord measure_fidelity(const ImportedBlade& b, const SlicedBlade& 
     finish(s.at_points);
     finish(s.between_points);
     finish(s.to_next);
+    finish(s.on_faces);
   }
   finish(r.overall);
+  if (worst && worst->distance > tolerance && worst->kind == 3)
+    throw InvalidGeometry(b.file + ": face " + std::to_string(worst->line) + ": the built blade lies " +
+                          (worst->distance >= kFar ? "more than " : "") + format_number(worst->distance) +
+                          " mm from the input face at (" + format_number(worst->point.x()) + ", " + format_number(worst->point.y()) +
+                          ", " + format_number(worst->point.z()) + ") mm, between the cuts " + std::to_string(worst->section + 1) +
+                          " and " + std::to_string(worst->section + 2) + ", more than blade.import.tolerance " +
+                          format_number(tolerance) + " mm (more cuts, blade.import.spans, follow the faces closer)");
   if (worst && worst->distance > tolerance) {
     static const char* where[] = {"at its point on this line", "half-way after its point on this line",
                                   "half-way to the next section"};

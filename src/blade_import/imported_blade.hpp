@@ -23,6 +23,15 @@ struct ImportedSection {
   std::string file;                                 // its own file (section tables); empty: the blade's
 };
 
+/// A point of the input's own surface (the faces of a STEP / IGES blade) inside the flow path, between
+/// the input sections `section` and `section + 1`: the fidelity is measured there too, between the
+/// sections the blade is rebuilt from.
+struct SurfaceSample {
+  Eigen::Vector3d point;  // mm, CoolingGen frame
+  std::size_t section = 0;
+  int face = 0;           // 1-based, in the file's order of faces
+};
+
 struct ImportedBlade {
   std::string file;     // as read (for messages)
   RowKind kind = RowKind::Annular;
@@ -32,6 +41,7 @@ struct ImportedBlade {
   int hub_line = 0, casing_line = 0;
   int number_of_blades = 0;                     // 0 = not given
   double tip_gap_le = 0, tip_gap_te = 0;        // mm, clearance between blade tip and casing
+  std::vector<SurfaceSample> surface_samples;   // STEP / IGES: points on the input faces (else empty)
 
   /// The file section k came from (for messages).
   const std::string& file_of(std::size_t k) const {

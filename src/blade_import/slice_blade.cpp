@@ -46,26 +46,38 @@ std::vector<Eigen::Vector2d> tip_contour(const ImportedBlade& b) {
 }
 
 // Spanwise parameter of the input surface where chordwise sample j meets the stream surface at s, at
-// or above section `from` (the cut of the previous, lower span; the root moves up with s).
-double cut_tau(const ImportedBlade& b, const InputSurface& surf, ChannelSide& side, int j, double s, std::size_t& from) {
+// or above section `from` (the cut of the previous, lower span; the root moves up with s). An end
+// section short of hub or casing by at most `reach` (mm; a CAD blade's cuts just inside its end faces)
+// is continued by the surface's linear extension beyond it.
+double cut_tau(const ImportedBlade& b, const InputSurface& surf, ChannelSide& side, int j, double s, std::size_t& from,
+               double reach) {
   const std::size_t K = surf.sections();
   auto f_at = [&](std::size_t k) { return side.offset(surf.point(j, surf.section_tau(k)), s); };
   std::size_t k = from;
   double fa = f_at(k);
-  if (fa > 0) {
-    if (k == 0) not_reaching(b, true, fa);
-    while (k > 0 && fa > 0) fa = f_at(--k);
+  while (k > 0 && fa > 0) fa = f_at(--k);
+  double a = surf.section_tau(k);
+  if (fa > 0) {  // the hub section lies above the stream surface
+    if (fa > reach) not_reaching(b, true, fa);
+    a -= surf.section_tau(1) - surf.section_tau(0);
+    fa = side.offset(surf.point(j, a), s);
     if (fa > 0) not_reaching(b, true, fa);
   }
   double fc = f_at(k + 1);
   while (fc < 0 && k + 2 < K) {
     ++k;
+    a = surf.section_tau(k);
     fa = fc;
     fc = f_at(k + 1);
   }
-  if (fc < 0) not_reaching(b, false, fc);
   from = k;
-  double a = surf.section_tau(k), c = surf.section_tau(k + 1);
+  double c = surf.section_tau(k + 1);
+  if (fc < 0) {  // the tip section lies below the stream surface
+    if (-fc > reach) not_reaching(b, false, fc);
+    c += surf.section_tau(K - 1) - surf.section_tau(K - 2);
+    fc = side.offset(surf.point(j, c), s);
+    if (fc < 0) not_reaching(b, false, fc);
+  }
   if (fa == 0) return a;
   int last_side = 0;
   for (int it = 0; it < 100; ++it) {  // Illinois regula falsi
@@ -160,7 +172,7 @@ SlicedBlade slice_blade(const ImportedBlade& b, const ImportOptions& o, const bl
   std::vector<std::size_t> from(static_cast<std::size_t>(surf.loop_size()), 0);
   for (std::size_t i = 0; i < out.spans.size(); ++i)
     for (int j = 0; j < surf.loop_size(); ++j)
-      cuts[i].push_back(surf.point(j, cut_tau(b, surf, *side, j, out.spans[i], from[static_cast<std::size_t>(j)])));
+      cuts[i].push_back(surf.point(j, cut_tau(b, surf, *side, j, out.spans[i], from[static_cast<std::size_t>(j)], o.tolerance)));
 
   if (b.kind == RowKind::Cascade) {
     out.definition.flow_path = blade::StraightFlowPath{span};

@@ -107,10 +107,8 @@ Sector blade_sector(const BSplineSurface<3>& s, const PoleBox& box) {
   return {centre + lo - margin, hi - lo + 2 * margin};
 }
 
-// Face on the surface of revolution of the meridional curve (x, r) about the x axis, over the
-// angular sector only: a smaller face makes the general fuse ~2.5x faster than a full revolution.
-// The basis curve lies at angle sector.start (for a full revolution that is the seam, opposite the
-// blade, so the end face cut out of it carries no seam).
+}  // namespace
+
 Handle(Geom_SurfaceOfRevolution) revolved_surface(const RevolvedTrim& t, double theta0, const char* which) {
   const BSplineCurve<2>& c = t.meridional;
   require(c.num_poles() >= 2, std::string(which) + " meridional curve needs at least 2 poles");
@@ -126,6 +124,12 @@ Handle(Geom_SurfaceOfRevolution) revolved_surface(const RevolvedTrim& t, double 
   return new Geom_SurfaceOfRevolution(occt::to_occt(c3), gp_Ax1(gp::Origin(), gp::DX()));
 }
 
+namespace {
+
+// Face on the surface of revolution of the meridional curve (x, r) about the x axis, over the
+// angular sector only: a smaller face makes the general fuse ~2.5x faster than a full revolution.
+// The basis curve lies at angle sector.start (for a full revolution that is the seam, opposite the
+// blade, so the end face cut out of it carries no seam).
 TopoDS_Face revolved_face(const RevolvedTrim& t, const Sector& sector, const char* which) {
   const BSplineCurve<2>& c = t.meridional;
   const Handle(Geom_SurfaceOfRevolution) rev = revolved_surface(t, sector.start, which);

@@ -11,6 +11,7 @@
 // meets both trims is the wall; the trim pieces bounded only by intersection edges with the wall are
 // the end faces. These share their edges already, so they form a closed shell without sewing
 // tolerances. OCCT gets the exact surface (no re-lofting); the trim surfaces are exact too.
+#include <Geom_SurfaceOfRevolution.hxx>
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Solid.hxx>
 
@@ -67,6 +68,10 @@ struct BladeSolid {
 /// `progress` (optional) sees the general fuse's progress; a stop request ends it with Cancelled.
 BladeSolid build_blade_solid(const BSplineSurface<3>& surface, const EndTrim& hub, const EndTrim& casing,
                              ProgressSink* progress = nullptr);
+
+/// The whole surface of revolution of the trim's meridional curve about the x axis, its basis curve at
+/// angle theta0 (rad). Throws InvalidGeometry (naming `which`) for a periodic curve or a pole with r <= 0.
+Handle(Geom_SurfaceOfRevolution) revolved_surface(const RevolvedTrim& t, double theta0, const char* which);
 
 /// The end trims of a blade model's flow path: the planes z = hub_z and z = casing_z (straight vane)
 /// or the revolved hub and casing contours (meridional).

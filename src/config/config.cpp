@@ -202,7 +202,8 @@ std::string resolved(const Field& f, const std::filesystem::path& base_dir) {
   return p.string();
 }
 
-// blade.import's file(s), read for their syntax only; build_model cuts the blade (imported_model.cpp).
+// blade.import's file(s), read for their syntax only (a STEP / IGES file only found readable: its reader
+// is OCCT's); build_model cuts the blade (imported_model.cpp).
 void read_import_files(const Field& f, const std::filesystem::path& base_dir, BladeImport& im) {
   const bool tables = im.format == "sections";
   for (const char* key : {"file", "files", "frame", "unit"})
@@ -210,6 +211,12 @@ void read_import_files(const Field& f, const std::filesystem::path& base_dir, Bl
       fail(f.path() + "." + key, "is not given with format \"" + im.format + "\" (" +
                                      (tables ? "files, frame and unit" : "file") + " instead)");
   try {
+    if (im.format == "step" || im.format == "iges") {  // read and cut by build_model (OCCT)
+      im.field = f.path() + ".file";
+      im.files = {resolved(f.at("file"), base_dir)};
+      if (!std::ifstream(im.files[0], std::ios::binary)) fail(im.field, "cannot read " + im.files[0]);
+      return;
+    }
     if (!tables) {
       im.field = f.path() + ".file";
       im.files = {resolved(f.at("file"), base_dir)};
@@ -235,9 +242,9 @@ void read_import_files(const Field& f, const std::filesystem::path& base_dir, Bl
 // blade.import: the format, the options and the file(s).
 void import_blade(const Field& f, const std::filesystem::path& base_dir, Config& c) {
   f.expect_object({"format", "file", "files", "frame", "unit", "tolerance", "spans", "samples_per_side"});
-  static const char* formats[] = {"geomturbo", "sections"};
+  static const char* formats[] = {"geomturbo", "sections", "step", "iges"};
   BladeImport im;
-  im.format = formats[f.at("format").choice({"geomturbo", "sections"})];
+  im.format = formats[f.at("format").choice({"geomturbo", "sections", "step", "iges"})];
   im.options.tolerance = f.number_or("tolerance", im.options.tolerance, closed(1e-4, 1), "mm");
   im.options.spans = f.integer_or("spans", 0, 0, 201);
   if (im.options.spans == 1) fail(f.path() + ".spans", "must be 0 (automatic) or in [2, 201], got 1");

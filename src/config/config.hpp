@@ -62,12 +62,13 @@ struct PointSource {
 
 /// "blade.import": a blade designed by another tool (src/blade_import). The config reader reads the
 /// file(s) (their syntax: a geomTurbo file or section table that is not one is refused naming its
-/// line); build_model (imported_model.hpp) makes the section tables' sides, cuts the blade
-/// at the flow path's streamlines into point sections, builds the blade from them and measures it
+/// line; a STEP / IGES file is only found readable); build_model (imported_model.hpp) cuts a STEP /
+/// IGES file's faces at the flow path's stream surfaces into outlines (src/cad_import), makes the
+/// section tables' sides, cuts the blade at the flow path's streamlines into point sections, builds the blade from them and measures it
 /// against the file (the geometry checks: open or crossing sections, sections not reaching hub or
 /// casing, fidelity beyond the tolerance).
 struct BladeImport {
-  std::string format = "geomturbo";  ///< "geomturbo" | "sections"
+  std::string format = "geomturbo";  ///< "geomturbo" | "sections" | "step" | "iges" (read by build_model)
   std::string field = "blade.import.file";  ///< the field geometry errors name ("blade.import.files")
   std::vector<std::string> files;  ///< resolved paths (geomturbo: one)
   blade_import::ImportOptions options;

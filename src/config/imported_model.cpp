@@ -3,12 +3,13 @@
 #include "src/blade_import/fidelity.hpp"
 #include "src/blade_import/slice_blade.hpp"
 #include "src/blade_import/table_blade.hpp"
+#include "src/cad_import/cad_blade.hpp"
 
 namespace cg::config {
 namespace {
 
-// The blade as imported: the geomTurbo file's as read, or the section tables' outlines split into
-// sides, with the config's flow path as the channel.
+// The blade as imported: the geomTurbo file's as read, or the section tables' outlines (or a STEP /
+// IGES blade's cuts) split into sides, with the config's flow path as the channel.
 std::shared_ptr<const blade_import::ImportedBlade> imported_blade(const Config& config) {
   const BladeImport& im = *config.blade_import;
   if (im.blade) return im.blade;
@@ -23,6 +24,15 @@ std::shared_ptr<const blade_import::ImportedBlade> imported_blade(const Config& 
     const double span = std::get<blade::StraightFlowPath>(config.blade.flow_path).span;
     hub = {{-1e4, 0}, {1e4, 0}};
     casing = {{-1e4, span}, {1e4, span}};
+  }
+  if (im.format == "step" || im.format == "iges") {
+    cad_import::CadCutOptions o;
+    o.cuts = im.cuts;
+    o.tolerance = im.options.tolerance;
+    const auto* m = std::get_if<blade::MeridionalFlowPath>(&config.blade.flow_path);
+    return std::make_shared<const blade_import::ImportedBlade>(cad_import::read_cad_blade(
+        im.files[0], im.format == "step" ? cad_import::CadFormat::Step : cad_import::CadFormat::Iges, kind, hub, casing,
+        m ? &m->net : nullptr, o));
   }
   return std::make_shared<const blade_import::ImportedBlade>(blade_import::blade_from_tables(im.tables, kind, hub, casing));
 }

@@ -72,9 +72,11 @@ json deviation(const blade::DeviationFigures& d) { return json{{"max_mm", d.max}
 // blade.import: the file, its blade count and tip gap, and the fidelity per imported section.
 json import_entry(const blade::ImportRecord& r) {
   json sections = json::array();
-  for (const blade::ImportedSectionFidelity& s : r.sections)
+  for (const blade::ImportedSectionFidelity& s : r.sections) {
     sections.push_back({{"section", s.section}, {"line", s.line}, {"at_points", deviation(s.at_points)},
                         {"between_points", deviation(s.between_points)}, {"to_next_section", deviation(s.to_next)}});
+    if (r.format == "step" || r.format == "iges") sections.back()["on_input_faces"] = deviation(s.on_faces);
+  }
   return json{{"format", r.format}, {"file", r.file}, {"row", r.row},
               {"number_of_blades", r.number_of_blades > 0 ? json(r.number_of_blades) : json()},
               {"tip_gap_mm", {{"leading_edge", r.tip_gap_le}, {"trailing_edge", r.tip_gap_te}}},
