@@ -104,6 +104,20 @@ BOOST_AUTO_TEST_CASE(fillet_end_wall_mesh_fold_builds) {
   BOOST_TEST_MESSAGE("closed_mesh: " << report.at("checks").at("closed_mesh").at("message").get<std::string>());
 }
 
+// A C3X film vane variant (random designs, seed 11, 173) whose insert's first sheet sample line left the
+// sheet through the insert's chordwise end: "the sheet measures 0.5325 to 1.625 mm", exit 3. The measure
+// keeps the lines that cross the sheet's two sides: built, valid, the sheet measured within 5e-3 mm.
+BOOST_AUTO_TEST_CASE(insert_sheet_measured_across_its_sides) {
+  test::TempDir dir("cli_sheet");
+  const test::Run r =
+      test::run_cli("build " + test::q(kRepro / "insert_sheet_end_sample.json") + " -o " + test::q(dir.path / "out"), dir.path);
+  BOOST_TEST_REQUIRE(r.exit_code == 0, r.err);
+  const json report = load(dir.path / "out" / "report.json");
+  BOOST_TEST(report.at("valid").get<bool>());
+  const json& insert = report.at("model").at("cooling").at("film").at("inserts").at(0);
+  BOOST_TEST(std::abs(insert.at("measured_sheet_max_mm").get<double>() - insert.at("sheet_thickness_mm").get<double>()) <= 5e-3, insert.dump());
+}
+
 // The C3X film vane with its rib moved (random designs, issue 21): the insert's outermost jet lines fell
 // beside its sheet and removed nothing (exit 3). Every jet now crosses the sheet: built, valid, and the
 // insert's volume equals the independent one (1e-5 relative, as tests/features/test_insert.cpp).
