@@ -90,17 +90,22 @@ BOOST_AUTO_TEST_CASE(turbulator_repro_builds) {
   BOOST_TEST(turbulators == 14);
 }
 
+// Builds a repro config as it is (exit 0 required) and returns its report.json, checked valid.
+json built_repro(const std::string& file) {
+  test::TempDir dir("cli_repro_build");
+  const test::Run r = test::run_cli("build " + test::q(kRepro / file) + " -o " + test::q(dir.path / "out"), dir.path);
+  BOOST_TEST_REQUIRE(r.exit_code == 0, file << ": " << r.err);
+  const json report = load(dir.path / "out" / "report.json");
+  BOOST_TEST(report.at("valid").get<bool>(), file);
+  return report;
+}
+
 // A rotor variant whose rib fillets meet the end walls at a shallow angle (random designs, seed 11, 56):
 // BRepMesh folded its triangles over those shared edges in the closed-mesh check's first two meshes, so
 // a valid solid failed closed_mesh and the inlets' step failed (exit 3). The check's finer retry meshes
 // it closed: built, valid.
 BOOST_AUTO_TEST_CASE(fillet_end_wall_mesh_fold_builds) {
-  test::TempDir dir("cli_mesh_fold");
-  const test::Run r =
-      test::run_cli("build " + test::q(kRepro / "fillet_end_wall_mesh_fold.json") + " -o " + test::q(dir.path / "out"), dir.path);
-  BOOST_TEST_REQUIRE(r.exit_code == 0, r.err);
-  const json report = load(dir.path / "out" / "report.json");
-  BOOST_TEST(report.at("valid").get<bool>());
+  const json report = built_repro("fillet_end_wall_mesh_fold.json");
   BOOST_TEST_MESSAGE("closed_mesh: " << report.at("checks").at("closed_mesh").at("message").get<std::string>());
 }
 
@@ -108,12 +113,7 @@ BOOST_AUTO_TEST_CASE(fillet_end_wall_mesh_fold_builds) {
 // sheet through the insert's chordwise end: "the sheet measures 0.5325 to 1.625 mm", exit 3. The measure
 // keeps the lines that cross the sheet's two sides: built, valid, the sheet measured within 5e-3 mm.
 BOOST_AUTO_TEST_CASE(insert_sheet_measured_across_its_sides) {
-  test::TempDir dir("cli_sheet");
-  const test::Run r =
-      test::run_cli("build " + test::q(kRepro / "insert_sheet_end_sample.json") + " -o " + test::q(dir.path / "out"), dir.path);
-  BOOST_TEST_REQUIRE(r.exit_code == 0, r.err);
-  const json report = load(dir.path / "out" / "report.json");
-  BOOST_TEST(report.at("valid").get<bool>());
+  const json report = built_repro("insert_sheet_end_sample.json");
   const json& insert = report.at("model").at("cooling").at("film").at("inserts").at(0);
   BOOST_TEST(std::abs(insert.at("measured_sheet_max_mm").get<double>() - insert.at("sheet_thickness_mm").get<double>()) <= 5e-3, insert.dump());
 }
