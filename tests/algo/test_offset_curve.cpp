@@ -144,9 +144,14 @@ void result_length_area(const TrimmedOffset& r, double& length, double& area) {
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(raw_offset_vs_geom2d_offset_curve) {
+#if defined(__SANITIZE_ADDRESS__)
+  const int wanted = 60;  // the same mix, a fifth of the cases under the sanitizers (70 s there for 300)
+#else
+  const int wanted = 300;
+#endif
   test::Rng r(21);
   int cases = 0;
-  for (int i = 0; cases < 300 && i < 2000; ++i) {
+  for (int i = 0; cases < wanted && i < 2000; ++i) {
     const bool rational = i % 2 == 1;
     const int p = r.integer(2, 7);
     const auto c = test::random_curve<2>(r, p, r.integer(p + 1, p + 6), rational);
@@ -174,7 +179,7 @@ BOOST_AUTO_TEST_CASE(raw_offset_vs_geom2d_offset_curve) {
       }
     }
   }
-  BOOST_TEST(cases == 300);
+  BOOST_TEST(cases == wanted);
 }
 
 namespace {
