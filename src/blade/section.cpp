@@ -8,6 +8,7 @@
 
 #include "src/analyze/arc_length.hpp"
 #include "src/algo/project_point_curve.hpp"
+#include "src/blade/camber_edges.hpp"
 #include "src/blade/chordwise.hpp"
 #include "src/blade/edge_arcs.hpp"
 #include "src/core/format.hpp"
@@ -223,7 +224,18 @@ SectionProfile section_from_points(const PointSectionDefinition& def) {
     std::reverse(pts.begin(), pts.end());
     if (le_index >= 0) le_index = n - 1 - le_index, te_index = n - 1 - te_index;
   }
-  return with_edge_arcs(s, pts, def, le_index, te_index, what);
+  s = with_edge_arcs(s, pts, def, le_index, te_index, what);
+  if (def.edges == EdgeRule::CamberLine && le_index < 0) {
+    // The edge circles of the final curve by the 60-degree stretch (leading_edge.hpp) give each edge's
+    // centre and size; the profile keeps its reported circles and arcs.
+    const LeadingTrailingEdge d = camber_edge_points(s.curve, detect_leading_trailing_edge(s.curve));
+    SectionProfile c = make_profile(s.curve, d.le_param, d.te_param);
+    c.le_circle = s.le_circle, c.te_circle = s.te_circle;
+    c.le_circle_points = s.le_circle_points, c.te_circle_points = s.te_circle_points;
+    c.le_arc = s.le_arc, c.te_arc = s.te_arc;
+    s = std::move(c);
+  }
+  return s;
 }
 
 }  // namespace cg::blade

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "src/blade/camber_edges.hpp"
 #include "src/blade/leading_edge.hpp"
 #include "src/core/bspline_curve.hpp"
 
@@ -60,6 +61,8 @@ struct PointSectionDefinition {
   /// circle exactly (see section_from_points).
   double le_radius = 0, te_radius = 0;
   std::optional<Eigen::Vector2d> le_centre, te_centre;
+  /// Where a detected LE / TE sits on its edge (camber_edges.hpp); not used with le_index / te_index.
+  EdgeRule edges = EdgeRule::CentreLine;
 };
 
 /// A section from camber line and thickness. Angles in degrees, measured in the section frame from the

@@ -4,12 +4,16 @@
 #include <algorithm>
 #include <cstddef>
 
+#include "src/blade/camber_edges.hpp"
+
 namespace cg::blade_import {
 
 struct ImportOptions {
   double tolerance = 0.01;    // mm: fidelity limit (fidelity.hpp) and LE/TE gap of the input sides
   int spans = 0;              // cuts from hub to casing; 0 = one per input section, in [11, 21]
   int samples_per_side = 0;   // chordwise samples per side; 0 = twice the most points on a side, in [96, 300]
+  /// Where the LE and TE of an outline without sides (section tables, STEP / IGES cuts) are taken.
+  blade::EdgeRule edges = blade::EdgeRule::CentreLine;
 };
 
 /// Stream-surface cuts the blade model is built from, for `input_sections` input sections (0: not

@@ -60,12 +60,13 @@ void check_closed(const SectionTable& t, std::size_t k) {
                                    "lists the whole outline (both sides) once around");
 }
 
-ImportedSection section_of(const SectionTable& t, std::size_t k, RowKind kind) {
+ImportedSection section_of(const SectionTable& t, std::size_t k, RowKind kind, blade::EdgeRule edges) {
   if (const auto f = run_fault(t.points, t.lines, true, "the outline", "once around the section")) fail(t, k, f->line, f->what);
   check_closed(t, k);
   if (const auto f = crossing_fault(t.points, t.lines)) fail(t, k, f->line, f->what);
   blade::PointSectionDefinition def;
   def.points = unrolled(t.points, kind);
+  def.edges = edges;
   blade::SectionProfile profile;
   try {
     profile = blade::section_from_points(def);
@@ -104,12 +105,12 @@ ImportedSection section_of(const SectionTable& t, std::size_t k, RowKind kind) {
 }  // namespace
 
 ImportedBlade blade_from_tables(const std::vector<SectionTable>& tables, RowKind kind, const std::vector<Eigen::Vector2d>& hub,
-                                const std::vector<Eigen::Vector2d>& casing) {
+                                const std::vector<Eigen::Vector2d>& casing, blade::EdgeRule edges) {
   ImportedBlade b;
   b.kind = kind;
   for (std::size_t k = 0; k < tables.size(); ++k) {
     b.file += (k ? ", " : "") + tables[k].file;
-    b.sections.push_back(section_of(tables[k], k, kind));
+    b.sections.push_back(section_of(tables[k], k, kind, edges));
   }
   b.hub = hub;
   b.casing = casing;

@@ -165,7 +165,7 @@ blade_import::ImportedBlade read_cad_blade(const std::string& path, CadFormat fo
     t.points = outline(cut, path, s, i, o.cuts);
     for (std::size_t k = 0; k < t.points.size(); ++k) t.lines.push_back(static_cast<int>(k) + 1);
   }
-  blade_import::ImportedBlade b = blade_import::blade_from_tables(tables, kind, hub, casing);
+  blade_import::ImportedBlade b = blade_import::blade_from_tables(tables, kind, hub, casing, o.edges);
   b.file = path;
   b.surface_samples = surface_samples(faces, *surfaces.side, spans);
   return b;

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "src/blade/camber_edges.hpp"
 #include "src/blade/meridional_net.hpp"
 #include "src/blade_import/imported_blade.hpp"
 #include "src/cad_import/cad_shape_reader.hpp"
@@ -23,6 +24,7 @@ struct CadCutOptions {
   double tolerance = 0.01;    // mm: blade.import.tolerance (gaps between faces, end faces, reach)
   double chord_error = 0.001; // mm: sampling of the cut outlines
   int face_samples = 4000;    // grid points over all faces (about)
+  blade::EdgeRule edges = blade::EdgeRule::CentreLine;  // LE / TE of each cut (blade.import.edges)
 };
 
 /// `kind`, `hub`, `casing` as blade_from_tables takes them; `channel`: the meridional flow path's

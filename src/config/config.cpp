@@ -241,7 +241,7 @@ void read_import_files(const Field& f, const std::filesystem::path& base_dir, Bl
 
 // blade.import: the format, the options and the file(s).
 void import_blade(const Field& f, const std::filesystem::path& base_dir, Config& c) {
-  f.expect_object({"format", "file", "files", "frame", "unit", "tolerance", "spans", "samples_per_side"});
+  f.expect_object({"format", "file", "files", "frame", "unit", "tolerance", "spans", "samples_per_side", "edges"});
   static const char* formats[] = {"geomturbo", "sections", "step", "iges"};
   BladeImport im;
   im.format = formats[f.at("format").choice({"geomturbo", "sections", "step", "iges"})];
@@ -251,6 +251,12 @@ void import_blade(const Field& f, const std::filesystem::path& base_dir, Config&
   im.options.samples_per_side = f.integer_or("samples_per_side", 0, 0, 2000);
   if (im.options.samples_per_side > 0 && im.options.samples_per_side < 8)
     fail(f.path() + ".samples_per_side", "must be 0 (automatic) or in [8, 2000]");
+  if (f.has("edges")) {
+    if (im.format == "geomturbo")
+      fail(f.path() + ".edges", "is only for \"sections\", \"step\" and \"iges\" (a geomTurbo file's sides give its LE and TE)");
+    im.options.edges = f.at("edges").choice({"centre_line", "camber_line"}) == 0 ? blade::EdgeRule::CentreLine
+                                                                               : blade::EdgeRule::CamberLine;
+  }
   read_import_files(f, base_dir, im);
   im.cuts = blade_import::cut_count(im.options, im.blade ? im.blade->sections.size() : im.tables.size());
   c.blade_import = std::move(im);

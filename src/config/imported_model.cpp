@@ -29,12 +29,13 @@ std::shared_ptr<const blade_import::ImportedBlade> imported_blade(const Config& 
     cad_import::CadCutOptions o;
     o.cuts = im.cuts;
     o.tolerance = im.options.tolerance;
+    o.edges = im.options.edges;
     const auto* m = std::get_if<blade::MeridionalFlowPath>(&config.blade.flow_path);
     return std::make_shared<const blade_import::ImportedBlade>(cad_import::read_cad_blade(
         im.files[0], im.format == "step" ? cad_import::CadFormat::Step : cad_import::CadFormat::Iges, kind, hub, casing,
         m ? &m->net : nullptr, o));
   }
-  return std::make_shared<const blade_import::ImportedBlade>(blade_import::blade_from_tables(im.tables, kind, hub, casing));
+  return std::make_shared<const blade_import::ImportedBlade>(blade_import::blade_from_tables(im.tables, kind, hub, casing, im.options.edges));
 }
 
 }  // namespace
