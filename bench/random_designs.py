@@ -28,7 +28,7 @@ variants are all refused shows nothing).
 Usage: random_designs.py --binary build/coolinggen [--count 200] [--seed 1] [--jobs 2] [--light]
                          [--timeout 900] [--keep DIR] [--min-built 0.5]
 --light: film rows and showerhead over 5 % of the span, coarser turbulator/slot/pin pitches (a build
-takes a few seconds; CI runs --count 10 --light).
+takes a few seconds; CI runs --count 6 --light --seed 3).
 """
 import argparse
 import concurrent.futures

@@ -6,6 +6,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include "acceptance/handoff_checks.hpp"
+#include "acceptance/import_round_trip.hpp"
 #include "acceptance/report_page_checks.hpp"
 #include "acceptance/network_checks.hpp"
 
@@ -42,3 +43,10 @@ BOOST_AUTO_TEST_CASE(network_deck_converges_in_ccx_and_conserves_mass) {
 BOOST_AUTO_TEST_CASE(pin_banks_in_the_deck_follow_metzger) { test::check_pin_banks(build(), 18); }
 // The example's slots are 0.4 mm high (cooling.core.trailing_edge.slot_height).
 BOOST_AUTO_TEST_CASE(film_holes_csv_on_the_outer_wall_along_the_cylinders) { test::check_film_holes_csv(build(), 153, 0.4); }
+
+// Round trip with cooling through the uncooled blade's named STEP file (acceptance/import_round_trip.hpp;
+// data/examples/hpt_rotor.json is the built-in example): the 15 cuts' LE and TE found on the camber line;
+// the part's feature names are the built-in build's.
+BOOST_AUTO_TEST_CASE(step_round_trip_cools_the_same) {
+  test::expect_round_trip_cools_the_same(build(), "hpt_rotor.json", test::ImportVia::Step, "camber_line");
+}

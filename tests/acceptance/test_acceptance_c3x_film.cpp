@@ -5,7 +5,6 @@
 #include <boost/test/unit_test.hpp>
 
 #include "acceptance/handoff_checks.hpp"
-#include "acceptance/import_round_trip.hpp"
 #include "acceptance/report_page_checks.hpp"
 #include "acceptance/network_checks.hpp"
 
@@ -39,8 +38,3 @@ BOOST_AUTO_TEST_CASE(network_deck_converges_in_ccx_and_conserves_mass) {
 }
 BOOST_AUTO_TEST_CASE(film_holes_csv_on_the_outer_wall_along_the_cylinders) { test::check_film_holes_csv(build(), 83); }
 BOOST_AUTO_TEST_CASE(network_station_areas_equal_occt_plane_sections) { test::check_straight_station_areas(build(), 76.2); }
-
-// Round trip with cooling through 3D section tables (x y z, mm) of the vane's sections.
-BOOST_AUTO_TEST_CASE(section_tables_round_trip_cools_the_same) {
-  test::expect_round_trip_cools_the_same(build(), "c3x_film_vane.json", test::ImportVia::Tables);
-}

@@ -257,7 +257,7 @@ BOOST_AUTO_TEST_CASE(schema_documents_the_fields) {
   document_keys(doc, keys);
   for (const char* k : {"file", "values", "unit", "le_index", "te_index", "suction_side", "rotation_deg", "scale", "offset",
                         "theta_deg", "stations", "samples", "points_per_side", "product_name", "$schema", "span", "points",
-                        "formats", "files", "frame", "tolerance", "spans", "samples_per_side"})
+                        "formats", "files", "frame", "tolerance", "spans", "samples_per_side", "edges"})
     keys.insert(k);
   for (const auto& k : keys) BOOST_TEST(names.count(k) == 1u, "schema lacks " << k);
 }
@@ -420,4 +420,16 @@ BOOST_AUTO_TEST_CASE(config_file_errors) {
   BOOST_TEST(message(dir.path) == "config: " + dir.path.string() + " is a directory, not a config file (it contains a.json)");
   BOOST_TEST(message(dir.path / "none.json") == "config: " + (dir.path / "none.json").string() + " does not exist");
   BOOST_TEST(message(dir.path / "a.json") == "units: missing (required)");
+}
+
+// blade.import.edges chooses the LE / TE rule of outlines without sides; a geomTurbo file's sides give
+// them, so the field is refused there (before the file is read), naming the field and the formats.
+BOOST_AUTO_TEST_CASE(import_edges_only_without_sides) {
+  const std::string e = text_error(
+      R"({"units": "mm", "blade": {"import": {"format": "geomturbo", "file": "a.geomTurbo", "edges": "camber_line"}}})");
+  BOOST_TEST(e.rfind("blade.import.edges: is only for \"sections\", \"step\" and \"iges\"", 0) == 0u, e);
+  const std::string bad = text_error(
+      R"({"units": "mm", "flow_path": {"span": 10}, "blade": {"import": {"format": "step", "file": "a.step", "edges": "middle"}}})");
+  BOOST_TEST(bad.rfind("blade.import.edges:", 0) == 0u, bad);
+  BOOST_TEST(bad.find("camber_line") != std::string::npos, bad);
 }
