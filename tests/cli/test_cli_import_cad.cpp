@@ -15,6 +15,7 @@
 #include <BRepGProp.hxx>
 #include <GProp_GProps.hxx>
 #include <IGESControl_Writer.hxx>
+#include <Interface_Static.hxx>
 #include <STEPControl_Writer.hxx>
 #include <ShapeUpgrade_ShapeDivideArea.hxx>
 #include <TopExp_Explorer.hxx>
@@ -56,10 +57,11 @@ int face_count(const TopoDS_Shape& s) {
   return n;
 }
 
-enum class As { NamedStep, SplitStep, Iges, WallSurface };
+enum class As { NamedStep, SplitStep, Iges, WallSurface, MetreStep };
 
 // The uncooled blade solid of `model` written to `file` as `as` says (WallSurface: only the wall's
-// surface as one face, over-built past hub and casing as aero tools give it); returns the faces written.
+// surface as one face, over-built past hub and casing as aero tools give it; MetreStep: a plain STEP
+// whose length unit is the metre); returns the faces written.
 int write_blade(const blade::BladeModel& model, As as, const fs::path& file) {
   if (as == As::WallSurface) {
     STEPControl_Writer w;
@@ -71,6 +73,21 @@ int write_blade(const blade::BladeModel& model, As as, const fs::path& file) {
   const brep::BladeSolid solid = brep::build_blade_solid(model);
   if (as == As::NamedStep) {
     io::write_step(file, solid.solid, solid.faces);
+    return face_count(solid.solid);
+  }
+  if (as == As::MetreStep) {
+    // OCCT 7.6's writer labels the numbers with write.step.unit without converting them (a 30 mm box
+    // came back 30 m long), so the solid is scaled to metres first, as a CAD system in metres has it.
+    gp_Trsf to_metres;
+    to_metres.SetScale(gp_Pnt(0, 0, 0), 1e-3);
+    const TopoDS_Shape metres = BRepBuilderAPI_Transform(solid.solid, to_metres, true).Shape();
+    STEPControl_Writer w;  // (its first construction loads the defaults)
+    Interface_Static::SetCVal("write.step.unit", "M");  // global: set back below
+    const bool done = w.Transfer(metres, STEPControl_AsIs) == IFSelect_RetDone && w.Write(file.c_str()) == IFSelect_RetDone;
+    Interface_Static::SetCVal("write.step.unit", "MM");
+    BOOST_TEST_REQUIRE(done);
+    const std::string text = test::read_text(file);
+    BOOST_TEST_REQUIRE((text.find("SI_UNIT($,.METRE.)") != std::string::npos), "the file's length unit is the metre");
     return face_count(solid.solid);
   }
   if (as == As::Iges) {
@@ -153,6 +170,9 @@ BOOST_AUTO_TEST_CASE(rotor_split_step_without_names) { round_trip(config::builti
 BOOST_AUTO_TEST_CASE(rotor_iges_faces) { round_trip(config::builtin_example_config(), As::Iges, "rotor_iges"); }
 
 BOOST_AUTO_TEST_CASE(c3x_cascade_iges_faces) { round_trip(c3x(), As::Iges, "c3x_iges"); }
+
+// A STEP file in metres (OCCT's reader scales it to the session's millimetres): the same blade.
+BOOST_AUTO_TEST_CASE(c3x_step_in_metres) { round_trip(c3x(), As::MetreStep, "c3x_metre_step"); }
 
 // The usual aero hand-over: the wall surface alone, reaching past hub and casing (no end faces).
 BOOST_AUTO_TEST_CASE(c3x_wall_surface_past_hub_and_casing) { round_trip(c3x(), As::WallSurface, "c3x_wall_surface"); }
