@@ -23,9 +23,9 @@ int faces_starting(const std::string& prefix) {
 
 BOOST_AUTO_TEST_CASE(step_one_valid_named_solid) { test::check_step(build()); }
 
-// The cooling of the config is all there: two ribs, two film rows, tip cap, hub floor, inlets.
+// The cooling of the config is all there: two ribs, two film rows, tip cap, hub floor, inlets, TE slots.
 BOOST_AUTO_TEST_CASE(cooled_with_every_feature) {
-  for (const char* f : {"rib_1", "rib_2", "film_row_1_hole", "film_row_2_hole", "tip_cap", "hub_floor", "inlet_"})
+  for (const char* f : {"rib_1", "rib_2", "film_row_1_hole", "film_row_2_hole", "tip_cap", "hub_floor", "inlet_", "te_slot_"})
     BOOST_TEST(faces_starting(f) > 0, f);
 }
 
