@@ -170,20 +170,12 @@ double camber_end(const BSplineCurve<2>& curve, double apex_param, const EdgeCir
   return curve.check_param(param);
 }
 
-double signed_area(const BSplineCurve<2>& curve) {
-  const std::vector<double> u = detail::sample_params(curve, 8);
-  double a = 0;
-  for (std::size_t k = 0; k + 1 < u.size(); ++k) {
-    const Eigen::Vector2d p = curve.point(u[k]), q = curve.point(u[k + 1]);
-    a += p.x() * q.y() - q.x() * p.y();
-  }
-  return a / 2;
-}
-
 }  // namespace
 
 LeadingTrailingEdge camber_edge_points(const BSplineCurve<2>& curve, const LeadingTrailingEdge& centre_line) {
-  const double orientation = signed_area(curve) > 0 ? 1.0 : -1.0;  // inward = left of the tangent when CCW
+  std::vector<Eigen::Vector2d> outline;
+  for (const double u : detail::sample_params(curve, 8)) outline.push_back(curve.point(u));
+  const double orientation = detail::polygon_signed_area(outline) > 0 ? 1.0 : -1.0;  // inward: left of the tangent when CCW
   const Eigen::Vector2d out = (centre_line.le_circle.centre - centre_line.te_circle.centre).normalized();
   LeadingTrailingEdge r = centre_line;
   r.le_param = camber_end(curve, centre_line.le_param, centre_line.le_circle, out, orientation, "LE");

@@ -58,4 +58,13 @@ std::vector<double> sample_params(const BSplineCurve<2>& curve, int per_span) {
   return u;
 }
 
+double polygon_signed_area(const std::vector<Eigen::Vector2d>& p) {
+  double a = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Eigen::Vector2d& q = p[(i + 1) % p.size()];
+    a += p[i].x() * q.y() - q.x() * p[i].y();
+  }
+  return a / 2;
+}
+
 }  // namespace cg::blade::detail

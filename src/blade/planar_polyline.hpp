@@ -26,6 +26,9 @@ std::vector<SegmentHit> polyline_crossings(const std::vector<Eigen::Vector2d>& a
 /// otherwise writes the first offending edge pair to edge_a, edge_b.
 bool polygon_is_simple(const std::vector<Eigen::Vector2d>& points, int& edge_a, int& edge_b);
 
+/// Signed area of the closed polygon (last point joined to the first): > 0 when counter-clockwise.
+double polygon_signed_area(const std::vector<Eigen::Vector2d>& points);
+
 /// Parameters sampling the curve with `per_span` points per non-empty knot span (ends included).
 std::vector<double> sample_params(const BSplineCurve<2>& curve, int per_span);
 

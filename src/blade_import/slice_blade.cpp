@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "src/blade/planar_polyline.hpp"
 #include "src/blade/section_family.hpp"
 #include "src/blade_import/channel_side.hpp"
 #include "src/core/constants.hpp"
@@ -97,15 +98,6 @@ double cut_tau(const ImportedBlade& b, const InputSurface& surf, ChannelSide& si
   return (a * fc - c * fa) / (fc - fa);
 }
 
-double signed_area(const std::vector<Eigen::Vector2d>& p) {
-  double a = 0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const Eigen::Vector2d& q = p[(i + 1) % p.size()];
-    a += p[i].x() * q.y() - q.x() * p[i].y();
-  }
-  return a / 2;
-}
-
 // A cut in its section frame as a point section, placed back where it was cut.
 // The LE and TE are the file's: where its suction and pressure sides meet (samples 0 and M).
 blade::BladeSectionDefinition section_of_cut(const ImportedBlade& b, std::vector<Eigen::Vector2d> ab, double s,
@@ -115,7 +107,7 @@ blade::BladeSectionDefinition section_of_cut(const ImportedBlade& b, std::vector
   p.le_index = 0;
   p.te_index = static_cast<int>(ab.size() / 2);
   p.points = std::move(ab);
-  p.suction_side = signed_area(p.points) > 0 ? blade::SuctionSide::CounterClockwise : blade::SuctionSide::Clockwise;
+  p.suction_side = blade::detail::polygon_signed_area(p.points) > 0 ? blade::SuctionSide::CounterClockwise : blade::SuctionSide::Clockwise;
   blade::SectionProfile raw;
   try {
     raw = blade::section_from_points(p);
