@@ -17,8 +17,8 @@
 // normal has exactly these), 12 chords from R / 8 to 1.5 R deep, refitted six times in a frame turned to
 // the line. The quadratic is continued outwards until it meets the profile: that point is the LE (TE).
 // On the built-in rotor's three parametric sections (dense tables of them) the LE found lies within
-// 0.036 mm and the TE within 0.0002 mm of the construction's (test_section.cpp); the centre-line rule's
-// are 1.4-2.5 mm and 0.28-0.46 mm away.
+// 0.036 mm and the TE within 0.0002 mm of the construction's (tests/blade/test_sections.cpp); the
+// centre-line rule's are 1.4-2.5 mm and 0.28-0.46 mm away.
 #include "src/blade/leading_edge.hpp"
 
 namespace cg::blade {
