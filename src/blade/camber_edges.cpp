@@ -15,6 +15,26 @@
 namespace cg::blade {
 namespace {
 
+// The whole profile sampled once (32 points per knot span, no repeat), with unit tangents and its
+// orientation (+1 counter-clockwise: the inward normal is left of the tangent).
+struct Outline {
+  std::vector<Eigen::Vector2d> p, tangent;
+  double orientation = 1;
+};
+
+Outline outline_of(const BSplineCurve<2>& curve) {
+  const std::vector<double> u = detail::sample_params(curve, 32);
+  Outline o;
+  for (std::size_t k = 0; k + 1 < u.size(); ++k) {  // the last parameter closes the loop
+    Eigen::Vector2d d[2];
+    curve.derivatives(u[k], 1, d);
+    o.p.push_back(d[0]);
+    o.tangent.push_back(d[1].normalized());
+  }
+  o.orientation = detail::polygon_signed_area(o.p) > 0 ? 1.0 : -1.0;
+  return o;
+}
+
 // The samples of one edge's neighbourhood: the contiguous run around the edge point within `reach` of
 // the edge circle's centre, at least `spacing` apart, with inward normals and arc lengths along the run.
 struct EdgeRun {
@@ -22,20 +42,15 @@ struct EdgeRun {
   std::vector<double> s;
 };
 
-EdgeRun edge_run(const BSplineCurve<2>& curve, double apex_param, const Eigen::Vector2d& centre, double reach,
-                 double spacing, double orientation) {
-  const std::vector<double> u = detail::sample_params(curve, 32);
-  const auto n = static_cast<std::ptrdiff_t>(u.size()) - 1;  // the last parameter closes the loop
-  std::vector<Eigen::Vector2d> pt(static_cast<std::size_t>(n)), tan(static_cast<std::size_t>(n));
+EdgeRun edge_run(const Outline& outline, const Eigen::Vector2d& apex_point, const Eigen::Vector2d& centre, double reach,
+                 double spacing) {
+  const std::vector<Eigen::Vector2d>& pt = outline.p;
+  const std::vector<Eigen::Vector2d>& tan = outline.tangent;
+  const auto n = static_cast<std::ptrdiff_t>(pt.size());
   std::ptrdiff_t apex = 0;
-  const Eigen::Vector2d a = curve.point(apex_param);
-  for (std::ptrdiff_t k = 0; k < n; ++k) {
-    Eigen::Vector2d d[2];
-    curve.derivatives(u[static_cast<std::size_t>(k)], 1, d);
-    pt[static_cast<std::size_t>(k)] = d[0];
-    tan[static_cast<std::size_t>(k)] = d[1].normalized();
-    if ((d[0] - a).squaredNorm() < (pt[static_cast<std::size_t>(apex)] - a).squaredNorm()) apex = k;
-  }
+  for (std::ptrdiff_t k = 1; k < n; ++k)
+    if ((pt[static_cast<std::size_t>(k)] - apex_point).squaredNorm() < (pt[static_cast<std::size_t>(apex)] - apex_point).squaredNorm())
+      apex = k;
   const auto idx = [&](std::ptrdiff_t k) { return static_cast<std::size_t>((k % n + n) % n); };
   auto inside = [&](std::ptrdiff_t k) { return (pt[idx(k)] - centre).norm() < reach; };
   std::ptrdiff_t lo = apex, hi = apex;
@@ -52,7 +67,7 @@ EdgeRun edge_run(const BSplineCurve<2>& curve, double apex_param, const Eigen::V
     }
     const Eigen::Vector2d& t = tan[idx(k)];
     r.p.push_back(q);
-    r.inward.push_back(orientation * Eigen::Vector2d(-t.y(), t.x()));
+    r.inward.push_back(outline.orientation * Eigen::Vector2d(-t.y(), t.x()));
     r.s.push_back(s);
   }
   return r;
@@ -102,11 +117,11 @@ struct EdgeCamber {
 }
 
 // First estimate: the medial axis, the centres of the inscribed circles up to 3 radii deep.
-EdgeCamber medial_camber(const BSplineCurve<2>& curve, double apex_param, const EdgeCircle& circle,
-                         const Eigen::Vector2d& out, double orientation, const char* name) {
+EdgeCamber medial_camber(const Outline& outline, const Eigen::Vector2d& apex, const EdgeCircle& circle,
+                         const Eigen::Vector2d& out, const char* name) {
   const double R = circle.radius;
   EdgeCamber cam{circle.centre, out, Eigen::Vector2d(-out.y(), out.x())};
-  const EdgeRun run = edge_run(curve, apex_param, cam.c, 4 * R, R / 40, orientation);
+  const EdgeRun run = edge_run(outline, apex, cam.c, 4 * R, R / 40);
   std::vector<Eigen::Vector2d> centres;
   double deepest = 0;
   for (std::size_t i = 0; i < run.p.size(); i += 4) {
@@ -150,10 +165,10 @@ void refine_by_normal_chords(const BSplineCurve<2>& curve, EdgeCamber& cam, doub
 
 // The parameter where the camber line of the edge with circle `circle` and outward direction `out`
 // meets the profile.
-double camber_end(const BSplineCurve<2>& curve, double apex_param, const EdgeCircle& circle, const Eigen::Vector2d& out,
-                  double orientation, const char* name) {
+double camber_end(const BSplineCurve<2>& curve, const Outline& outline, double apex_param, const EdgeCircle& circle,
+                  const Eigen::Vector2d& out, const char* name) {
   const double R = circle.radius;
-  EdgeCamber cam = medial_camber(curve, apex_param, circle, out, orientation, name);
+  EdgeCamber cam = medial_camber(outline, curve.point(apex_param), circle, out, name);
   refine_by_normal_chords(curve, cam, R, name);
   // The line from cam.at(0) through cam.at(x) meets the profile at depth x' (< 0); at the fixed point
   // x' = x the hit is on the camber line itself.
@@ -173,13 +188,11 @@ double camber_end(const BSplineCurve<2>& curve, double apex_param, const EdgeCir
 }  // namespace
 
 LeadingTrailingEdge camber_edge_points(const BSplineCurve<2>& curve, const LeadingTrailingEdge& centre_line) {
-  std::vector<Eigen::Vector2d> outline;
-  for (const double u : detail::sample_params(curve, 8)) outline.push_back(curve.point(u));
-  const double orientation = detail::polygon_signed_area(outline) > 0 ? 1.0 : -1.0;  // inward: left of the tangent when CCW
+  const Outline outline = outline_of(curve);
   const Eigen::Vector2d out = (centre_line.le_circle.centre - centre_line.te_circle.centre).normalized();
   LeadingTrailingEdge r = centre_line;
-  r.le_param = camber_end(curve, centre_line.le_param, centre_line.le_circle, out, orientation, "LE");
-  r.te_param = camber_end(curve, centre_line.te_param, centre_line.te_circle, -out, orientation, "TE");
+  r.le_param = camber_end(curve, outline, centre_line.le_param, centre_line.le_circle, out, "LE");
+  r.te_param = camber_end(curve, outline, centre_line.te_param, centre_line.te_circle, -out, "TE");
   return r;
 }
 
