@@ -183,6 +183,34 @@ double side_length(const blade::BladeCoordinates& coords, double span, bool suct
 }
 
 // Ribs inside the core and apart from each other, on a few spans.
+// A fillet of radius r where a rib side meets a wall at angle a runs r cot(a / 2) along that side (r at
+// a right angle, 11 r at 5 deg); both ends' fillets on one side must fit in the rib's length between
+// the walls (the rib from wall point to wall point at its chords, the walls' chordwise tangents there).
+void check_rib_fillet_run(const blade::BladeCoordinates& coords, const blade::ThicknessField& wall, const RibDefinition& r,
+                          std::size_t i, double s) {
+  auto at = [&](double c) { return blade::inner_wall_point(coords, wall, s, c); };
+  auto tangent = [&](double c) {
+    const double h = 1e-5;
+    return Vec3((at(c + h) - at(c - h)).normalized());
+  };
+  const Vec3 a = at(r.suction_chord), b = at(r.pressure_chord);
+  const double length = (b - a).norm();
+  const Vec3 d = (b - a) / length, ta = tangent(r.suction_chord), tb0 = tangent(r.pressure_chord);
+  const Vec3 e = (ta - ta.dot(d) * d).normalized();  // the side of the rib the suction wall's tangent leans to
+  const Vec3 tb = tb0.dot(e) >= 0 ? tb0 : Vec3(-tb0);
+  auto angle = [](const Vec3& u, const Vec3& v) { return std::acos(std::clamp(u.dot(v), -1.0, 1.0)); };
+  const double as = angle(d, ta), ap = angle(-d, tb);  // on side +e; 180 deg minus these on side -e
+  const double run = std::max(1 / std::tan(0.5 * as) + 1 / std::tan(0.5 * ap), std::tan(0.5 * as) + std::tan(0.5 * ap));
+  if (std::isfinite(run) && r.fillet_radius * run < length) return;
+  const ValueLimitText t = format_value_limit(r.fillet_radius, std::isfinite(run) ? length / run : 0.0, Allowed::below);
+  throw PassageInputError(rib_field(i, "fillet_radius"),
+                          "rib " + std::to_string(i + 1) + " meets the walls at " + format_number(std::min(as, kPi - as) * 180 / kPi) +
+                              " and " + format_number(std::min(ap, kPi - ap) * 180 / kPi) + " deg at span " + format_number(s) +
+                              ": fillets of radius " + t.value + " mm at both ends would run " +
+                              format_number(r.fillet_radius * run) + " mm along a side " + format_number(length) +
+                              " mm long; must be < " + t.limit + " mm here (or move the rib to meet the walls more squarely)");
+}
+
 void check_rib_placement(const blade::BladeCoordinates& coords, const CoreDefinition& def) {
   const double spans[] = {0.0, 0.25, 0.5, 0.75, 1.0};
   for (double s : spans) {
@@ -190,19 +218,6 @@ void check_rib_placement(const blade::BladeCoordinates& coords, const CoreDefini
     const double ls = side_length(coords, s, true), lp = side_length(coords, s, false);
     for (std::size_t i = 0; i < def.ribs.size(); ++i) {
       const RibDefinition& r = def.ribs[i];
-      // A fillet runs along the rib's side faces from the suction to the pressure wall and meets the
-      // fillet of the other end there: each takes about its radius of the rib's length (r cot(theta / 2)
-      // at a rib-to-wall angle theta; at least r / 2 for theta up to 127 deg), so a rib shorter than its
-      // fillet radius cannot take the fillets.
-      const double length = (blade::inner_wall_point(coords, def.wall_thickness, s, r.suction_chord) -
-                             blade::inner_wall_point(coords, def.wall_thickness, s, r.pressure_chord)).norm();
-      if (r.fillet_radius > 0 && length < r.fillet_radius) {
-        const ValueLimitText t = format_value_limit(r.fillet_radius, length, Allowed::below);
-        throw PassageInputError(rib_field(i, "fillet_radius"),
-                                "rib " + std::to_string(i + 1) + " is " + t.limit + " mm long between the walls at span " +
-                                    format_number(s) + ", too short for fillets of radius " + t.value +
-                                    " mm at both of its ends: must be < " + t.limit + " mm");
-      }
       const double reach = 0.5 * r.thickness + r.fillet_radius + 0.1;  // mm the rib needs beyond its chord
       if (r.suction_chord + reach / ls >= cr.suction_chord)
         throw PassageInputError(rib_field(i, "suction_chord"),
@@ -218,6 +233,7 @@ void check_rib_placement(const blade::BladeCoordinates& coords, const CoreDefini
         throw PassageInputError(rib_field(i, r.suction_chord - reach / ls <= 0 ? "suction_chord" : "pressure_chord"),
                                 "rib " + std::to_string(i + 1) + " with its thickness and fillets reaches over the "
                                 "leading edge at span " + format_number(s));
+      if (r.fillet_radius > 0) check_rib_fillet_run(coords, def.wall_thickness, r, i, s);
       if (i == 0) continue;
       const RibDefinition& q = def.ribs[i - 1];
       const double need = std::max(r.thickness, q.thickness);
@@ -404,13 +420,10 @@ Vec3 chamber_point(const blade::BladeCoordinates& coords, const blade::Thickness
 CoreBuild build_core_walls(const blade::BladeModel& model, const CoreDefinition& def) {
   Stopwatch sw;
   CoreBuild out;
-  check_definition(def);
   const blade::BladeCoordinates coords(model);
 
-  // 1. Inner wall and core solid.
+  // 1. Inner wall and core solid (the definition checked by check_core_definition).
   try {
-    check_rib_placement(coords, def);
-    check_turnarounds(model, coords, def);
     out.inner_wall = blade::build_inner_wall(model, def.wall_thickness, inner_wall_options(def));
   } catch (const blade::InnerWallError& e) {
     throw PassageInputError("core.wall_thickness", e.what());
@@ -788,6 +801,7 @@ void check_inlet_rims(const CoreBuild& core) {
 }
 
 CoreBuild build_core_tools(const blade::BladeModel& model, const CoreDefinition& def) {
+  check_core_definition(model, def);
   CoreBuild out = build_core_walls(model, def);
   build_core_cells(model, def, out);
   check_inlet_rims(out);

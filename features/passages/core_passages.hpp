@@ -82,11 +82,12 @@ struct CoreBuild {
 CoreBuild build_core_tools(const blade::BladeModel& model, const CoreDefinition& def);
 
 /// build_core_tools in three parts, so that work which needs only some of it can run alongside the
-/// rest (build_passages): build_core_walls checks `def` and builds the inner wall and the closed end
-/// walls (inner_wall, hub_floor, tip_cap), the chambers' extents (chambers, without volumes) and places
-/// the turnaround ends by their gaps (stage "inner_wall"; no solid: the plan runs it too), which is all
-/// the turbulator, pin and slot tools and the film holes' target need; build_core_cells adds the core solid, ribs, cells, fillets, names and inlets to `core`
-/// (the walls stay as they are: a copy of `core` taken before it is as good for the wall-feature tools);
+/// rest (build_passages): build_core_walls builds, for a `def` that check_core_definition passed (the
+/// plan runs both, as build_core_tools does), the inner wall, the closed end walls (inner_wall,
+/// hub_floor, tip_cap) and the chambers' extents (chambers, without volumes) (stage "inner_wall"; no
+/// solid), which is all the turbulator, pin and slot tools and the film holes' target need;
+/// build_core_cells adds the core solid, ribs, cells, fillets, names and inlets to `core` (the walls
+/// stay as they are: a copy of `core` taken before it is as good for the wall-feature tools);
 /// check_inlet_rims throws the PassageInputError of the first inlet whose rim leaves its chamber (point
 /// classification against the chamber solids only: safe beside booleans that read them).
 CoreBuild build_core_walls(const blade::BladeModel& model, const CoreDefinition& def);

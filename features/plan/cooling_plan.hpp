@@ -1,21 +1,21 @@
 #pragma once
 // The planning stage: every placement of the cooling features that the build knows before its first
 // boolean, from the blade model and the feature definitions alone, and every check that needs no
-// boolean run on it. `coolinggen validate` is the plan; `coolinggen build` is the plan, then the
-// booleans (src/pipeline/build.hpp) on what the plan placed (the core's walls and turnaround ends, the
-// film cavity and every film hole: build_passages and build_film_cooling take them, nothing is placed
-// twice), so what the plan refuses the build refuses, naming the same field:
-//  - passages: the definition checks (validate_passages: ribs on five spans, inlet sizes, wall
-//    features' definitions, trailing-edge placement);
-//  - core (build_core_walls): every turnaround end placed by its gap against its end wall (a gap the
-//    span cannot take; before the fit, also in validate_passages), the inner wall, the closed end walls
-//    and the chambers' chordwise extents;
-//  - turbulators (build_turbulators' placement on those walls): spans, ends between the ribs' fillets,
-//    height against the chamber (the tools and their volumes are the build's);
+// boolean run on it, in this order (cheaper parts first). `coolinggen validate` is the plan;
+// `coolinggen build` is the plan, then the booleans (src/pipeline/build.hpp) on what the plan placed
+// (the core's walls and turnaround ends, the film cavity and every film hole: build_passages and
+// build_film_cooling take them, nothing is placed twice), so what the plan refuses the build refuses,
+// naming the same field:
+//  - passages: the definition checks (validate_passages: ribs on five spans, every turnaround end
+//    placed by its gap against its end wall (a gap the span cannot take), inlet sizes, wall features'
+//    definitions, trailing-edge placement), before any fit;
+//  - core (build_core_walls): the inner wall, the closed end walls and the chambers' chordwise extents;
 //  - film (plan_film on film_cavity_of_core): each insert's chamber and input, the reach an insert
 //    leaves the hole tools, every film and showerhead hole placed on its row with its axis, exit, the
 //    wall it crosses and the chamber it reaches, its tool extent, and the ligaments to the ribs (mid-surface
 //    +- thickness / 2 and the fillets' width), to the end walls and to the other holes.
+//  - turbulators (build_turbulators' placement on those walls): spans, ends between the ribs' fillets,
+//    height against the chamber (the tools and their volumes are the build's);
 //  - trailing edge (plan_trailing_edge on those walls): the slots' layout between the end walls, each
 //    slot's lip, floor and inlet station in the last chamber, the walls left beside it, its widths; the
 //    pins' stations clear of the last rib and their axes across the chamber;
@@ -55,7 +55,7 @@ struct CoolingPlan {
   /// film input or without a core. The film stage builds on both (build_film_cooling).
   std::optional<FilmCavity> film_cavity;
   std::optional<FilmPlan> film;
-  /// Seconds per part ("passages", "core", "wall_features", "film").
+  /// Seconds per part ("passages", "core", "film", "wall_features").
   std::vector<std::pair<std::string, double>> seconds;
 };
 

@@ -27,11 +27,14 @@ using Intervals = std::vector<std::pair<double, double>>;
 
 /// Ray casting against the part of a surface near a segment. A ray caster visits every Bézier patch of
 /// its surface per ray (the blade walls have hundreds), while a feature's lines meet a few: each query
-/// goes to a caster of the rectangle of patches whose pole boxes reach the segment's box (grown by one
+/// goes to a caster of the rectangle of patches whose pole boxes the segment passes through (grown by one
 /// patch all round), cached by rectangle, so the lines of one tool share one small caster. The patches
 /// are the surface's own Bézier patches (the sub-surface is their Bézier form, same geometry), and a
-/// crossing lies in the convex hull of the poles of its patch, so no crossing is lost; queries whose
-/// patches wrap over a periodic seam, or cover most of the surface, use the whole surface.
+/// crossing lies in the convex hull of the poles of its patch, so no crossing is lost. A rectangle may
+/// run over a periodic seam (a line across the trailing edge meets both sides of the seam): its
+/// patches past the seam carry parameters one period on, so a hit's u (v) may exceed the surface's
+/// last_u (last_v) by less than a period (evaluation wraps it). Queries whose patches cover most of the
+/// surface use the whole surface.
 class LocalCaster {
  public:
   explicit LocalCaster(const BSplineSurface<3>& surface);
@@ -44,6 +47,7 @@ class LocalCaster {
   int pu_, pv_, cols_ = 0, rows_ = 0;
   bool periodic_u_, periodic_v_;
   double tol_;
+  double period_u_, period_v_;  // used where the direction is periodic
   std::vector<SurfaceBezierPatch<3>> patches_;  // u-major: column iu, row iv at iu * rows_ + iv
   RaySurfaceCaster full_;
   std::map<std::tuple<int, int, int, int>, std::unique_ptr<RaySurfaceCaster>> cache_;

@@ -38,20 +38,57 @@ double point_segment_distance(const Vec3& p, const Vec3& a, const Vec3& b, doubl
   return (a + t * ab - p).norm();
 }
 
-// Distance from p to the polyline and the chord coordinate of the closest point (chords linear per segment).
-double polyline_distance(const Vec3& p, const std::vector<Vec3>& pts, const std::vector<double>& chords,
-                         double& chord_at) {
-  double best = HUGE_VAL;
-  for (std::size_t k = 0; k + 1 < pts.size(); ++k) {
-    double t = 0;
-    const double d = point_segment_distance(p, pts[k], pts[k + 1], t);
-    if (d < best) {
-      best = d;
-      chord_at = chords[k] + t * (chords[k + 1] - chords[k]);
+// A polyline with chords linear per segment, in chunks of segments with bounding spheres, so a
+// distance query skips the chunks that cannot hold a closer segment.
+class ChordPolyline {
+ public:
+  ChordPolyline(std::vector<Vec3> pts, std::vector<double> chords) : pts_(std::move(pts)), chords_(std::move(chords)) {
+    for (std::size_t a = 0; a + 1 < pts_.size(); a += kChunk) {
+      const std::size_t b = std::min(a + kChunk, pts_.size() - 1);  // segments a .. b - 1
+      Vec3 c = Vec3::Zero();
+      for (std::size_t k = a; k <= b; ++k) c += pts_[k];
+      c /= static_cast<double>(b - a + 1);
+      double r = 0;
+      for (std::size_t k = a; k <= b; ++k) r = std::max(r, (pts_[k] - c).norm());
+      chunks_.push_back({a, b, c, r});
     }
   }
-  return best;
-}
+  /// Distance from p to the polyline and the chord coordinate of the closest point.
+  double distance(const Vec3& p, double& chord_at) const {
+    double best = HUGE_VAL;
+    auto visit = [&](const Chunk& ch) {
+      if ((p - ch.centre).norm() - ch.radius >= best) return;
+      for (std::size_t k = ch.first; k < ch.last; ++k) {
+        double t = 0;
+        const double d = point_segment_distance(p, pts_[k], pts_[k + 1], t);
+        if (d < best) {
+          best = d;
+          chord_at = chords_[k] + t * (chords_[k + 1] - chords_[k]);
+        }
+      }
+    };
+    // Successive queries move along the other side: the last closest chunk first.
+    visit(chunks_[last_]);
+    for (std::size_t i = 0; i < chunks_.size(); ++i) {
+      const double before = best;
+      if (i != last_) visit(chunks_[i]);
+      if (best < before) last_ = i;
+    }
+    return best;
+  }
+
+ private:
+  static constexpr std::size_t kChunk = 16;
+  struct Chunk {
+    std::size_t first, last;  // points first .. last
+    Vec3 centre;
+    double radius;
+  };
+  std::vector<Vec3> pts_;
+  std::vector<double> chords_;
+  std::vector<Chunk> chunks_;
+  mutable std::size_t last_ = 0;
+};
 
 struct SpanRange {
   double lo, hi;
@@ -79,6 +116,7 @@ InnerWallSection inner_wall_crease(const BladeCoordinates& coords, const Thickne
     pressure[k] = coords.frame(span, pc[k]).point;
     suction[k] = coords.frame(span, sc[k]).point;
   }
+  const ChordPolyline pressure_line(pressure, pc), suction_line(suction, sc);
   InnerWallSection out;
   out.span = out.pressure_span = span;
   // Walk the suction-side offset from the LE: the first point closer than t to the pressure side.
@@ -87,7 +125,7 @@ InnerWallSection inner_wall_crease(const BladeCoordinates& coords, const Thickne
   for (int i = 1; i <= n; ++i) {
     const Vec3 q = inner_wall_point(coords, thickness, span, sc[i]);
     double c_at = 0;
-    const double d = polyline_distance(q, pressure, pc, c_at);
+    const double d = pressure_line.distance(q, c_at);
     if (d < thickness.at(span, sc[i]) * (1 - kCloseMargin)) {
       hit = i;
       hit_pressure_chord = c_at;
@@ -107,12 +145,15 @@ InnerWallSection inner_wall_crease(const BladeCoordinates& coords, const Thickne
                              " mm leaves no core at span " + format_number(span) + " (the blade is thinner than twice the wall "
                              "thickness right behind the leading edge)",
                          span, sc[1]);
-  // Newton on F(c_s, c_p, s_p) = I(span, c_s) - I(s_p, c_p) = 0 with central-difference Jacobian.
+  // Newton on F(c_s, c_p, s_p) = I(span, c_s) - I(s_p, c_p) = 0 with central-difference Jacobian. Each
+  // new span costs a section (an arc-length table), so the span column is differenced at the first
+  // iterate only (s_p moves by little; the chord columns stay exact): one new span per iteration.
   auto I = [&](double s, double c) { return inner_wall_point(coords, thickness, s, c); };
   double cs = sc[hit] - 0.5 / n, cp = hit_pressure_chord, sp = span;
   const double h = 1e-6;
   bool converged = false;
   Vec3 F = Vec3::Zero();
+  Eigen::Matrix3d J;
   for (int it = 0; it < 40; ++it) {
     F = I(span, cs) - I(sp, cp);
     if (F.norm() < 1e-11) {
@@ -123,11 +164,12 @@ InnerWallSection inner_wall_crease(const BladeCoordinates& coords, const Thickne
       const double a = std::max(c - h, -1.0), b = std::min(c + h, 1.0);
       return Vec3((I(s, b) - I(s, a)) / (b - a));
     };
-    const double sa = std::max(sp - h, dom.lo), sb = std::min(sp + h, dom.hi);
-    Eigen::Matrix3d J;
     J.col(0) = dc(span, cs);
     J.col(1) = -dc(sp, cp);
-    J.col(2) = -(I(sb, cp) - I(sa, cp)) / (sb - sa);
+    if (it == 0) {
+      const double sa = std::max(sp - h, dom.lo), sb = std::min(sp + h, dom.hi);
+      J.col(2) = -(I(sb, cp) - I(sa, cp)) / (sb - sa);
+    }
     Vec3 step = J.fullPivLu().solve(-F);
     if (!step.allFinite()) break;
     const double limit = 0.02;  // chord units per step
@@ -147,7 +189,7 @@ InnerWallSection inner_wall_crease(const BladeCoordinates& coords, const Thickne
   for (int k = 1; k <= n && pc[k] > cp + 2.0 / n; ++k) {
     const Vec3 q = I(span, pc[k]);
     double c_at = 0;
-    const double d = polyline_distance(q, suction, sc, c_at);
+    const double d = suction_line.distance(q, c_at);
     if (d < thickness.at(span, pc[k]) * (1 - kCloseMargin))
       throw InnerWallError("inner wall: the wall thickness exceeds half the blade thickness at span " + format_number(span) +
                                ", pressure-side chord " + format_number(pc[k]) + " before the trailing-edge crossing at chord " +
@@ -174,6 +216,10 @@ struct Sample {
 };
 
 double smoothstep(double x) { return x * x * (3 - 2 * x); }
+
+// Part of the pressure half (from the crease) over which a section's span blends from the crease's
+// pressure span to its own.
+constexpr double kBlend = 0.25;
 
 // Exact inner-wall points of one span, sampled along the trimmed section.
 class ExactSection {
@@ -240,13 +286,14 @@ class ExactSection {
 
  private:
   // Foot point of position x: the pressure half blends its span from the crease's pressure span to
-  // the section span with zero slope at both ends, so the section stays smooth through the LE.
+  // the section span with zero slope at both ends (over kBlend of the half), so the section stays
+  // smooth; each blended sample costs a new span's arc-length table.
   Sample sample(const BladeCoordinates& coords, double x) const {
     Sample s;
     s.x = x;
     if (x <= 1) {
       s.chord = info.pressure_chord * (1 - x);
-      s.span = span_ + (info.pressure_span - span_) * (1 - smoothstep(x));
+      s.span = x >= kBlend ? span_ : span_ + (info.pressure_span - span_) * (1 - smoothstep(x / kBlend));
     } else {
       s.chord = info.suction_chord * (x - 1);
       s.span = span_;

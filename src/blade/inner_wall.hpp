@@ -18,7 +18,9 @@
 //    the TE (the loop) is dropped. A TE radius >= t gives no crossing: the inner wall then rounds the TE.
 //  - Each inner section runs from the crease over the pressure side, the LE and the suction side back
 //    to the crease (the outer wall's direction). The pressure half is taken at a span blended smoothly
-//    from span_p at the crease to the section's span at the LE, so every sample is an exact offset point.
+//    (C1) from span_p at the crease to the section's span a quarter of the way to the LE, so every
+//    sample is an exact offset point (and the rest of the half shares the section's span, whose
+//    arc-length table is then built once).
 //  - Sections are sampled adaptively (at most 2 degrees of normal turning per step), parametrised by
 //    normalised chord length, fitted by least squares (The NURBS Book 9.4.1) on ONE knot vector shared
 //    by all spans (refined until every section is within tol / 2 at its samples), and skinned across the
