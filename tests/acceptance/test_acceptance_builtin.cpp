@@ -4,6 +4,10 @@
 // headless Chromium (tests/acceptance/report_page_checks.hpp).
 #define BOOST_TEST_MODULE acceptance_builtin
 #include <boost/test/unit_test.hpp>
+#include <filesystem>
+#include <set>
+#include <string>
+#include <vector>
 
 #include "acceptance/handoff_checks.hpp"
 #include "acceptance/import_round_trip.hpp"
@@ -17,6 +21,38 @@ const test::ProductBuild& build() { return test::product_build(""); }
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(step_ap242_one_valid_named_solid) { test::check_step(build()); }
+
+// The hand-off outputs (README, Outputs) and nothing else, no temporary files (preview.png only when an
+// X display could be had); every check of report.json passed; the passage table (report.json
+// "sections", what sections.svg shows): all four chambers at every span, the film and showerhead holes
+// and TE slots crossing the cuts as holes, none of them a passage (issue 20).
+BOOST_AUTO_TEST_CASE(outputs_report_checks_and_passage_table) {
+  std::set<std::string> files;
+  for (const auto& e : std::filesystem::directory_iterator(build().dir)) files.insert(e.path().filename().string());
+  std::set<std::string> expected{"blade.step", "blade.igs",   "blade.brep",  "blade.stl", "blade.vtm", "blade_blade.vtp",
+                                 "blade.glb",  "sections.svg", "report.html", "report.json", "report.md",
+                                 // the coolant network: the built-in example has a "coolant" section
+                                 "network.json", "network.inp", "network_results.json", "film_holes.csv"};
+  if (files.count("preview.png")) expected.insert("preview.png");
+  BOOST_TEST(files == expected);
+  const nlohmann::json& report = build().report;
+  BOOST_TEST(report.at("valid").get<bool>());
+  BOOST_TEST(report.at("model").at("name").get<std::string>() == "hpt_rotor");
+  for (const auto& [name, c] : report.at("checks").items()) BOOST_TEST(c.at("passed").get<bool>(), name);
+  std::size_t holes = 0;
+  for (const auto& s : report.at("sections")) {
+    std::vector<std::string> names;
+    for (const auto& p : s.at("passages")) names.push_back(p.at("name").get<std::string>());
+    BOOST_TEST((names == std::vector<std::string>{"chamber_1", "chamber_2", "chamber_3", "chamber_4"}), "span " << s.at("span"));
+    for (const auto& h : s.at("holes")) {
+      const std::string n = h.at("name").get<std::string>();
+      BOOST_TEST((n.rfind("showerhead_", 0) == 0 || n.rfind("film_row_", 0) == 0 || n.rfind("te_slot_", 0) == 0), n);
+    }
+    holes += s.at("holes").size();
+  }
+  BOOST_TEST(report.at("sections").size() == 5u);
+  BOOST_TEST(holes >= 15u);  // 18 at the five default spans
+}
 BOOST_AUTO_TEST_CASE(iges_sews_into_a_closed_shell) { test::check_iges(build()); }
 BOOST_AUTO_TEST_CASE(stl_closed_and_outward) { test::check_stl(build()); }
 BOOST_AUTO_TEST_CASE(vtk_closed_outward_normals_out) { test::check_vtk(build()); }

@@ -69,9 +69,10 @@ BOOST_AUTO_TEST_CASE(local_casters_find_the_crossings_of_the_whole_surface) {
     crossings += static_cast<int>(ref.size());
   }
   BOOST_TEST(compared == 400);
-  // Most segments are answered locally (the long ones across many patches or the seam by the whole surface).
+  // Most segments are answered locally, those across the periodic seam too (by the patches each segment
+  // passes through; only a segment through most of the wall's patches would take the whole surface).
   BOOST_TEST_MESSAGE("local " << lc.local_queries << ", whole surface " << lc.full_queries);
-  BOOST_TEST(lc.local_queries >= 200);
+  BOOST_TEST(lc.local_queries >= 360);
   BOOST_TEST(crossings > 100);  // the segments do cross the wall (the test compares something)
 }
 
