@@ -6,6 +6,7 @@
 #include <cmath>
 #include <memory>
 #include <optional>
+#include <utility>
 
 #include "src/core/constants.hpp"
 #include "src/core/format.hpp"
@@ -116,7 +117,7 @@ InnerWallSection inner_wall_crease(const BladeCoordinates& coords, const Thickne
     pressure[k] = coords.frame(span, pc[k]).point;
     suction[k] = coords.frame(span, sc[k]).point;
   }
-  const ChordPolyline pressure_line(pressure, pc), suction_line(suction, sc);
+  const ChordPolyline pressure_line(std::move(pressure), pc), suction_line(std::move(suction), sc);
   InnerWallSection out;
   out.span = out.pressure_span = span;
   // Walk the suction-side offset from the LE: the first point closer than t to the pressure side.
