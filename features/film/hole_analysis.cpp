@@ -355,7 +355,8 @@ void HoleAnalyser::Impl::Analysis::diffuser_lines() {
 
 // Tool extent: clear of the outer wall; the end a plane normal to the axis `clearance` past the last
 // line's inlet. Where the far side of the cavity is closer than that (a hole entering at a shallow
-// angle, e.g. a showerhead hole angled to the span), the end plane follows the cavity wall instead: its
+// angle, e.g. a showerhead hole angled to the span), or a line would reach further into the chamber
+// than it allows (an insert behind a narrow gap), the end plane follows the cavity wall instead: its
 // normal is the wall's normal at the axis' inlet, placed `clearance` (along the lines) past every inlet.
 void HoleAnalyser::Impl::Analysis::tool_extent() {
   g.extent.s_top = fan ? sd - (t_c_max + c) : s_o_min - c;
@@ -364,10 +365,13 @@ void HoleAnalyser::Impl::Analysis::tool_extent() {
   const std::size_t nr = end_rim.size();
   std::vector<double> s_end_rim(nr, s_i_max + c);
   g.extent.s_end = s_i_max + c;
+  const double cos_t = n_inlet.dot(d);
   bool clear = axis_far >= g.extent.s_end + c;
   for (std::size_t q = 0; q < nr; ++q) clear = clear && rim_sf[q] >= s_end_rim[q] + c;
+  // A normal end reaching past the chamber's allowance: the wall-following end unless the hole grazes
+  // the wall (then the reach below is the refusal, naming what to change).
+  for (std::size_t q = 0; q < nr && cos_t >= 0.2; ++q) clear = clear && s_end_rim[q] - rim_si[q] <= chamber->reach;
   if (!clear) {
-    const double cos_t = n_inlet.dot(d);
     if (cos_t < 0.2)
       fail(h, h.position_field, "enters the cavity at a grazing angle (" + format_number(std::acos(cos_t) * 180 / kPi) +
                                " deg from the wall's normal)");

@@ -3,8 +3,9 @@
 // shows no other stage), naming the same field; run as processes on small variants of the examples whose
 // refusal used to come only from the build, after its cooling stage or from the film stage's holes
 // (their times are printed with --log_level=message):
-//  - the C3X film vane with a film row written without "chamber" over the chamber that holds the insert:
-//    its holes' tools would reach past the insert's gap (build refused it in its film stage);
+//  - the C3X film vane with a film row written without "chamber" over the chamber that holds the insert,
+//    the insert's gap narrowed to 0.3 mm: its holes' tools would reach past the gap, even ending along
+//    the cavity wall (build refused it in its film stage);
 //  - the built-in example with a turnaround gap of 80 mm, longer than the blade's span (~53 mm): the
 //    build refused it when its rib tubes were built, after the inner wall and the core solid;
 //  - the C3X film vane with a film row (no "chamber") whose holes enter the cavity within the ligament
@@ -79,8 +80,12 @@ BOOST_AUTO_TEST_CASE(film_row_without_chamber_reaching_past_the_insert) {
     c["film_rows"][0]["chord"] = 0.2;  // over chamber_1 (the rib is at 0.3), which holds the insert
     c["showerhead"]["span_start"] = 0.5;
     c["showerhead"]["span_end"] = 0.55;
+    c["inserts"][0]["gap"] = 0.3;               // the example's 1.5 mm gap lets the wall-following tools in
+    c["core"]["ribs"][0]["fillet_radius"] = 0.2;  // (a gap narrower than the rib's fillets is refused)
   });
-  // The insert's gap 1.5 mm leaves the tools 1.5 - 1.5 / 4 = 1.125 mm; they would reach 2.65 mm.
+  // The insert's gap 0.3 mm leaves the tools 0.3 - 0.3 / 4 = 0.225 mm past the cavity wall. Ended by a
+  // plane normal to the axis 0.15 mm past the last line's inlet they would reach 2.65 mm; ended along
+  // the cavity wall (as the tools are where the normal end reaches too far) still 0.319 mm.
   expect_planned_refusal(d, "cooling.film_rows[0].chord", "an insert lies behind the gap");
 }
 

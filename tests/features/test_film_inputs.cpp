@@ -8,6 +8,7 @@
 
 #include <string>
 
+#include <BRepCheck_Analyzer.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 
 #include "features/film/film_cavity.hpp"
@@ -214,6 +215,26 @@ BOOST_AUTO_TEST_CASE(tool_would_reach_an_insert) {
   const auto [field, what] = attempt(rows({test::film_row(0.35)}), t);
   BOOST_TEST(field == "film_rows[0].chord", what);
   BOOST_TEST(has(what, "insert"), what);
+}
+
+// A tool whose end normal to the axis would reach further than the chamber allows ends along the cavity
+// wall instead (each line `clearance` past its own inlet), when that keeps it within the allowance.
+BOOST_AUTO_TEST_CASE(tool_ends_along_the_wall_before_an_insert) {
+  const FilmCoolingDefinition def = rows({test::film_row(0.35)});
+  const std::vector<HoleSpec> holes = place_film_holes(vane().model, def);
+  HoleTarget t = vane().target;
+  const FilmHoleTools free = make_film_hole_tools(t, holes, def.limits);
+  BOOST_TEST(free.geometry.front().extent.end_normal.norm() == 0.0);  // nothing behind: normal to the axis
+  // Ended normal to the axis the tools reach 1.2-1.5 mm past the cavity wall (by bisection on the
+  // allowance), ended along the wall 0.176 mm (0.16 mm is refused): 0.5 mm lies between.
+  t.chambers[0].reach = 0.5;
+  const FilmHoleTools limited = make_film_hole_tools(t, holes, def.limits);
+  for (std::size_t k = 0; k < holes.size(); ++k) {
+    const HoleToolExtent& e = limited.geometry[k].extent;
+    BOOST_TEST(std::abs(e.end_normal.norm() - 1.0) < 1e-12);
+    BOOST_TEST(e.s_end < free.geometry[k].extent.s_end);
+    BOOST_TEST(BRepCheck_Analyzer(limited.tools[k].shape.shape).IsValid());
+  }
 }
 
 BOOST_AUTO_TEST_CASE(showerhead_inputs) {
