@@ -76,10 +76,10 @@ BladeFrame BladeCoordinates::frame_at(double u, double v) const {
   return f;
 }
 
-BladeFrame BladeCoordinates::frame(double span, double chord) const {
+BladeFrame BladeCoordinates::frame(double span, double chord, ChordAccuracy accuracy) const {
   double u = 0, v = span;
   model_->surface.check_params(u, v);  // span inside the surface's domain, or InvalidGeometry
-  return frame_at(section(span).u_at_chordwise(chord), span);
+  return frame_at(section(span).u_at_chordwise(chord, accuracy), span);
 }
 
 Eigen::Vector3d BladeCoordinates::point(const BladeCoordinate& c) const {

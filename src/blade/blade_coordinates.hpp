@@ -57,7 +57,9 @@ class BladeCoordinates {
   BladeCoordinates(const BladeCoordinates&) = delete;
   BladeCoordinates& operator=(const BladeCoordinates&) = delete;
 
-  BladeFrame frame(double span, double chord) const;
+  /// The frame at (span, chord); Near: the chord to within 1e-4 of the section's length, for scans
+  /// (chordwise.hpp: the frame is exact at the surface point it lands on).
+  BladeFrame frame(double span, double chord, ChordAccuracy accuracy = ChordAccuracy::Exact) const;
   Eigen::Vector3d point(const BladeCoordinate& c) const;
   /// Inverse by global orthogonal projection onto the surface (src/algo/project_point_surface), then the
   /// chordwise coordinate of the foot point on its span's section. found=false when the closest point

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <type_traits>
 #include <utility>
 
 #include "src/core/error.hpp"
@@ -29,19 +30,22 @@ double ChordwiseMap<Dim, Table>::length_to(double u) const {
 }
 
 template <int Dim, class Table>
-double ChordwiseMap<Dim, Table>::param_at_length(double s) const {
+double ChordwiseMap<Dim, Table>::param_at_length(double s, ChordAccuracy accuracy) const {
   const double k = std::floor(s / table_.total());
-  return table_.param_at(std::clamp(s - k * table_.total(), 0.0, table_.total())) + k * period_;
+  const double in = std::clamp(s - k * table_.total(), 0.0, table_.total());
+  if constexpr (std::is_same_v<Table, IsoArcLength>)
+    if (accuracy == ChordAccuracy::Near) return table_.param_near(in) + k * period_;
+  return table_.param_at(in) + k * period_;
 }
 
 template <int Dim, class Table>
-double ChordwiseMap<Dim, Table>::param_at(double c) const {
+double ChordwiseMap<Dim, Table>::param_at(double c, ChordAccuracy accuracy) const {
   if (!(c >= -1 && c <= 1))  // (message built only on failure: hot path)
     throw InvalidGeometry("chordwise coordinate " + format_number(c) + " is outside [-1, 1]");
   if (c == 0) return le_;
   if (c == 1 || c == -1) return te_;  // exactly the TE, not its arc-length image
-  if (c > 0) return param_at_length(at_le_ + c * suction_);
-  return param_at_length(at_le_ + suction_ + (1 + c) * pressure_length());
+  if (c > 0) return param_at_length(at_le_ + c * suction_, accuracy);
+  return param_at_length(at_le_ + suction_ + (1 + c) * pressure_length(), accuracy);
 }
 
 template <int Dim, class Table>

@@ -17,6 +17,12 @@
 
 namespace cg::blade {
 
+/// How exactly a chordwise coordinate becomes a curve parameter: Exact, the table's inverse to its
+/// rel_tol; Near, IsoArcLength::param_near (the wall's sections: within 1e-4 of the section's length,
+/// at a seventh of the cost; other tables answer exactly), for scans that look for a neighbourhood and
+/// refine it exactly, never for a placement.
+enum class ChordAccuracy { Exact, Near };
+
 template <int Dim, class Table = ArcLength<Dim>>
 class ChordwiseMap {
  public:
@@ -35,14 +41,14 @@ class ChordwiseMap {
   double te_param() const { return te_; }
   /// Curve parameter at chordwise coordinate c in [-1, 1] (InvalidGeometry outside), in
   /// [le_param, le_param + period].
-  double param_at(double c) const;
+  double param_at(double c, ChordAccuracy accuracy = ChordAccuracy::Exact) const;
   /// Chordwise coordinate of curve parameter u (any u; wrapped by the period): in [0, 1] on the
   /// suction side, in (-1, 0) on the pressure side; the TE itself gives +1.
   double chordwise_at(double u) const;
 
  private:
   double length_to(double u) const;  // arc length from the curve's first parameter, continued by periods
-  double param_at_length(double s) const;
+  double param_at_length(double s, ChordAccuracy accuracy) const;
   const BSplineCurve<Dim>* curve_;
   Table table_;
   double first_, period_, le_, te_, at_le_, suction_;

@@ -109,13 +109,22 @@ constexpr int kScanSamples = 400;
 InnerWallSection inner_wall_crease(const BladeCoordinates& coords, const ThicknessField& thickness, double span) {
   const SpanRange dom = span_domain(coords.model());
   const int n = kScanSamples;
+  // The scans (polylines, the walk to the first close point, the check for a second crossing) look for
+  // a neighbourhood: their points lie on the wall and its offset exactly, at chords within 1e-4 of the
+  // section's length of k / n (ChordAccuracy::Near, a seventh of the cost; shifted along the wall, a
+  // fraction of the 1 / n sampling); the crease itself is Newton's on exact points.
+  auto near_point = [&](double c) { return coords.frame(span, c, ChordAccuracy::Near).point; };
+  auto near_inner = [&](double c) {
+    const BladeFrame f = coords.frame(span, c, ChordAccuracy::Near);
+    return Vec3(f.point - thickness.at(span, c) * f.normal);
+  };
   std::vector<Vec3> pressure(n + 1), suction(n + 1);
   std::vector<double> pc(n + 1), sc(n + 1);
   for (int k = 0; k <= n; ++k) {
     pc[k] = -static_cast<double>(k) / n;
     sc[k] = static_cast<double>(k) / n;
-    pressure[k] = coords.frame(span, pc[k]).point;
-    suction[k] = coords.frame(span, sc[k]).point;
+    pressure[k] = near_point(pc[k]);
+    suction[k] = near_point(sc[k]);
   }
   const ChordPolyline pressure_line(std::move(pressure), pc), suction_line(std::move(suction), sc);
   InnerWallSection out;
@@ -124,7 +133,7 @@ InnerWallSection inner_wall_crease(const BladeCoordinates& coords, const Thickne
   int hit = -1;
   double hit_pressure_chord = -1;
   for (int i = 1; i <= n; ++i) {
-    const Vec3 q = inner_wall_point(coords, thickness, span, sc[i]);
+    const Vec3 q = near_inner(sc[i]);
     double c_at = 0;
     const double d = pressure_line.distance(q, c_at);
     if (d < thickness.at(span, sc[i]) * (1 - kCloseMargin)) {
@@ -188,7 +197,7 @@ InnerWallSection inner_wall_crease(const BladeCoordinates& coords, const Thickne
   // The pressure side up to the crease must keep its distance from the suction side: otherwise the
   // offsets cross a second time (blade thinner than 2t away from the TE).
   for (int k = 1; k <= n && pc[k] > cp + 2.0 / n; ++k) {
-    const Vec3 q = I(span, pc[k]);
+    const Vec3 q = near_inner(pc[k]);
     double c_at = 0;
     const double d = suction_line.distance(q, c_at);
     if (d < thickness.at(span, pc[k]) * (1 - kCloseMargin))

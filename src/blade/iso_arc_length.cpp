@@ -148,32 +148,42 @@ double IsoArcLength::length_to(double u) const {
   return cumulative_[c] + cell_integral(c, u);
 }
 
-double IsoArcLength::param_at(double s) const {
+IsoArcLength::Guess IsoArcLength::guess(double s) const {
   const double L = total();
   if (!(s >= -tol_ && s <= L + tol_)) {
     const ValueRangeText t = format_value_range(s, 0, L);
     throw InvalidGeometry("arc length " + t.value + " outside [0, " + t.hi + "]");
   }
-  if (s <= 0) return first();
-  if (s >= L) return last();
+  if (s <= 0) return {0, first(), true};
+  if (s >= L) return {0, last(), true};
   std::size_t c =
       static_cast<std::size_t>(std::upper_bound(cumulative_.begin(), cumulative_.end(), s) - cumulative_.begin()) - 1;
   c = std::min(c, cells_.size() - 2);
   if (const auto& t = adaptive_[c / 2]) {
     const double base = cumulative_[c / 2 * 2];
-    return t->param_at(std::clamp(s - base, 0.0, t->total()));
+    return {c, t->param_at(std::clamp(s - base, 0.0, t->total())), true};
   }
   const double lo = cells_[c], hi = cells_[c + 1], s0 = cumulative_[c], len = cumulative_[c + 1] - s0;
-  if (len <= 0) return lo;
+  if (len <= 0) return {c, lo, true};
   // Cubic Hermite guess of u(s) on the cell: du/ds = 1 / speed at its ends.
   const double t = (s - s0) / len;
-  double guess = lo + (hi - lo) * t;
+  double u = lo + (hi - lo) * t;
   if (speed_lo_[c] > 0 && speed_hi_[c] > 0) {
     const double h00 = (1 + 2 * t) * (1 - t) * (1 - t), h10 = t * (1 - t) * (1 - t), h01 = t * t * (3 - 2 * t),
                  h11 = t * t * (t - 1);
-    guess = h00 * lo + h10 * len / speed_lo_[c] + h01 * hi + h11 * len / speed_hi_[c];
+    u = h00 * lo + h10 * len / speed_lo_[c] + h01 * hi + h11 * len / speed_hi_[c];
   }
-  if (!(guess > lo && guess < hi)) guess = lo + (hi - lo) * t;
+  if (!(u > lo && u < hi)) u = lo + (hi - lo) * t;
+  return {c, u, false};
+}
+
+double IsoArcLength::param_near(double s) const { return guess(s).u; }
+
+double IsoArcLength::param_at(double s) const {
+  const Guess g = guess(s);
+  if (g.exact) return g.u;
+  const std::size_t c = g.cell;
+  const double lo = cells_[c], hi = cells_[c + 1], s0 = cumulative_[c];
   // length_to(u) - s increases with u (derivative: the speed): bracketed Newton to |L(u) - s| <= tol.
   // After the first step the iterate moves by ~the guess's error, a tiny fraction of the cell: L at the
   // new iterate is L at the old one plus the 5-point rule over the step between them (exact far below
@@ -182,7 +192,7 @@ double IsoArcLength::param_at(double s) const {
     double x[5], w[5];
     Short() { gauss_legendre(5, x, w); }
   } rule5;
-  double a = lo, b = hi, x = guess, Lx = s0 + cell_integral(c, x);
+  double a = lo, b = hi, x = g.u, Lx = s0 + cell_integral(c, x);
   const double xtol = 4e-16 * (std::abs(lo) + std::abs(hi) + (hi - lo));
   for (int it = 0; it < 200; ++it) {
     const double r = Lx - s;

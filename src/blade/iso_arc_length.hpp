@@ -61,10 +61,21 @@ class IsoArcLength {
   double length_to(double u) const;
   /// Parameter u with length_to(u) = s to rel_tol * total(). Throws InvalidGeometry outside [0, total()].
   double param_at(double s) const;
+  /// param_at without its Newton polish: the cubic Hermite interpolant of u(s) on the half knot span
+  /// (exact where param_at is: the ends and the adaptive spans). Within 1e-4 of the length (the wall's
+  /// iso-curves of both examples: worst 7.9e-5, test_iso_arc_length) at a seventh of the cost: for
+  /// scans that look for a neighbourhood and refine it exactly, never for a placement.
+  double param_near(double s) const;
   /// Knot spans where the 10-point rule missed the tolerance (integrated adaptively instead).
   int adaptive_spans() const;
 
  private:
+  struct Guess {
+    std::size_t cell;
+    double u;
+    bool exact;  // u is the answer (an end, a degenerate cell or an adaptive span's inverse)
+  };
+  Guess guess(double s) const;  // throws outside [0, total()]
   double speed(double u) const;
   double cell_integral(std::size_t cell, double u) const;  // from the cell's start to u
   const BSplineCurve<3>* curve_;

@@ -19,8 +19,8 @@ SpanSection::SpanSection(const BladeModel& model, double span, std::shared_ptr<c
       curve_(std::make_shared<const BSplineCurve<3>>(detail::iso_curve_v(model.surface, span))),
       map_(*curve_, model.u_le, model.u_te, IsoArcLength(*curve_, std::move(nodes))) {}
 
-double SpanSection::u_at_chordwise(double c) const {
-  const double u = map_.param_at(c);
+double SpanSection::u_at_chordwise(double c, ChordAccuracy accuracy) const {
+  const double u = map_.param_at(c, accuracy);
   return u - std::floor(u);
 }
 

@@ -28,8 +28,9 @@ class SpanSection {
   double span() const { return span_; }
   /// The 3D section curve; its parameter is the surface u (period 1, seam at 0).
   const BSplineCurve<3>& curve() const { return *curve_; }
-  /// Surface u in [0, 1) of chordwise coordinate c in [-1, 1] (InvalidGeometry outside).
-  double u_at_chordwise(double c) const;
+  /// Surface u in [0, 1) of chordwise coordinate c in [-1, 1] (InvalidGeometry outside); Near: for
+  /// scans (chordwise.hpp).
+  double u_at_chordwise(double c, ChordAccuracy accuracy = ChordAccuracy::Exact) const;
   /// Chordwise coordinate of surface u (any u, wrapped).
   double chordwise_at_u(double u) const { return map_.chordwise_at(u); }
   Eigen::Vector3d point(double c) const { return curve_->point(u_at_chordwise(c)); }

@@ -64,6 +64,32 @@ BOOST_AUTO_TEST_CASE(wall_iso_curves_agree_with_arc_length) {
   }
 }
 
+// param_near (the Hermite guess param_at polishes): within 1e-4 of the length on the examples' wall
+// iso-curves (worst of 4000 random queries: 1.4e-5 rotor, 7.9e-5 C3X, where a cell's speed varies most,
+// round the LE and TE), exact at the ends.
+BOOST_AUTO_TEST_CASE(near_inverse_of_the_wall_iso_curves) {
+  std::mt19937 rng(7);
+  for (const BladeDefinition& def : {hpt_rotor(), c3x_vane()}) {
+    const BladeModel m = build_blade(def);
+    const auto nodes = std::make_shared<const IsoArcLengthNodes>(detail::iso_curve_v(m.surface, 0.5));
+    std::uniform_real_distribution<double> span(m.surface.first_v(), m.surface.last_v()), u01(0.0, 1.0);
+    double worst = 0;
+    for (int k = 0; k < 8; ++k) {
+      const BSplineCurve<3> c = detail::iso_curve_v(m.surface, span(rng));
+      const IsoArcLength iso(c, nodes);
+      for (int q = 0; q < 500; ++q) {
+        const double s = u01(rng) * iso.total();
+        worst = std::max(worst, std::abs(iso.length_to(iso.param_near(s)) - s) / iso.total());
+      }
+      BOOST_TEST(iso.param_near(0.0) == c.first_param());
+      BOOST_TEST(iso.param_near(iso.total()) == c.last_param());
+    }
+    BOOST_TEST_MESSAGE("worst relative error of param_near " << worst);
+    BOOST_TEST(worst < 1e-4);
+    BOOST_TEST(worst > 1e-12);  // an interpolant, not the polished inverse
+  }
+}
+
 BOOST_AUTO_TEST_CASE(rational_periodic_curve) {
   std::mt19937 rng(9);
   std::uniform_real_distribution<double> w(0.5, 2.0), r(0.8, 1.2);
