@@ -60,6 +60,8 @@ class BladeCoordinates {
   /// The frame at (span, chord); Near: the chord to within 1e-4 of the section's length, for scans
   /// (chordwise.hpp: the frame is exact at the surface point it lands on).
   BladeFrame frame(double span, double chord, ChordAccuracy accuracy = ChordAccuracy::Exact) const;
+  /// The frame at surface parameters (u, v) (v: the span; u wrapped by its period).
+  BladeFrame frame_at(double u, double v) const;
   Eigen::Vector3d point(const BladeCoordinate& c) const;
   /// Inverse by global orthogonal projection onto the surface (src/algo/project_point_surface), then the
   /// chordwise coordinate of the foot point on its span's section. found=false when the closest point
@@ -81,7 +83,6 @@ class BladeCoordinates {
   const BladeModel& model() const { return *model_; }
 
  private:
-  BladeFrame frame_at(double u, double v) const;
   const BladeModel* model_;
   double normal_sign_ = 1;  // +1 when S_u x S_v points outward
   std::unique_ptr<SurfaceProjector> projector_;

@@ -295,20 +295,31 @@ class ExactSection {
   }
 
  private:
-  // Foot point of position x: the pressure half blends its span from the crease's pressure span to
-  // the section span with zero slope at both ends (over kBlend of the half), so the section stays
-  // smooth; each blended sample costs a new span's arc-length table.
+  // Foot point of position x: the pressure half blends from the crease's pressure span to the section
+  // span with zero slope at both ends (over kBlend of the half), so the section stays smooth. A blended
+  // sample blends the surface parameters (span and u) of its chord on the two spans' sections, so it
+  // needs no section of its own (an arc-length table per sample); its chord is then the nominal one
+  // (exact at both ends of the blend, within the two spans' difference of arc-length shares between).
   Sample sample(const BladeCoordinates& coords, double x) const {
     Sample s;
     s.x = x;
+    double w = 0;  // weight of the crease's pressure span
     if (x <= 1) {
       s.chord = info.pressure_chord * (1 - x);
-      s.span = x >= kBlend ? span_ : span_ + (info.pressure_span - span_) * (1 - smoothstep(x / kBlend));
+      w = x >= kBlend ? 0.0 : 1 - smoothstep(x / kBlend);
     } else {
       s.chord = info.suction_chord * (x - 1);
-      s.span = span_;
     }
-    const BladeFrame f = coords.frame(s.span, s.chord);
+    s.span = span_ + (info.pressure_span - span_) * w;
+    BladeFrame f;
+    if (w == 0) {
+      f = coords.frame(span_, s.chord);
+    } else {
+      const double u_own = coords.section(span_).u_at_chordwise(s.chord);
+      double u_crease = coords.section(info.pressure_span).u_at_chordwise(s.chord);
+      u_crease -= std::round(u_crease - u_own);  // the same turn of the periodic u (period 1)
+      f = coords.frame_at(u_own + (u_crease - u_own) * w, s.span);
+    }
     s.outer = f.point;
     s.normal = f.normal;
     s.inner = f.point - thickness_->at(s.span, s.chord) * f.normal;
