@@ -370,7 +370,8 @@ void HoleAnalyser::Impl::Analysis::tool_extent() {
   for (std::size_t q = 0; q < nr; ++q) clear = clear && rim_sf[q] >= s_end_rim[q] + c;
   // A normal end reaching past the chamber's allowance: the wall-following end unless the hole grazes
   // the wall (then the reach below is the refusal, naming what to change).
-  for (std::size_t q = 0; q < nr && cos_t >= 0.2; ++q) clear = clear && s_end_rim[q] - rim_si[q] <= chamber->reach;
+  if (cos_t >= 0.2)
+    for (std::size_t q = 0; q < nr; ++q) clear = clear && s_end_rim[q] - rim_si[q] <= chamber->reach;
   if (!clear) {
     if (cos_t < 0.2)
       fail(h, h.position_field, "enters the cavity at a grazing angle (" + format_number(std::acos(cos_t) * 180 / kPi) +

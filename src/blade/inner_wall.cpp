@@ -22,8 +22,9 @@ using Vec3 = Eigen::Vector3d;
 
 }  // namespace
 
-Vec3 inner_wall_point(const BladeCoordinates& coords, const ThicknessField& thickness, double span, double chord) {
-  const BladeFrame f = coords.frame(span, chord);
+Vec3 inner_wall_point(const BladeCoordinates& coords, const ThicknessField& thickness, double span, double chord,
+                      ChordAccuracy accuracy) {
+  const BladeFrame f = coords.frame(span, chord, accuracy);
   return f.point - thickness.at(span, chord) * f.normal;
 }
 
@@ -114,10 +115,7 @@ InnerWallSection inner_wall_crease(const BladeCoordinates& coords, const Thickne
   // section's length of k / n (ChordAccuracy::Near, a seventh of the cost; shifted along the wall, a
   // fraction of the 1 / n sampling); the crease itself is Newton's on exact points.
   auto near_point = [&](double c) { return coords.frame(span, c, ChordAccuracy::Near).point; };
-  auto near_inner = [&](double c) {
-    const BladeFrame f = coords.frame(span, c, ChordAccuracy::Near);
-    return Vec3(f.point - thickness.at(span, c) * f.normal);
-  };
+  auto near_inner = [&](double c) { return inner_wall_point(coords, thickness, span, c, ChordAccuracy::Near); };
   std::vector<Vec3> pressure(n + 1), suction(n + 1);
   std::vector<double> pc(n + 1), sc(n + 1);
   for (int k = 0; k <= n; ++k) {

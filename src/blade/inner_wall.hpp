@@ -97,9 +97,10 @@ struct InnerWall {
 /// InvalidGeometry for bad options.
 InnerWall build_inner_wall(const BladeModel& model, const ThicknessField& thickness, const InnerWallOptions& options = {});
 
-/// The exact (untrimmed) inner wall point at a blade coordinate: frame point - t * outward normal.
+/// The exact (untrimmed) inner wall point at a blade coordinate: frame point - t * outward normal
+/// (Near: the frame's chord as BladeCoordinates::frame takes it, for scans).
 Eigen::Vector3d inner_wall_point(const BladeCoordinates& coords, const ThicknessField& thickness, double span,
-                                 double chord);
+                                 double chord, ChordAccuracy accuracy = ChordAccuracy::Exact);
 
 /// Where the inner wall's crease lies at `span`: Newton's solution of the two offsets' crossing (see
 /// the header comment), or an untrimmed section (trimmed = false) when the offsets do not cross.
