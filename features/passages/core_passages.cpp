@@ -34,6 +34,7 @@
 #include "src/brep/blade_solid.hpp"
 #include "src/core/newton.hpp"
 #include "src/core/parallel.hpp"
+#include "src/algo/ray_surface.hpp"
 
 namespace cg::features {
 namespace {
@@ -396,6 +397,69 @@ void check_turnarounds(const blade::BladeModel& model, const blade::BladeCoordin
   }
 }
 
+// Cutting ends just outside the blade lie this far out (mm): the open ends' cutting surfaces at -delta,
+// the inlets' outer ends at -delta / 2.
+double end_margin(const blade::BladeModel& model) { return 0.4 * model.options.overbuild * model.span_length; }
+
+// Inlet m (InletPlacement): along the line from its chamber's point on the flow path's end to the
+// chamber's point at 0.1 of the span from it, from just outside the blade to `reach` past the end wall,
+// its rim (12 points on its circle) half way between the end wall and that end.
+InletPlacement place_inlet(std::size_t m, const blade::BladeModel& model, const blade::BladeCoordinates& coords,
+                           const CoreDefinition& def, const CoreBuild& out) {
+  const InletDefinition& in = def.inlets[m];
+  InletPlacement p;
+  p.name = "inlet_" + std::to_string(m + 1);
+  ChamberInfo at = out.chambers[static_cast<std::size_t>(in.chamber - 1)];
+  if (!std::isnan(in.suction_chord)) at.suction_from = at.suction_to = in.suction_chord;
+  if (!std::isnan(in.pressure_chord)) at.pressure_from = at.pressure_to = in.pressure_chord;
+  const bool hub = in.end == SpanEnd::Hub;
+  p.origin = chamber_point(coords, def.wall_thickness, at, hub ? 0.0 : 1.0);
+  p.axis = (chamber_point(coords, def.wall_thickness, at, hub ? 0.1 : 0.9) - p.origin).normalized();
+  const EndWall& wall = hub ? *out.hub_floor : *out.tip_cap;
+  const EndWall outside(model, in.end, -0.5 * end_margin(model));
+  const double reach = std::max(0.5, 0.25 * in.diameter);
+  p.from = along_line(outside, p.origin, p.axis, 0.0);
+  p.to = along_line(wall, p.origin, p.axis, reach);
+  p.radius = 0.5 * in.diameter;
+  InletRim& rim = p.rim;
+  rim.field = "core.inlets[" + std::to_string(m) + "].diameter";
+  rim.message = p.name + " (diameter " + format_number(in.diameter) + " mm) does not fit into chamber " +
+                std::to_string(in.chamber) + " where it passes the " + (hub ? "hub floor" : "tip cap") +
+                ": its rim leaves the chamber; use a smaller diameter or move it";
+  rim.centre = p.origin + along_line(wall, p.origin, p.axis, 0.5 * reach) * p.axis;
+  const Vec3 e1 = p.axis.unitOrthogonal(), e2 = p.axis.cross(e1);
+  for (int k = 0; k < 12; ++k) {
+    const double a = 2 * kPi * k / 12;
+    rim.points.push_back(rim.centre + p.radius * (std::cos(a) * e1 + std::sin(a) * e2));
+  }
+  return p;
+}
+
+// The walls' part of the rim test (check_inlet_rims classifies against the chamber solid, which the
+// ribs and fillets bound too): every rim point on the chamber's side of its end wall and inside the
+// inner wall, i.e. an even number of inner-wall crossings from the rim's centre on the axis (inside
+// the core: the chamber point's line) to it.
+void check_inlet_rims_in_walls(const CoreDefinition& def, const CoreBuild& out) {
+  if (out.inlets.empty()) return;
+  RaySurfaceCaster inner(out.inner_wall.surface);
+  for (std::size_t m = 0; m < out.inlets.size(); ++m) {
+    const InletRim& rim = out.inlets[m].rim;
+    const EndWall& wall = def.inlets[m].end == SpanEnd::Hub ? *out.hub_floor : *out.tip_cap;
+    for (const Vec3& q : rim.points) {
+      const double len = (q - rim.centre).norm();
+      const Vec3 d = (q - rim.centre) / len;
+      int crossings = 0;
+      for (double s = 0; crossings <= 64;) {  // restart just past each hit, as WallLines does
+        const RaySurfaceHit h = inner.first_hit(rim.centre + s * d, d, len - s);
+        if (!h.found) break;
+        s += h.ray_param + 1e-9;
+        ++crossings;
+      }
+      if (crossings % 2 == 1 || !(wall.signed_distance(q) > 0)) throw PassageInputError(rim.field, rim.message);
+    }
+  }
+}
+
 }  // namespace
 
 void check_core_definition(const blade::BladeModel& model, const CoreDefinition& def) {
@@ -431,6 +495,8 @@ CoreBuild build_core_walls(const blade::BladeModel& model, const CoreDefinition&
   if (!def.hub_floor.open) out.hub_floor.emplace(model, SpanEnd::Hub, def.hub_floor.thickness);
   if (!def.tip_cap.open) out.tip_cap.emplace(model, SpanEnd::Tip, def.tip_cap.thickness);
   out.chambers = chambers_of(coords, def);
+  for (std::size_t m = 0; m < def.inlets.size(); ++m) out.inlets.push_back(place_inlet(m, model, coords, def, out));
+  check_inlet_rims_in_walls(def, out);
   out.seconds.emplace_back("inner_wall", sw.lap());
   return out;
 }
@@ -698,57 +764,30 @@ void mark_fed_chambers(const CoreDefinition& def, CoreBuild& out) {
   }
 }
 
-// Inlet m: a cylinder along the span direction through the end wall into the chamber, its rim to
-// check and its tool with the volume it removes.
-void build_inlet(std::size_t m, const blade::BladeModel& model, const blade::BladeCoordinates& coords,
-                 const CoreDefinition& def, double delta, CoreBuild& out) {
+// Inlet m from its placement (build_core_walls): its cylinder, its rim's chamber system, and its tool
+// with the volume it removes.
+void build_inlet(std::size_t m, const blade::BladeModel& model, const CoreDefinition& def, CoreBuild& out) {
+  InletPlacement& p = out.inlets[m];
   const InletDefinition& in = def.inlets[m];
-  const std::string field = "core.inlets[" + std::to_string(m) + "]";
-  const std::string name = "inlet_" + std::to_string(m + 1);
-  ChamberInfo at = out.chambers[static_cast<std::size_t>(in.chamber - 1)];
-  if (!std::isnan(in.suction_chord)) at.suction_from = at.suction_to = in.suction_chord;
-  if (!std::isnan(in.pressure_chord)) at.pressure_from = at.pressure_to = in.pressure_chord;
-  const bool hub = in.end == SpanEnd::Hub;
-  const double s0 = hub ? 0.0 : 1.0;
-  const Vec3 x0 = chamber_point(coords, def.wall_thickness, at, s0);
-  const Vec3 dir = ((chamber_point(coords, def.wall_thickness, at, hub ? 0.1 : 0.9) - x0) * (hub ? 1.0 : -1.0)).normalized();
-  const EndWall& wall = hub ? *out.hub_floor : *out.tip_cap;
-  const EndWall outside(model, in.end, -0.5 * delta);
-  // Along the axis (into the chamber = +dir): from outside the blade to `reach` past the end wall.
-  auto along = [&](const EndWall& w, double target) { return along_line(w, x0, dir, target); };
-  const double reach = std::max(0.5, 0.25 * in.diameter);
-  const double t0 = along(outside, 0.0), t1 = along(wall, reach);
-  const gp_Ax2 ax(occt::to_pnt(x0 + t0 * dir), gp_Dir(dir.x(), dir.y(), dir.z()));
-  BRepPrimAPI_MakeCylinder cyl(ax, 0.5 * in.diameter, t1 - t0);
+  p.rim.system = out.chambers[static_cast<std::size_t>(in.chamber - 1)].system;
+  const gp_Ax2 ax(occt::to_pnt(p.origin + p.from * p.axis), gp_Dir(p.axis.x(), p.axis.y(), p.axis.z()));
+  BRepPrimAPI_MakeCylinder cyl(ax, p.radius, p.to - p.from);
   cyl.Build();
-  if (!cyl.IsDone()) throw FeatureFailure(name + ": cannot make its cylinder");
+  if (!cyl.IsDone()) throw FeatureFailure(p.name + ": cannot make its cylinder");
   const TopoDS_Shape s = cyl.Shape();
-  // It must open into its chamber: a ring just past the end wall lies inside the chamber's tool
-  // (classified by check_inlet_rims).
-  InletRim rim;
-  rim.system = out.chambers[static_cast<std::size_t>(in.chamber - 1)].system;
-  rim.field = field + ".diameter";
-  rim.message = name + " (diameter " + format_number(in.diameter) + " mm) does not fit into chamber " +
-                std::to_string(in.chamber) + " where it passes the " + (hub ? "hub floor" : "tip cap") +
-                ": its rim leaves the chamber; use a smaller diameter or move it";
-  const double tm = along(wall, 0.5 * reach);
-  const Vec3 e1 = dir.unitOrthogonal(), e2 = dir.cross(e1);
-  for (int k = 0; k < 12; ++k) {
-    const double a = 2 * kPi * k / 12;
-    rim.points.push_back(x0 + tm * dir + 0.5 * in.diameter * (std::cos(a) * e1 + std::sin(a) * e2));
-  }
-  out.inlet_rims.push_back(std::move(rim));
   FeatureTool tool;
-  tool.feature = name;
+  tool.feature = p.name;
   tool.shape.shape = s;
-  for (const TopoDS_Shape& f : faces_of(s)) tool.shape.faces.push_back({TopoDS::Face(f), name});
+  for (const TopoDS_Shape& f : faces_of(s)) tool.shape.faces.push_back({TopoDS::Face(f), p.name});
   // It removes the material between the flow-path surface and the end wall (beyond the end wall it
   // opens into the chamber): the integral over its disc of the axial distance between the two surfaces
   // (Gauss-Legendre in the radius, the trapezoidal rule in the angle, exact for periodic integrands).
+  const EndWall& wall = in.end == SpanEnd::Hub ? *out.hub_floor : *out.tip_cap;
   const EndWall flow_path(model, in.end, 0.0);
-  tool.expected_volume = disc_integral(0.5 * in.diameter, [&](double rho, double phi) {
-    const Vec3 base = x0 + rho * (std::cos(phi) * e1 + std::sin(phi) * e2);
-    return along_line(wall, base, dir, 0.0) - along_line(flow_path, base, dir, 0.0);
+  const Vec3 e1 = p.axis.unitOrthogonal(), e2 = p.axis.cross(e1);
+  tool.expected_volume = disc_integral(p.radius, [&](double rho, double phi) {
+    const Vec3 base = p.origin + rho * (std::cos(phi) * e1 + std::sin(phi) * e2);
+    return along_line(wall, base, p.axis, 0.0) - along_line(flow_path, base, p.axis, 0.0);
   });
   out.inlet_volumes.push_back(tool.expected_volume);
   out.cut_tools.push_back(tool);
@@ -759,7 +798,7 @@ void build_inlet(std::size_t m, const blade::BladeModel& model, const blade::Bla
 void build_core_cells(const blade::BladeModel& model, const CoreDefinition& def, CoreBuild& out) {
   Stopwatch sw;
   const blade::BladeCoordinates coords(model);
-  const double delta = 0.4 * model.options.overbuild * model.span_length;  // cutting ends just outside the blade
+  const double delta = end_margin(model);
   FaceNames names;
   const brep::BladeSolid core = build_core_solid(model, def, out, delta, names);
   out.seconds.emplace_back("core_solid", sw.lap());
@@ -786,14 +825,14 @@ void build_core_cells(const blade::BladeModel& model, const CoreDefinition& def,
   out.seconds.emplace_back("fillets_and_names", sw.lap());
 
   mark_fed_chambers(def, out);
-  for (std::size_t m = 0; m < def.inlets.size(); ++m) build_inlet(m, model, coords, def, delta, out);
+  for (std::size_t m = 0; m < def.inlets.size(); ++m) build_inlet(m, model, def, out);
   out.seconds.emplace_back("inlets", sw.lap());
 }
 
 void check_inlet_rims(const CoreBuild& core) {
   // ~20 ms per point on a serpentine's solid (rays against its B-spline faces): each inlet on its own core.
-  parallel_for(static_cast<int>(core.inlet_rims.size()), parallel_workers(), [&](int m, int) {
-    const InletRim& rim = core.inlet_rims[static_cast<std::size_t>(m)];
+  parallel_for(static_cast<int>(core.inlets.size()), parallel_workers(), [&](int m, int) {
+    const InletRim& rim = core.inlets[static_cast<std::size_t>(m)].rim;
     Inside in_target(core.systems[static_cast<std::size_t>(rim.system)].shape);
     for (const Vec3& p : rim.points)
       if (!in_target(p)) throw PassageInputError(rim.field, rim.message);

@@ -51,9 +51,20 @@ struct ChamberSystem {
 /// Points that must lie inside an inlet's chamber system: a ring of the inlet's diameter just past the
 /// end wall (the inlet opens into its chamber), and the input error when one does not.
 struct InletRim {
-  int system = -1;  ///< index into CoreBuild::systems
+  int system = -1;  ///< index into CoreBuild::systems (set with the cells, build_core_cells)
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();  ///< on the axis, the ring's centre
   std::vector<Eigen::Vector3d> points;
   std::string field, message;
+};
+
+/// An inlet as the plan places it (build_core_walls), the one placement its check and its tool use: a
+/// cylinder of `radius` along the unit `axis` (into the chamber) from origin + from * axis, outside the
+/// blade, to origin + to * axis, past the end wall; origin is its chamber's point on the flow path's end.
+struct InletPlacement {
+  std::string name;  ///< inlet_<m>
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero(), axis = Eigen::Vector3d::Zero();
+  double from = 0, to = 0, radius = 0;
+  InletRim rim;
 };
 
 struct CoreBuild {
@@ -69,7 +80,9 @@ struct CoreBuild {
   /// the material between the flow-path surface and the end wall over its disc, own quadrature).
   std::vector<FeatureTool> cut_tools;
   std::vector<double> inlet_volumes;  ///< mm^3 per inlet, as its expected volume
-  std::vector<InletRim> inlet_rims;   ///< per inlet, checked by check_inlet_rims
+  /// Per inlet (build_core_walls): its rim checked there against the inner wall and the end wall, and
+  /// against its chamber system's solid by check_inlet_rims.
+  std::vector<InletPlacement> inlets;
   std::optional<EndWall> hub_floor, tip_cap;  ///< none when that end is open
   double core_volume = 0;                     ///< mm^3, the core before ribs and fillets (sum of its cells)
   std::vector<double> rib_volumes;            ///< mm^3 per rib, rib material inside the core
@@ -84,12 +97,14 @@ CoreBuild build_core_tools(const blade::BladeModel& model, const CoreDefinition&
 /// build_core_tools in three parts, so that work which needs only some of it can run alongside the
 /// rest (build_passages): build_core_walls builds, for a `def` that check_core_definition passed (the
 /// plan runs both, as build_core_tools does), the inner wall, the closed end walls (inner_wall,
-/// hub_floor, tip_cap) and the chambers' extents (chambers, without volumes) (stage "inner_wall"; no
+/// hub_floor, tip_cap), the chambers' extents (chambers, without volumes) and the inlets (inlets: a
+/// rim that leaves the inner wall or lies beyond the end wall is refused here) (stage "inner_wall"; no
 /// solid), which is all the turbulator, pin and slot tools and the film holes' target need;
 /// build_core_cells adds the core solid, ribs, cells, fillets, names and inlets to `core` (the walls
 /// stay as they are: a copy of `core` taken before it is as good for the wall-feature tools);
 /// check_inlet_rims throws the PassageInputError of the first inlet whose rim leaves its chamber (point
-/// classification against the chamber solids only: safe beside booleans that read them).
+/// classification against the chamber solids only: safe beside booleans that read them; what the walls
+/// alone decide was refused by build_core_walls, this adds the ribs and their fillets).
 CoreBuild build_core_walls(const blade::BladeModel& model, const CoreDefinition& def);
 void build_core_cells(const blade::BladeModel& model, const CoreDefinition& def, CoreBuild& core);
 void check_inlet_rims(const CoreBuild& core);

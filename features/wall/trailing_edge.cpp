@@ -160,12 +160,10 @@ Inlet inlet_station(WallLines& lines, const TeFrame& f, double x_from, double y0
     const Across mid = across(lines, f, x, 0.0, false);
     if (!mid.ok) continue;
     const double y = centred ? 0.5 * (mid.lo + mid.hi) - 0.5 * h : y0;
-    bool fits = true;
-    for (double z : {-0.5 * wx, 0.0, 0.5 * wx}) {
-      const Across c = across(lines, f, x, z, false);
-      fits = fits && c.ok && c.lo < y - 0.05 && c.hi > y + h + 0.05;
-    }
-    if (fits) return {x, y};
+    auto holds = [&](const Across& c) { return c.ok && c.lo < y - 0.05 && c.hi > y + h + 0.05; };
+    // The middle line first: most stations upstream of the crease are too narrow there already.
+    if (holds(mid) && holds(across(lines, f, x, -0.5 * wx, false)) && holds(across(lines, f, x, 0.5 * wx, false)))
+      return {x, y};
   }
   return {};
 }

@@ -309,12 +309,18 @@ class ExactSection {
       s.chord = info.suction_chord * (x - 1);
     }
     s.span = span_ + (info.pressure_span - span_) * w;
+    // The chord decides where along the section the sample lies and, through the thickness, how deep
+    // it is. Where the thickness does not vary along the chord, a sample within 1e-4 of the section's
+    // length of its nominal place (ChordAccuracy::Near) is as exact a point of the inner wall (only the
+    // ends, the crease, must be the crease itself); it saves the arc-length inverse's Newton polish.
+    const ChordAccuracy accuracy =
+        x == 0 || x == 2 || thickness_->varies_along_chord() ? ChordAccuracy::Exact : ChordAccuracy::Near;
     BladeFrame f;
     if (w == 0) {
-      f = coords.frame(span_, s.chord);
+      f = coords.frame(span_, s.chord, accuracy);
     } else {
-      const double u_own = coords.section(span_).u_at_chordwise(s.chord);
-      double u_crease = coords.section(info.pressure_span).u_at_chordwise(s.chord);
+      const double u_own = coords.section(span_).u_at_chordwise(s.chord, accuracy);
+      double u_crease = coords.section(info.pressure_span).u_at_chordwise(s.chord, accuracy);
       u_crease -= std::round(u_crease - u_own);  // the same turn of the periodic u (period 1)
       f = coords.frame_at(u_own + (u_crease - u_own) * w, s.span);
     }

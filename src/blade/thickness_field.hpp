@@ -21,6 +21,8 @@ class ThicknessField {
   double min_value() const { return min_; }
   double max_value() const { return max_; }
   bool is_constant() const { return spans_.empty(); }
+  /// False when the thickness is the same at every chord of a span (a constant, or a table of one chord).
+  bool varies_along_chord() const { return chords_.size() > 1; }
 
  private:
   std::vector<double> spans_, chords_;

@@ -11,7 +11,9 @@
 //  - the C3X film vane with a film row (no "chamber") whose holes enter the cavity within the ligament
 //    of the rib (mid-surface +- thickness / 2 and the fillets' width): build refused it after its cooling
 //    stage;
-//  - a rotor variant whose turbulators find no room between the rib fillets (placed by the plan).
+//  - a rotor variant whose turbulators find no room between the rib fillets (placed by the plan);
+//  - the C3X vane with a 3.5 mm wall and its rib at 0.56 of the chord: the 3 mm inlet of the aft chamber
+//    leaves the inner wall (build refused it after the core's cells, classifying the rim against them).
 // The build refuses each with exit 2, one line starting with the same field, and writes nothing.
 #define BOOST_TEST_MODULE cli_plan
 #include <boost/test/unit_test.hpp>
@@ -115,4 +117,18 @@ BOOST_AUTO_TEST_CASE(film_row_entering_at_a_rib) {
 BOOST_AUTO_TEST_CASE(turbulator_without_room_between_the_fillets) {
   const json d = variant(fs::path(COOLINGGEN_SOURCE_DIR) / "data" / "repro" / "turbulator_between_fillets.json", [](json&) {});
   expect_planned_refusal(d, "cooling.core.turbulators[0].end_gap", "no room between the rib fillets");
+}
+
+// bench/random_designs.py (full variants, seed 11, variant 21) as the smallest edit of the C3X vane: the
+// inlet is placed on the chamber's mid-line between its rib and the crease, where the 3.5 mm wall leaves
+// less than 3 mm across; its rim leaves the inner wall, which the plan sees without the chamber solid.
+BOOST_AUTO_TEST_CASE(inlet_rim_outside_the_inner_wall) {
+  const json d = variant(kExamples / "c3x_film_vane.json", [](json& d) {
+    json& c = d["cooling"];
+    for (const char* k : {"film_rows", "showerhead", "inserts"}) c.erase(k);
+    c["core"]["wall_thickness"] = 3.5;
+    c["core"]["ribs"][0]["suction_chord"] = 0.56;
+    c["core"]["ribs"][0]["pressure_chord"] = -0.56;
+  });
+  expect_planned_refusal(d, "cooling.core.inlets[1].diameter", "inlet_2 (diameter 3 mm) does not fit into chamber 2");
 }
