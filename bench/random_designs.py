@@ -4,7 +4,9 @@
 Seeded, plausible variants of the built-in example (data/examples/hpt_rotor.json) and of the C3X film vane
 (data/examples/c3x_film_vane.json), covering every cooling feature and its options: blade stagger and
 thickness, wall thickness, 1-4 ribs with and without fillets and turnarounds, inlets, turbulators, the TE
-cutback with 0-3 pin rows, 0-4 film rows (cylindrical and 7-7-7), the showerhead on or off, the C3X insert.
+cutback with 0-3 pin rows, 0-4 film rows (cylindrical and 7-7-7), the showerhead on or off, the C3X insert,
+the C3X inlets through the hub floor or the tip cap (drawn from a stream of their own, so the other draws
+of a seed are those of the runs before it).
 Half the variants are drawn "inside" (positions and sizes inside the ranges the error messages state: film
 rows fed from the chamber they sit over, turbulators between two ribs, ...), half "free" (wider ranges,
 no such care).
@@ -214,6 +216,12 @@ def vary_c3x(rng, inside, light):
     return d
 
 
+def feed_ends(doc, rng):
+    """Each inlet through the hub floor or the tip cap, one in two."""
+    for inlet in doc["cooling"]["core"]["inlets"]:
+        inlet["end"] = rng.choice(["hub", "tip"])
+
+
 FIELD = re.compile(r"^([A-Za-z_][A-Za-z0-9_]*(\[\d+\])?)(\.[A-Za-z_][A-Za-z0-9_]*(\[\d+\])?)*: ")
 
 
@@ -309,6 +317,8 @@ def main():
         inside = i % 2 == 0
         base = "c3x" if i % 4 in (1, 2) else "rotor"
         doc = (vary_c3x if base == "c3x" else vary_rotor)(rng, inside, a.light)
+        if base == "c3x":  # a vane is fed through either end wall; its own stream keeps the other draws
+            feed_ends(doc, random.Random("%d/%d" % (a.seed, i)))
         doc["name"] = "random_%03d" % i
         designs.append((i, base, inside, doc))
     work = a.keep or tempfile.mkdtemp(prefix="cg_random_designs_")

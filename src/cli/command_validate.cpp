@@ -21,11 +21,11 @@ Command add_validate_command(CLI::App& app) {
             std::printf("%s: valid (%s flow path, %zu sections)\n", path->c_str(),
                         m.trim.straight ? "straight" : "meridional", config::section_count(c));
             if (!c.cooling.empty())
-              std::printf("planned and checked: the core's walls, chambers, turnaround ends, turbulators, trailing-edge slots and pin "
-                          "fins, every film and showerhead hole (wall crossing, chamber, ligaments to other holes, ribs and end walls), "
-                          "the inserts' input; not checked before a build: the turbulator, pin and slot tools and their volumes, the inlets' "
-                          "rims in their chambers, film holes against turbulators, pin fins and trailing-edge slots, the booleans and the "
-                          "solid checks\n");
+              std::printf("planned and checked: the core's walls, chambers, turnaround ends and inlets (their rims within the walls), "
+                          "turbulators, trailing-edge slots and pin fins, every film and showerhead hole (wall crossing, chamber, "
+                          "ligaments to other holes, ribs and end walls), the inserts' input; not checked before a build: the "
+                          "turbulator, pin and slot tools and their volumes, the inlets' rims against the ribs' fillets, film holes "
+                          "against turbulators, pin fins and trailing-edge slots, the booleans and the solid checks\n");
             return int{kOk};
           }};
 }
