@@ -35,6 +35,7 @@
 #include "src/core/newton.hpp"
 #include "src/core/parallel.hpp"
 #include "src/algo/ray_surface.hpp"
+#include "src/analyze/cell_quadrature.hpp"
 
 namespace cg::features {
 namespace {
@@ -89,23 +90,6 @@ double along_line(const EndWall& w, const Vec3& x0, const Vec3& dir, double targ
   if (f_lo >= 0) return lo;
   if (f_hi < 0) return hi;
   return newton::solve_bracketed_secant(f, lo, hi, f_lo, f_hi, 1e-12);
-}
-
-// Integral of f(rho, phi) over the disc of radius r: Gauss-Legendre (8 points) in rho, 32 equal
-// steps in phi (spectrally accurate for the smooth periodic integrand).
-template <class F>
-double disc_integral(double r, F f) {
-  static const double x[8] = {-0.9602898564975363, -0.7966664774136267, -0.5255324099163290, -0.1834346424956498,
-                              0.1834346424956498,  0.5255324099163290,  0.7966664774136267,  0.9602898564975363};
-  static const double w[8] = {0.1012285362903763, 0.2223810344533745, 0.3137066458778873, 0.3626837833783620,
-                              0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
-  const int nphi = 32;
-  double sum = 0;
-  for (int i = 0; i < 8; ++i) {
-    const double rho = 0.5 * r * (x[i] + 1);
-    for (int k = 0; k < nphi; ++k) sum += w[i] * 0.5 * r * rho * (2 * kPi / nphi) * f(rho, 2 * kPi * k / nphi);
-  }
-  return sum;
 }
 
 // ---------------------------------------------------------------------------------------------------

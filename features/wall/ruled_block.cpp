@@ -19,6 +19,7 @@
 
 #include "adaptors/occt_convert.hpp"
 #include "src/brep/naming/face_names.hpp"
+#include "src/analyze/cell_quadrature.hpp"
 #include "src/brep/boolean/verified_boolean.hpp"
 
 namespace cg::features {

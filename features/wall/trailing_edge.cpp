@@ -17,6 +17,7 @@
 #include "src/core/constants.hpp"
 #include "src/core/format.hpp"
 #include "src/algo/segment_distance.hpp"
+#include "src/analyze/cell_quadrature.hpp"
 #include "src/core/newton.hpp"
 
 namespace cg::features {

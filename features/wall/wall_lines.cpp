@@ -4,13 +4,6 @@
 
 namespace cg::features {
 
-namespace detail {
-const double kGauss8Nodes[8] = {-0.9602898564975363, -0.7966664774136267, -0.5255324099163290, -0.1834346424956498,
-                                0.1834346424956498,  0.5255324099163290,  0.7966664774136267,  0.9602898564975363};
-const double kGauss8Weights[8] = {0.1012285362903763, 0.2223810344533745, 0.3137066458778873, 0.3626837833783620,
-                                  0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
-}  // namespace detail
-
 namespace {
 // Patch boxes grown by this much (mm) and the caster's tolerance are tested against the segment.
 constexpr double kReach = 1e-6;

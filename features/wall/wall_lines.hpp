@@ -15,7 +15,6 @@
 #include "src/algo/bounding_spans.hpp"
 #include "src/algo/ray_surface.hpp"
 #include "src/core/bspline_surface.hpp"
-#include "src/core/constants.hpp"
 
 namespace cg::features {
 
@@ -82,38 +81,5 @@ class WallLines {
 
 /// Total length fraction of intervals (sum of t1 - t0).
 double total(const Intervals& iv);
-
-/// 8-point Gauss-Legendre rule mapped onto [a, b] in n equal cells: calls f(x, weight).
-template <class F>
-void gauss_legendre(double a, double b, int cells, F f);
-
-/// Integral of f(rho, phi) over the disc of radius r: Gauss-Legendre (8 points) in rho, `angles` equal
-/// steps in phi (the trapezoidal rule, spectrally accurate for the smooth periodic integrand).
-template <class F>
-double disc_integral(double r, F f, int angles = 32);
-
-// ---------------------------------------------------------------------------------------------------
-
-namespace detail {
-extern const double kGauss8Nodes[8];
-extern const double kGauss8Weights[8];
-}  // namespace detail
-
-template <class F>
-void gauss_legendre(double a, double b, int cells, F f) {
-  const double h = (b - a) / cells;
-  for (int c = 0; c < cells; ++c)
-    for (int i = 0; i < 8; ++i) f(a + h * (c + 0.5 * (detail::kGauss8Nodes[i] + 1)), 0.5 * h * detail::kGauss8Weights[i]);
-}
-
-template <class F>
-double disc_integral(double r, F f, int angles) {
-  constexpr double kTwoPi = 2 * kPi;
-  double sum = 0;
-  gauss_legendre(0.0, r, 1, [&](double rho, double w) {
-    for (int k = 0; k < angles; ++k) sum += w * rho * (kTwoPi / angles) * f(rho, kTwoPi * k / angles);
-  });
-  return sum;
-}
 
 }  // namespace cg::features
