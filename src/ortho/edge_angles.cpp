@@ -1,33 +1,16 @@
 #include "src/ortho/edge_angles.hpp"
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <string>
 
+#include "src/analyze/gauss_legendre.hpp"
 #include "src/core/basis.hpp"
 #include "src/core/constants.hpp"
 #include "src/core/error.hpp"
 #include "src/core/format.hpp"
 
 namespace cg::ortho {
-
-namespace {
-
-// Gauss-Legendre nodes/weights on [-1, 1] from the symmetric Jacobi matrix (Golub & Welsch 1969).
-void gauss_legendre(int n, std::vector<double>& x, std::vector<double>& w) {
-  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(n, n);
-  for (int k = 1; k < n; ++k) J(k, k - 1) = J(k - 1, k) = k / std::sqrt(4.0 * k * k - 1.0);
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(J);
-  x.resize(static_cast<std::size_t>(n));
-  w.resize(static_cast<std::size_t>(n));
-  for (int k = 0; k < n; ++k) {
-    x[static_cast<std::size_t>(k)] = es.eigenvalues()[k];
-    w[static_cast<std::size_t>(k)] = 2.0 * es.eigenvectors()(0, k) * es.eigenvectors()(0, k);
-  }
-}
-
-}  // namespace
 
 template <int Dim>
 BSplineSurface<Dim> ContinuationNet<Dim>::surface() const {
@@ -59,9 +42,11 @@ ContinuationNet<2> translated_start_net(const BezierCurve<2>& curve, double dist
 template <int Dim>
 EdgeAngleSampler<Dim>::EdgeAngleSampler(const BezierCurve<Dim>& curve, const PerformanceMap& eta, int panels, int order)
     : m_(curve.degree()) {
-  require(panels >= 1 && order >= 1 && panels * order <= 100000, "edge angle sampler: bad quadrature size");
-  std::vector<double> gx, gw;
-  gauss_legendre(order, gx, gw);
+  require(panels >= 1 && order >= 1 && order <= 64 && panels * order <= 100000, "edge angle sampler: bad quadrature size");
+  std::vector<double> gx(static_cast<std::size_t>(order)), gw(static_cast<std::size_t>(order));
+  gauss_legendre(order, gx.data(), gw.data());  // descending nodes: the samples' u ascend within a panel
+  std::reverse(gx.begin(), gx.end());
+  std::reverse(gw.begin(), gw.end());
   const int n = panels * order;
   B_.resize(m_ + 1, n);
   const BSplineCurve<Dim> c = curve.to_bspline();

@@ -45,8 +45,8 @@ class EdgeAngleSampler {
   using HPoles = Eigen::Matrix<double, Dim + 1, Eigen::Dynamic>;
   using Vectors = Eigen::Matrix<double, Dim, Eigen::Dynamic>;
 
-  /// Composite Gauss-Legendre rule: `panels` equal panels of [0, 1] with `order` nodes each (nodes from
-  /// the Golub-Welsch eigenproblem). eta must return values in (-1, 1).
+  /// Composite Gauss-Legendre rule: `panels` equal panels of [0, 1] with `order` <= 64 nodes each
+  /// (src/analyze/gauss_legendre.hpp). eta must return values in (-1, 1).
   EdgeAngleSampler(const BezierCurve<Dim>& curve, const PerformanceMap& eta, int panels = 8, int order = 8);
 
   int size() const { return static_cast<int>(u_.size()); }
