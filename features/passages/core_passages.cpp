@@ -385,6 +385,11 @@ void check_turnarounds(const blade::BladeModel& model, const blade::BladeCoordin
 // the inlets' outer ends at -delta / 2.
 double end_margin(const blade::BladeModel& model) { return 0.4 * model.options.overbuild * model.span_length; }
 
+// The end wall inlet `in` passes through (its end is closed: check_definition).
+const EndWall& end_wall_of(const InletDefinition& in, const CoreBuild& core) {
+  return in.end == SpanEnd::Hub ? *core.hub_floor : *core.tip_cap;
+}
+
 // Inlet m (InletPlacement): along the line from its chamber's point on the flow path's end to the
 // chamber's point at 0.1 of the span from it, from just outside the blade to `reach` past the end wall,
 // its rim (12 points on its circle) half way between the end wall and that end.
@@ -399,7 +404,7 @@ InletPlacement place_inlet(std::size_t m, const blade::BladeModel& model, const 
   const bool hub = in.end == SpanEnd::Hub;
   p.origin = chamber_point(coords, def.wall_thickness, at, hub ? 0.0 : 1.0);
   p.axis = (chamber_point(coords, def.wall_thickness, at, hub ? 0.1 : 0.9) - p.origin).normalized();
-  const EndWall& wall = hub ? *out.hub_floor : *out.tip_cap;
+  const EndWall& wall = end_wall_of(in, out);
   const EndWall outside(model, in.end, -0.5 * end_margin(model));
   const double reach = std::max(0.5, 0.25 * in.diameter);
   p.from = along_line(outside, p.origin, p.axis, 0.0);
@@ -428,19 +433,10 @@ void check_inlet_rims_in_walls(const CoreDefinition& def, const CoreBuild& out) 
   RaySurfaceCaster inner(out.inner_wall.surface);
   for (std::size_t m = 0; m < out.inlets.size(); ++m) {
     const InletRim& rim = out.inlets[m].rim;
-    const EndWall& wall = def.inlets[m].end == SpanEnd::Hub ? *out.hub_floor : *out.tip_cap;
-    for (const Vec3& q : rim.points) {
-      const double len = (q - rim.centre).norm();
-      const Vec3 d = (q - rim.centre) / len;
-      int crossings = 0;
-      for (double s = 0; crossings <= 64;) {  // restart just past each hit, as WallLines does
-        const RaySurfaceHit h = inner.first_hit(rim.centre + s * d, d, len - s);
-        if (!h.found) break;
-        s += h.ray_param + 1e-9;
-        ++crossings;
-      }
-      if (crossings % 2 == 1 || !(wall.signed_distance(q) > 0)) throw PassageInputError(rim.field, rim.message);
-    }
+    const EndWall& wall = end_wall_of(def.inlets[m], out);
+    for (const Vec3& q : rim.points)
+      if (segment_crossings(inner, rim.centre, q).size() % 2 == 1 || !(wall.signed_distance(q) > 0))
+        throw PassageInputError(rim.field, rim.message);
   }
 }
 
@@ -766,7 +762,7 @@ void build_inlet(std::size_t m, const blade::BladeModel& model, const CoreDefini
   // It removes the material between the flow-path surface and the end wall (beyond the end wall it
   // opens into the chamber): the integral over its disc of the axial distance between the two surfaces
   // (Gauss-Legendre in the radius, the trapezoidal rule in the angle, exact for periodic integrands).
-  const EndWall& wall = in.end == SpanEnd::Hub ? *out.hub_floor : *out.tip_cap;
+  const EndWall& wall = end_wall_of(in, out);
   const EndWall flow_path(model, in.end, 0.0);
   const Vec3 e1 = p.axis.unitOrthogonal(), e2 = p.axis.cross(e1);
   tool.expected_volume = disc_integral(p.radius, [&](double rho, double phi) {

@@ -54,7 +54,8 @@ TeFrame te_frame(const blade::BladeCoordinates& coords, const CoreDefinition& de
                                                "eject from");
   TeFrame f;
   f.span = s;
-  const Vec3 P = coords.frame(s, 1.0).point;
+  const blade::BladeFrame te_point = coords.frame(s, 1.0);
+  const Vec3 P = te_point.point;
   if (te.type == TrailingEdgeType::Centreline) {
     f.o = cr.crease;
     f.x = (P - f.o).normalized();
@@ -66,7 +67,7 @@ TeFrame te_frame(const blade::BladeCoordinates& coords, const CoreDefinition& de
   // z: the span direction; for a centreline slot the crease's own tangent, so the crease lies on the
   // slot's mid-plane y = 0 across the slot's width (up to its curvature) and the kink it puts in the
   // removed-volume integrand stays on one quadrature break.
-  Vec3 t = coords.frame(s, 1.0).span_tangent;
+  Vec3 t = te_point.span_tangent;
   if (te.type == TrailingEdgeType::Centreline) {
     const double ds = 1e-4;
     const Vec3 t_crease = blade::inner_wall_crease(coords, def.wall_thickness, std::min(s + ds, 1.0)).crease -

@@ -140,23 +140,8 @@ Eigen::Vector3d WallLines::inner_normal(const Eigen::Vector3d& a, const Eigen::V
 }
 
 std::vector<double> WallLines::crossings(LocalCaster& local, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-  std::vector<double> out;
-  const double len = (b - a).norm();
-  if (!(len > 0)) return out;
-  RaySurfaceCaster& caster = local.for_segment(a, b);
-  const Eigen::Vector3d d = (b - a) / len;
-  // Restart just past each hit (1e-9 mm: far below any feature, far above the hit's rounding).
-  constexpr double kStep = 1e-9;
-  double s = 0;
-  while (s < len) {
-    const RaySurfaceHit h = caster.first_hit(a + s * d, d, len - s);
-    if (!h.found) break;
-    s += h.ray_param;
-    out.push_back(s / len);
-    s += kStep;
-    if (out.size() > 64) break;  // a line grazing a surface: the caller's region check fails
-  }
-  return out;
+  if (!((b - a).norm() > 0)) return {};
+  return segment_crossings(local.for_segment(a, b), a, b);
 }
 
 std::vector<double> WallLines::outer_crossings(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {

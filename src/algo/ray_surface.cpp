@@ -232,4 +232,22 @@ RaySurfaceHit ray_surface_first_hit(const BSplineSurface<3>& surface, const Eige
   return caster.first_hit(origin, direction, s_max);
 }
 
+std::vector<double> segment_crossings(RaySurfaceCaster& caster, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  std::vector<double> out;
+  const double len = (b - a).norm();
+  if (!(len > 0)) return out;
+  const Eigen::Vector3d d = (b - a) / len;
+  constexpr double kStep = 1e-9;
+  double s = 0;
+  while (s < len) {
+    const RaySurfaceHit h = caster.first_hit(a + s * d, d, len - s);
+    if (!h.found) break;
+    s += h.ray_param;
+    out.push_back(s / len);
+    s += kStep;
+    if (out.size() > 64) break;
+  }
+  return out;
+}
+
 }  // namespace cg

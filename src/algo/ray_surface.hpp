@@ -71,4 +71,9 @@ RaySurfaceHit ray_surface_first_hit(const BSplineSurface<3>& surface, const Eige
                                     const Eigen::Vector3d& direction,
                                     double s_max = std::numeric_limits<double>::infinity());
 
+/// Sorted parameters t in [0, 1] where the segment a -> b crosses the caster's surface: first hits, each
+/// search restarted 1e-9 mm past the last hit (far below any feature, far above a hit's rounding); more
+/// than 64 (a segment grazing the surface) end the search. Empty for a zero-length segment.
+std::vector<double> segment_crossings(RaySurfaceCaster& caster, const Eigen::Vector3d& a, const Eigen::Vector3d& b);
+
 }  // namespace cg

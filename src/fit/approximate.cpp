@@ -105,9 +105,10 @@ void check_tolerance(double tol, int npoints, int p) {
 // where their pivots stay within 1e-6 of each other, so that squaring the condition number costs no
 // digit that matters (the examples' fits: pivots within 0.065 of each other, poles agreeing with QR's
 // to 2.3e-14 of the largest); 5-10x cheaper than QR (the inner wall's section fits were a fifth of the
-// rotor's plan). Otherwise by sparse QR of N itself (Householder, COLAMD ordering). Returns false when N is numerically rank deficient or so badly
-// conditioned (|R_ii| spread beyond 1e10) that the poles would be meaningless: that happens with data
-// barely inside some basis supports although Schoenberg-Whitney holds.
+// rotor's plan). Otherwise by sparse QR of N itself (Householder, COLAMD ordering). Returns false when
+// N is numerically rank deficient or so badly conditioned (|R_ii| spread beyond 1e10) that the poles
+// would be meaningless: that happens with data barely inside some basis supports although
+// Schoenberg-Whitney holds.
 bool solve_least_squares(Eigen::SparseMatrix<double>& N, const Eigen::MatrixXd& R, Eigen::MatrixXd& X) {
   N.makeCompressed();
   {
