@@ -307,7 +307,9 @@ void HoleAnalyser::Impl::Analysis::diffuser_lines() {
       if (t_c <= 0)
         fail(h, ".fan.diffuser_length_d", "the metering part breaks out of the outer wall: the diffuser (" + format_number(sd) +
                                           " mm) is too short for the inclination and the wall curvature");
-      const RaySurfaceHit hi = inner.near(origin, v / vn, ai, sense_i, 0, search * vn, search * vn);
+      // Only a cavity crossing within the diffuser (ray parameter <= t_far vn) matters: the global search, where
+      // Newton does not settle, looks no further.
+      const RaySurfaceHit hi = inner.near(origin, v / vn, ai, sense_i, 0, search * vn, t_far * vn);
       if (hi.found && t_far - hi.ray_param / vn >= 0) fail(h, dsub, "larger than the wall allows: the diffuser reaches the cavity");
     };
     const double g1 = 0.5 - 0.5 / std::sqrt(3.0), g2 = 0.5 + 0.5 / std::sqrt(3.0);

@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <tuple>
+#include <utility>
 
 #include "adaptors/occt_convert.hpp"
 #include "src/core/constants.hpp"
@@ -201,13 +203,19 @@ class TubeBuilder {
     std::vector<BSplineCurve<3>> pieces;  // side-, top round..., side+, bottom round...
   };
 
+  // The junction spans (bottom, top) at station a. Each turnaround end is placed against the other
+  // end's junction (a through end's span, or the mid-span when both ends turn: a rib needs at least one
+  // through end, checked by the caller).
+  std::pair<double, double> junctions(double a) const {
+    const double sb = junction(a, false, hub_, tip_.kind == EndKind::Through ? tip_.through_span : 0.5);
+    const double st = junction(a, true, tip_, sb);
+    if (!(st > sb)) throw InvalidGeometry("rib " + std::to_string(index_) + ": its ends overlap");
+    return {sb, st};
+  }
+
   Profile profile(double a) const {
     Profile p;
-    // Each turnaround end is placed against the other end's junction (a through end's span, or the
-    // mid-span when both ends turn: a rib needs at least one through end, checked by the caller).
-    p.sb = junction(a, false, hub_, tip_.kind == EndKind::Through ? tip_.through_span : 0.5);
-    p.st = junction(a, true, tip_, p.sb);
-    if (!(p.st > p.sb)) throw InvalidGeometry("rib " + std::to_string(index_) + ": its ends overlap");
+    std::tie(p.sb, p.st) = junctions(a);
     p.pieces.push_back(side(a, p.sb, p.st, -1));
     for (auto& c : round(a, p.st, true, tip_.radius)) p.pieces.push_back(std::move(c));
     p.pieces.push_back(side(a, p.sb, p.st, +1));
@@ -378,8 +386,7 @@ std::vector<std::pair<double, double>> check_rib_ends(const blade::BladeCoordina
   const TubeBuilder tb(mid, rib, index, 0, hub, tip);
   std::vector<std::pair<double, double>> junctions;
   for (double a : tube_stations(first_extent(mid, rib, wall, who), kFirstStations)) {
-    const TubeBuilder::Profile p = tb.profile(a);
-    junctions.emplace_back(p.sb, p.st);
+    junctions.push_back(tb.junctions(a));
   }
   return junctions;
 }

@@ -10,6 +10,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <optional>
 
 #include "src/brep/naming/face_names.hpp"
@@ -570,13 +571,12 @@ void check_slot_volumes(const TrailingEdgeBuild& out, const std::vector<double>&
     if (!volume_ok[k]) throw FeatureFailure(out.slot_tools[k].feature + ": the tool solid's volume differs from its construction");
 }
 
-// Pin fin `name` of row `row` at span s, station x (upstream of the slots): clear of the last rib,
-// across the chamber (axis, ends half a wall thickness inside both walls).
-PinInfo plan_pin_fin(const std::string& name, int row, double s, double x, const PinFinDefinition& pf,
+// Pin fin `name` of row `row` in the TE frame f (at span f.span), station x (upstream of the slots):
+// clear of the last rib, across the chamber (axis, ends half a wall thickness inside both walls).
+PinInfo plan_pin_fin(const std::string& name, int row, const TeFrame& f, double x, const PinFinDefinition& pf,
                      const blade::BladeCoordinates& coords, const CoreDefinition& def, WallLines& lines) {
   const RibDefinition* last_rib = def.ribs.empty() ? nullptr : &def.ribs.back();
-  const double r = 0.5 * pf.diameter;
-  const TeFrame f = te_frame(coords, def, s);
+  const double r = 0.5 * pf.diameter, s = f.span;
   if (last_rib) {
     // Clear of the last rib and its fillets: the pin's line (across the blade at x) against the rib's
     // mid-line between its wall points at this span.
@@ -656,6 +656,7 @@ void plan_pin_fins(const PinFinDefinition& pf, const blade::BladeCoordinates& co
   int number = 0;
   const int n_even = static_cast<int>(std::floor((phi - plo) / pf.spanwise_pitch + 1e-9)) + 1;
   const std::vector<double> even = centred(plo, phi, pf.spanwise_pitch, n_even);
+  std::map<double, TeFrame> frames;  // the rows of one parity share their spans (each frame an exact section)
   for (int row = 0; row < pf.rows; ++row) {
     std::vector<double> at;  // odd rows: shifted by half the pitch (staggered), as many as fit
     for (double y : even)
@@ -666,7 +667,9 @@ void plan_pin_fins(const PinFinDefinition& pf, const blade::BladeCoordinates& co
       const std::string name = "pin_fin_" + numbered(++number, 3);
       // Row station: upstream of the slots' inlets (the most upstream one, in this frame).
       const double x = inlet_x_min - pf.slot_gap - r - row * pf.streamwise_pitch;
-      out.pins.push_back(plan_pin_fin(name, row, s, x, pf, coords, def, lines));
+      auto frame = frames.find(s);
+      if (frame == frames.end()) frame = frames.emplace(s, te_frame(coords, def, s)).first;
+      out.pins.push_back(plan_pin_fin(name, row, frame->second, x, pf, coords, def, lines));
     }
   }
 }

@@ -25,6 +25,40 @@ RaySurfaceCaster::RaySurfaceCaster(const BSplineSurface<3>& surface, double tole
   for (const auto& p : patches_) all.add(p.box);
   scale_ = all.diagonal();
   tol_ = tolerance > 0 ? tolerance : 1e-12 * (1.0 + scale_);
+  order_.resize(patches_.size());
+  for (std::size_t i = 0; i < order_.size(); ++i) order_[i] = static_cast<int>(i);
+  if (!patches_.empty()) build_tree(0, static_cast<int>(patches_.size()));
+}
+
+// Node over order_[begin, end): the union of its patches' boxes; more than 4 patches are split at the
+// median of their box centres along the longest axis of those centres' extent.
+int RaySurfaceCaster::build_tree(int begin, int end) {
+  const int index = static_cast<int>(nodes_.size());
+  nodes_.emplace_back();
+  BoundingBox<3> box, centres;
+  for (int i = begin; i < end; ++i) {
+    const BoundingBox<3>& b = patches_[static_cast<std::size_t>(order_[static_cast<std::size_t>(i)])].box;
+    box.add(b);
+    centres.add(0.5 * (b.lo + b.hi));
+  }
+  nodes_[static_cast<std::size_t>(index)].box = box;
+  nodes_[static_cast<std::size_t>(index)].begin = begin;
+  nodes_[static_cast<std::size_t>(index)].end = end;
+  if (end - begin <= 4) return index;
+  int axis = 0;
+  (centres.hi - centres.lo).maxCoeff(&axis);
+  const int mid = begin + (end - begin) / 2;
+  auto centre = [&](int p) {
+    const BoundingBox<3>& b = patches_[static_cast<std::size_t>(p)].box;
+    return b.lo[axis] + b.hi[axis];
+  };
+  std::nth_element(order_.begin() + begin, order_.begin() + mid, order_.begin() + end,
+                   [&](int a, int b) { return centre(a) < centre(b); });
+  const int left = build_tree(begin, mid);
+  const int right = build_tree(mid, end);
+  nodes_[static_cast<std::size_t>(index)].left = left;
+  nodes_[static_cast<std::size_t>(index)].right = right;
+  return index;
 }
 
 std::size_t RaySurfaceCaster::new_block() {
@@ -143,8 +177,7 @@ RaySurfaceHit RaySurfaceCaster::first_hit(const Eigen::Vector3d& o, const Eigen:
       }
     return true;
   };
-  auto push = [&](const double* hp, double u0, double u1, double v0, double v1, int depth) {
-    const auto box = homogeneous_pole_box<3>(hp, n);
+  auto push_in = [&](const BoundingBox<3>& box, const double* hp, double u0, double u1, double v0, double v1, int depth) {
     double e0 = 0.0, e1 = s_max;
     if (!box.clip_ray(o, d, e0, e1, grow) || misses_line(hp)) return;
     const std::size_t b = new_block();
@@ -152,7 +185,27 @@ RaySurfaceHit RaySurfaceCaster::first_hit(const Eigen::Vector3d& o, const Eigen:
     heap_.push_back(Item{e0, u0, u1, v0, v1, depth, b});
     std::push_heap(heap_.begin(), heap_.end(), std::greater<Item>());
   };
-  for (const auto& p : patches_) push(p.hpoles.data(), p.u0, p.u1, p.v0, p.v1, 0);
+  auto push = [&](const double* hp, double u0, double u1, double v0, double v1, int depth) {
+    push_in(homogeneous_pole_box<3>(hp, n), hp, u0, u1, v0, v1, depth);
+  };
+  // The knot patches whose boxes the ray enters, through the tree of boxes.
+  stack_.clear();
+  if (!nodes_.empty()) stack_.push_back(0);
+  while (!stack_.empty()) {
+    const Node& node = nodes_[static_cast<std::size_t>(stack_.back())];
+    stack_.pop_back();
+    double e0 = 0.0, e1 = s_max;
+    if (!node.box.clip_ray(o, d, e0, e1, grow)) continue;
+    if (node.left >= 0) {
+      stack_.push_back(node.left);
+      stack_.push_back(node.right);
+      continue;
+    }
+    for (int i = node.begin; i < node.end; ++i) {
+      const auto& p = patches_[static_cast<std::size_t>(order_[static_cast<std::size_t>(i)])];
+      push_in(p.box, p.hpoles.data(), p.u0, p.u1, p.v0, p.v1, 0);
+    }
+  }
 
   RaySurfaceHit best;
   double best_s = s_max;

@@ -14,7 +14,11 @@
 // the .cpp). Any other patch - Newton did not settle inside it, or it may be met twice - is split
 // further while the ray runs inside its box before the best hit, down to 2^-30 of a knot patch. The
 // search stops when the next box is entered beyond the best hit, so the hit returned is the first
-// along the ray. A ray grazing the surface within that resolution can be reported as a miss.
+// along the ray. A ray grazing the surface within that resolution can be reported as a miss. The knot
+// patches the ray may enter are found through a tree of their boxes (median splits along the longest
+// axis, up to 4 patches a leaf): a parent's box holds its children's, so the patches queued are exactly
+// those whose own box the ray enters, while the boxes tested are those along the ray rather than all of
+// the surface's patches (thousands on a blade's inner wall).
 #include <Eigen/Core>
 #include <limits>
 #include <memory>
@@ -53,13 +57,22 @@ class RaySurfaceCaster {
     std::size_t block;  // index of the poles in pool_
     bool operator>(const Item& o) const { return entry > o.entry; }
   };
+  struct Node {
+    BoundingBox<3> box;
+    int begin = 0, end = 0;     // patches order_[begin, end)
+    int left = -1, right = -1;  // children (a leaf has none)
+  };
   bool newton(const Item& it, const Eigen::Vector3d& o, const Eigen::Vector3d& d, RaySurfaceHit& hit);
   std::size_t new_block();
+  int build_tree(int begin, int end);
 
   std::shared_ptr<const BSplineSurface<3>> s_;
   int pu_ = 0, pv_ = 0;
   double tol_ = 0, scale_ = 0;
   std::vector<SurfaceBezierPatch<3>> patches_;
+  std::vector<Node> nodes_;  // nodes_[0] is the root (when there are patches)
+  std::vector<int> order_;   // patch indices, each node's a contiguous range
+  std::vector<int> stack_;   // work buffer of the tree walk
   std::vector<double> pool_;
   std::vector<std::size_t> free_;
   std::vector<Item> heap_;
