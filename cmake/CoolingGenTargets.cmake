@@ -70,10 +70,27 @@ file(GLOB cli_srcs CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/cli/*.cpp)
 list(FILTER cli_srcs EXCLUDE REGEX "/src/cli/main\\.cpp$")
 add_library(coolinggen_cli_commands STATIC ${cli_srcs})
 target_link_libraries(coolinggen_cli_commands PUBLIC coolinggen CLI11::CLI11)
-add_executable(coolinggen_cli ${PROJECT_SOURCE_DIR}/src/cli/main.cpp)
+# The commands' file-writing jobs (src/cli/output_jobs.hpp): called directly by the CLI tests
+# (coolinggen_cli_linked_jobs); the executable loads them from the output module on first use, so that it
+# starts without VTK, gmsh, CGNS and OCCT's data exchange (--as-needed drops those libraries from it); it
+# looks for the module in its own folder (the build folder), then in <prefix>/<libdir>/coolinggen.
+add_library(coolinggen_cli_linked_jobs STATIC ${PROJECT_SOURCE_DIR}/src/cli/output_jobs/linked.cpp)
+target_link_libraries(coolinggen_cli_linked_jobs PUBLIC coolinggen_cli_commands)
+add_library(coolinggen_outputs MODULE ${PROJECT_SOURCE_DIR}/src/cli/output_jobs/module.cpp
+  ${PROJECT_SOURCE_DIR}/src/cli/output_jobs/linked.cpp)
+target_link_libraries(coolinggen_outputs PRIVATE coolinggen)
+# -Bsymbolic: the module's code calls its own copies of the pipeline, never the executable's.
+target_link_options(coolinggen_outputs PRIVATE -Wl,-Bsymbolic -Wl,--no-undefined)
+set_target_properties(coolinggen_outputs PROPERTIES LIBRARY_OUTPUT_DIRECTORY ${PROJECT_BINARY_DIR})
+add_executable(coolinggen_cli ${PROJECT_SOURCE_DIR}/src/cli/main.cpp ${PROJECT_SOURCE_DIR}/src/cli/output_jobs/loaded.cpp)
 set_target_properties(coolinggen_cli PROPERTIES OUTPUT_NAME coolinggen RUNTIME_OUTPUT_DIRECTORY ${PROJECT_BINARY_DIR})
-target_link_libraries(coolinggen_cli PRIVATE coolinggen_cli_commands)
+file(RELATIVE_PATH cg_module_dir ${CMAKE_INSTALL_FULL_BINDIR} ${CMAKE_INSTALL_FULL_LIBDIR}/coolinggen)
+target_compile_definitions(coolinggen_cli PRIVATE COOLINGGEN_MODULE_DIR="${cg_module_dir}")
+target_link_libraries(coolinggen_cli PRIVATE coolinggen_cli_commands ${CMAKE_DL_LIBS})
+target_link_options(coolinggen_cli PRIVATE -Wl,--as-needed)
+add_dependencies(coolinggen_cli coolinggen_outputs)
 install(TARGETS coolinggen_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(TARGETS coolinggen_outputs LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/coolinggen)
 
 install(TARGETS coolinggen coolinggen_pipeline coolinggen_network coolinggen_config coolinggen_mesh coolinggen_export coolinggen_brep
   coolinggen_import coolinggen_cad_import coolinggen_model coolinggen_kernel coolinggen_adaptors coolinggen_occt_deps coolinggen_vtk_deps coolinggen_gmsh_deps

@@ -8,9 +8,9 @@
 #include "src/cli/commands.hpp"
 #include "src/cli/console_progress.hpp"
 #include "src/cli/exit_codes.hpp"
+#include "src/cli/output_jobs.hpp"
 #include "src/cli/watchdog.hpp"
 #include "src/pipeline/build.hpp"
-#include "src/pipeline/outputs.hpp"
 #include "src/pipeline/time_limit.hpp"
 
 namespace cg::cli {
@@ -53,6 +53,7 @@ int run_build_job(const JobOptions& o, const std::string& stage_cache_dir, const
     std::error_code ec;  // fail now, not after a build of minutes
     if (std::filesystem::exists(o.output, ec) && !std::filesystem::is_directory(o.output, ec))
       throw io::ExportError("output directory " + o.output.string() + " exists and is not a directory");
+    find_output_jobs();  // a missing module fails now, not after the build
     config::Config c = load_config_argument(o.config);
     if (adjust) adjust(c);
     std::optional<pipeline::StageCache> cache;
@@ -62,9 +63,10 @@ int run_build_job(const JobOptions& o, const std::string& stage_cache_dir, const
     const pipeline::BuildResult r = pipeline::run_build(c, options, &limit);
     // The directory is touched only from here on (write_outputs polls before each file).
     if (limit.stop_requested()) throw Cancelled("writing outputs", "before");
+    const OutputJobs& jobs = output_jobs();  // loads the writers' libraries (output_jobs.hpp)
     watchdog.set_writing();
     writing = true;
-    const pipeline::WrittenOutputs w = pipeline::write_outputs(c, r, o.output, &limit);
+    const pipeline::WrittenOutputs w = jobs.write_outputs(c, r, o.output, &limit);
     console.interrupt_line();
     if (!r.valid())
       throw ChecksFailed("solid checks failed (" + r.failed_checks() + "); wrote " +

@@ -5,7 +5,7 @@
 #include "src/cli/commands.hpp"
 #include "src/cli/console_progress.hpp"
 #include "src/cli/exit_codes.hpp"
-#include "src/pipeline/grid_job.hpp"
+#include "src/cli/output_jobs.hpp"
 #include "src/pipeline/stage_runner.hpp"
 
 namespace cg::cli {
@@ -34,9 +34,10 @@ int run_grid(const JobOptions& o) {
   bool writing = false;
   try {
     const config::Config c = load_config_argument(o.config);
-    const pipeline::GridResult r = pipeline::run_grid(c, &limit);
+    const OutputJobs& jobs = output_jobs();  // the grids' writers and their libraries (output_jobs.hpp)
+    const pipeline::GridResult r = jobs.run_grid(c, &limit);
     writing = true;
-    const pipeline::WrittenGrid w = pipeline::write_grid_outputs(c, r, o.output, &limit);
+    const pipeline::WrittenGrid w = jobs.write_grid_outputs(c, r, o.output, &limit);
     console.interrupt_line();
     if (!o.quiet) print_summary(c, r, w);
     return kOk;

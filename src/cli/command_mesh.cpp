@@ -4,9 +4,8 @@
 #include "src/cli/commands.hpp"
 #include "src/cli/console_progress.hpp"
 #include "src/cli/exit_codes.hpp"
+#include "src/cli/output_jobs.hpp"
 #include "src/pipeline/build.hpp"
-#include "src/pipeline/mesh_job.hpp"
-#include "src/pipeline/outputs.hpp"
 #include "src/pipeline/stage_runner.hpp"
 
 namespace cg::cli {
@@ -35,10 +34,12 @@ int run_mesh(const JobOptions& o) {
   pipeline::TimeLimit limit(&console, o.timeout_s);
   bool writing = false;
   try {
+    find_output_jobs();  // a missing module fails now, not after the build
     const config::Config c = load_config_argument(o.config);
     const pipeline::BuildResult r = pipeline::run_build(c, {}, &limit);
+    const OutputJobs& jobs = output_jobs();  // loads the writers' libraries (output_jobs.hpp)
     writing = true;
-    const pipeline::MeshOutputs w = pipeline::write_mesh(c, r, o.output, &limit);
+    const pipeline::MeshOutputs w = jobs.write_mesh(c, r, o.output, &limit);
     console.interrupt_line();
     if (!r.valid())
       throw ChecksFailed("solid checks failed (" + r.failed_checks() + "); wrote " +

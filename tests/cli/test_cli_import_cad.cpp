@@ -193,6 +193,8 @@ BOOST_AUTO_TEST_CASE(c3x_cooled_on_each_import_same_features) {
   for (auto& s : original.at("sections"))  // the copy lives in the temporary directory
     if (s.contains("points") && s["points"].contains("file"))
       s["points"]["file"] = (kExamples / s["points"]["file"].get<std::string>()).string();
+  auto& passages = original["cooling"]["radial_passages"]["file"];
+  passages = (kExamples / passages.get<std::string>()).lexically_normal().string();
   const char* formats[] = {"", "step", "geomturbo", "sections"};
   std::multiset<std::string> names[4];
   for (int k = 0; k < 4; ++k) {

@@ -195,3 +195,37 @@ BOOST_AUTO_TEST_CASE(help_lists_commands) {
   BOOST_TEST(h.exit_code == 0);
   for (const char* cmd : {"build", "validate", "example"}) BOOST_TEST(h.out.find(cmd) != std::string::npos, cmd);
 }
+
+// The executable starts without the hand-off libraries (src/cli/output_jobs.hpp): readelf (binutils) lists
+// what it needs; none of VTK, gmsh, CGNS or OCCT's data exchange and visualisation. A copy without its
+// output module still validates, and its build fails at once as CoolingGen's failure (exit 3, one line
+// naming the module), before the build and with the output directory untouched.
+BOOST_AUTO_TEST_CASE(output_module_loaded_only_to_write) {
+  TempDir dir("cli_module");
+  BOOST_TEST_REQUIRE(std::system(("readelf -d " + test::q(test::kCliBinary) + " > " + test::q(dir.path / "needed.txt")).c_str()) == 0);
+  const std::string needed = read_text(dir.path / "needed.txt");
+  BOOST_TEST_REQUIRE(needed.find("libTKernel") != std::string::npos, needed);  // readelf listed the libraries
+  for (const char* heavy : {"vtk", "gmsh", "cgns", "TKXDE", "TKXCAF", "TKRWMesh", "TKV3d", "TKService"})
+    BOOST_TEST(needed.find(heavy) == std::string::npos, heavy << " in " << needed);
+
+  const fs::path alone = dir.path / "bin" / "coolinggen";
+  fs::create_directories(alone.parent_path());
+  fs::copy_file(test::kCliBinary, alone);
+  const fs::path cfg = dir.path / "example.json";
+  BOOST_TEST_REQUIRE(std::system((test::q(alone) + " example > " + test::q(cfg)).c_str()) == 0);
+  const auto status = [&](const std::string& args) {
+    const int s = std::system((test::q(alone) + " " + args + " > /dev/null 2> " + test::q(dir.path / "err.txt")).c_str());
+    return WIFEXITED(s) ? WEXITSTATUS(s) : -1;
+  };
+  BOOST_TEST(status("validate " + test::q(cfg)) == 0, read_text(dir.path / "err.txt"));
+  const fs::path out = dir.path / "out";
+  const auto t0 = std::chrono::steady_clock::now();
+  BOOST_TEST(status("build " + test::q(cfg) + " -o " + test::q(out)) == 3);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const std::string err = read_text(dir.path / "err.txt");
+  BOOST_TEST(lines(err) == 1, err);
+  BOOST_TEST(err.find("CoolingGen failure") != std::string::npos, err);
+  BOOST_TEST(err.find("libcoolinggen_outputs.so is missing") != std::string::npos, err);
+  BOOST_TEST(seconds < 5.0, seconds << " s: the module is looked for before the build (a build takes > 10 s)");
+  BOOST_TEST(!fs::exists(out));
+}

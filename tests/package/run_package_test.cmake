@@ -40,6 +40,17 @@ foreach(consumer kernel full)
   endif()
 endforeach()
 
+# The installed executable finds its output module (<libdir>/coolinggen, src/cli/output_jobs.hpp): the
+# built-in blade without its cooling (a second's build), written as STL.
+run("coolinggen example" ${prefix}/bin/coolinggen example)
+string(JSON cfg REMOVE "${last_output}" cooling)
+string(JSON cfg SET "${cfg}" output "{\"formats\": [\"stl\"]}")
+file(WRITE ${WORK_DIR}/blade.json "${cfg}")
+run("installed coolinggen build" ${prefix}/bin/coolinggen build ${WORK_DIR}/blade.json -o ${WORK_DIR}/blade -q)
+if(NOT EXISTS ${WORK_DIR}/blade/blade.stl)
+  message(FATAL_ERROR "the installed coolinggen wrote no blade.stl")
+endif()
+
 # The kernel consumer's build rules must not name any OCCT/VTK/gmsh/CGNS directory or library.
 file(READ ${WORK_DIR}/kernel/build.ninja rules)
 string(TOLOWER "${rules}" rules)
