@@ -3,10 +3,12 @@
 // (COOLINGGEN_MODULE_DIR, relative to <prefix>/bin; cmake/CoolingGenTargets.cmake).
 #include <dlfcn.h>
 
+#include <cstddef>
 #include <filesystem>
 #include <mutex>
 #include <string>
 
+#include "export/version.hpp"
 #include "src/cli/output_jobs.hpp"
 #include "src/core/error.hpp"
 
@@ -33,9 +35,13 @@ const OutputJobs* load_module() {
   const std::filesystem::path file = module_file();
   void* module = dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
   if (!module) throw AlgorithmFailure("cannot load the output module " + file.string() + ": " + dlerror());
-  const auto entry = reinterpret_cast<const OutputJobs* (*)()>(dlsym(module, kEntry));
+  const auto entry = reinterpret_cast<const OutputJobs* (*)(const char*, std::size_t)>(dlsym(module, kEntry));
   if (!entry) throw AlgorithmFailure("the output module " + file.string() + " has no " + kEntry);
-  return entry();
+  const OutputJobs* jobs = entry(io::tool_version(), sizeof(OutputJobs));
+  if (!jobs)
+    throw AlgorithmFailure("the output module " + file.string() + " belongs to another build than this coolinggen " +
+                           io::tool_version() + " (install both from one build)");
+  return jobs;
 }
 }  // namespace
 
