@@ -6,6 +6,7 @@
 #include "src/cli/console_progress.hpp"
 #include "src/cli/exit_codes.hpp"
 #include "src/cli/output_jobs.hpp"
+#include "src/pipeline/grid_job.hpp"
 #include "src/pipeline/stage_runner.hpp"
 
 namespace cg::cli {
@@ -33,9 +34,10 @@ int run_grid(const JobOptions& o) {
   pipeline::TimeLimit limit(&console, o.timeout_s);
   bool writing = false;
   try {
+    find_output_jobs();  // a missing module fails now, not after the grids
     const config::Config c = load_config_argument(o.config);
-    const OutputJobs& jobs = output_jobs();  // the grids' writers and their libraries (output_jobs.hpp)
-    const pipeline::GridResult r = jobs.run_grid(c, &limit);
+    const pipeline::GridResult r = pipeline::run_grid(c, &limit);
+    const OutputJobs& jobs = output_jobs();  // loads the writers' libraries (output_jobs.hpp)
     writing = true;
     const pipeline::WrittenGrid w = jobs.write_grid_outputs(c, r, o.output, &limit);
     console.interrupt_line();

@@ -4,7 +4,7 @@
 // them from its output module, libcoolinggen_outputs.so, loaded when a command first writes files
 // (output_jobs/loaded.cpp), so `validate` and every design refused before its outputs start with the
 // 29 libraries the model and the plan need: the dynamic loader's symbol lookups in the other 140 were
-// 0.2 s of a 0.3-0.8 s `validate` (docs/cli.md, Start-up). What links coolinggen_cli_commands without
+// 0.1-0.2 s of a 0.3-0.9 s `validate` (docs/cli.md, Start-up). What links coolinggen_cli_commands without
 // the executable's main (the CLI tests) links coolinggen_cli_linked_jobs (output_jobs/linked.cpp),
 // which calls them directly; the module is that file built as a shared object (output_jobs/module.cpp).
 #include "src/pipeline/grid_job.hpp"
@@ -16,8 +16,7 @@ namespace cg::cli {
 struct OutputJobs {
   decltype(&pipeline::write_outputs) write_outputs = nullptr;  ///< build, network
   decltype(&pipeline::write_mesh) write_mesh = nullptr;        ///< mesh
-  decltype(&pipeline::run_grid) run_grid = nullptr;            ///< grid (its file writers share the object)
-  decltype(&pipeline::write_grid_outputs) write_grid_outputs = nullptr;
+  decltype(&pipeline::write_grid_outputs) write_grid_outputs = nullptr;  ///< grid
 };
 
 /// The jobs. In the executable the first call loads the output module; throws AlgorithmFailure (exit 3,

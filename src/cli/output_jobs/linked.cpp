@@ -4,8 +4,7 @@
 namespace cg::cli {
 
 const OutputJobs& output_jobs() {
-  static const OutputJobs jobs{&pipeline::write_outputs, &pipeline::write_mesh, &pipeline::run_grid,
-                               &pipeline::write_grid_outputs};
+  static const OutputJobs jobs{&pipeline::write_outputs, &pipeline::write_mesh, &pipeline::write_grid_outputs};
   return jobs;
 }
 
