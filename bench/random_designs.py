@@ -14,7 +14,8 @@ no such care).
 Film rows are drawn without `chamber` too (NO_CHAMBER of them, inside and free), as a user who does not
 care writes them. Each variant goes through `coolinggen validate`, then `coolinggen build` (both run, so
 that every refusal of validate is compared with build's), each by the coolinggen binary as a separate
-process (a crash cannot take the bench down), the build with `--timeout`, and the build is classified:
+process (a crash cannot take the bench down), --jobs at a time with `--threads` CPUs / jobs each (as
+`coolinggen sweep` shares the CPUs among its variants), the build with `--timeout`; the build is classified:
   built    exit 0, report.json says valid, every body valid;
   refused  exit 2 with a one-line error that names a config field (`cooling.core.ribs[1].thickness: ...`);
   failed   anything else (exit 3: a boolean or check CoolingGen could not complete, said as such; exit
@@ -257,17 +258,18 @@ def run_command(binary, args, timeout):
     return code, err, time.monotonic() - t0
 
 
-def run_variant(binary, work, index, doc, timeout):
+def run_variant(binary, work, index, doc, timeout, threads):
     """`coolinggen validate`, then `coolinggen build` of one variant (build runs either way: a design
-    validate refuses must be refused by build naming the same field)."""
+    validate refuses must be refused by build naming the same field), each on `threads` threads (a
+    study's share of the CPUs per variant, as `coolinggen sweep --jobs` gives it)."""
     cfg = os.path.join(work, "v%03d.json" % index)
     out = os.path.join(work, "v%03d" % index)
     doc.setdefault("output", {})["formats"] = []  # report.json alone: the build and its checks are the test
     with open(cfg, "w") as f:
         json.dump(doc, f, indent=1)
-    vcode, verr, vseconds = run_command(binary, ["validate", cfg], 120)
+    vcode, verr, vseconds = run_command(binary, ["validate", cfg, "--threads", str(threads)], 120)
     vstatus, vdetail, _ = classify(vcode, verr, None) if vcode != 0 else ("valid", "", "")
-    code, err, seconds = run_command(binary, ["build", cfg, "-q", "-o", out, "--timeout", str(timeout)], timeout + 120)
+    code, err, seconds = run_command(binary, ["build", cfg, "-q", "-o", out, "--timeout", str(timeout), "--threads", str(threads)], timeout + 120)
     report = None
     try:
         with open(os.path.join(out, "report.json")) as f:
@@ -303,7 +305,7 @@ def main():
     ap.add_argument("--binary", required=True)
     ap.add_argument("--count", type=int, default=200)
     ap.add_argument("--seed", type=int, default=1)
-    ap.add_argument("--jobs", type=int, default=os.cpu_count() or 2)
+    ap.add_argument("--jobs", type=int, default=len(os.sched_getaffinity(0)))
     ap.add_argument("--light", action="store_true")
     ap.add_argument("--timeout", type=float, default=900)
     ap.add_argument("--keep", help="keep the variants' configs and outputs in this directory")
@@ -324,8 +326,9 @@ def main():
     work = a.keep or tempfile.mkdtemp(prefix="cg_random_designs_")
     os.makedirs(work, exist_ok=True)
     results = {}
+    threads = max(1, len(os.sched_getaffinity(0)) // a.jobs)  # as coolinggen sweep shares the CPUs
     with concurrent.futures.ThreadPoolExecutor(max_workers=a.jobs) as pool:
-        futures = {pool.submit(run_variant, a.binary, work, i, copy.deepcopy(doc), a.timeout): (i, base, inside)
+        futures = {pool.submit(run_variant, a.binary, work, i, copy.deepcopy(doc), a.timeout, threads): (i, base, inside)
                    for i, base, inside, doc in designs}
         for f in concurrent.futures.as_completed(futures):
             i, base, inside = futures[f]
@@ -345,8 +348,8 @@ def main():
             c[r["status"]] += 1
         return c
     allc, insc = counts(rows), counts([r for r in rows if r["inside"]])
-    print("random designs: %d variants (seed %d%s), %d built, %d refused, %d failed" %
-          (len(rows), a.seed, ", light" if a.light else "", allc["built"], allc["refused"], allc["failed"]))
+    print("random designs: %d variants (seed %d%s, %d at a time on %d threads each), %d built, %d refused, %d failed" %
+          (len(rows), a.seed, ", light" if a.light else "", a.jobs, threads, allc["built"], allc["refused"], allc["failed"]))
     n_in = sum(insc.values())
     print("  inside the stated ranges: %d of %d built (%.0f %%; goal >= 90 %%), %d refused, %d failed" %
           (insc["built"], n_in, 100.0 * insc["built"] / max(1, n_in), insc["refused"], insc["failed"]))

@@ -69,7 +69,7 @@ target_link_libraries(coolinggen INTERFACE coolinggen_pipeline coolinggen_networ
 file(GLOB cli_srcs CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/cli/*.cpp)
 list(FILTER cli_srcs EXCLUDE REGEX "/src/cli/main\\.cpp$")
 add_library(coolinggen_cli_commands STATIC ${cli_srcs})
-target_link_libraries(coolinggen_cli_commands PUBLIC coolinggen CLI11::CLI11)
+target_link_libraries(coolinggen_cli_commands PUBLIC coolinggen CLI11::CLI11 TBB::tbb)
 # The commands' file-writing jobs (src/cli/output_jobs.hpp): called directly by the CLI tests
 # (coolinggen_cli_linked_jobs); the executable loads them from the output module on first use, so that it
 # starts without VTK, gmsh, CGNS and OCCT's data exchange (--as-needed drops those libraries from it); it

@@ -66,6 +66,7 @@ json report_json(const ReportContent& c) {
       {"checks", checks_json(k)},
       {"warnings", c.warnings},
       {"timings_s", c.timings_s},
+      {"threads", c.threads},
       {"outputs", c.outputs},
   };
   for (const auto& [key, value] : c.extra.items()) out[key] = value;

@@ -6,6 +6,7 @@
 //     "solid": { "volume_mm3", "volume_error_mm3", "surface_area_mm2", "bbox_mm": {"min", "max", "size"},
 //                "face_count", "solid_count", "faces": {name: count}, "mesh_triangles" },
 //     "checks": { name: {"passed": bool, "message": str} }, "warnings": [str], "timings_s": {stage: s},
+//     "threads": the most threads the job computed on (--threads, src/core/parallel.hpp),
 //     "outputs": [file names written with this report, report.json included],
 //     "bodies": [{"name", "valid", "volume_mm3", "surface_area_mm2", "face_count", "faces"}] (every body,
 //                blade first; added by the pipeline), then the pipeline's other sections }
@@ -29,6 +30,7 @@ struct ReportContent {
   std::vector<std::string> warnings;           ///< e.g. general-fuse alerts
   nlohmann::ordered_json model = nlohmann::ordered_json::object();  ///< caller's model description
   nlohmann::ordered_json timings_s = nlohmann::ordered_json::object();  ///< stage -> seconds, in run order
+  int threads = 1;                             ///< the job's thread budget (parallel_workers), for its timings
   std::vector<std::string> outputs;            ///< files written with the report
   /// Further top-level sections, appended after "outputs" in order (e.g. "sections": the passage table
   /// along span, "notes": outputs skipped and why, "mesh": mesh statistics).

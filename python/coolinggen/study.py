@@ -9,7 +9,7 @@ worker), the results gathered into the table of the serial `coolinggen sweep`.
 
 How: `coolinggen sweep STUDY -o DIR --emit slurm` expands and checks the variants and writes their
 configs (DIR/variants/<id>/config.json); each task runs `coolinggen sweep STUDY -o DIR --only <id>
---jobs 1`, which builds one variant and writes its status.json and report.json (never results.csv, so
+--jobs 1 --threads T` (T: its worker's threads), which builds one variant and writes its status.json and report.json (never results.csv, so
 tasks do not race); `coolinggen sweep --collect DIR` then writes DIR/results.csv, read back here. DIR must
 be on a file system every worker sees. The table is a pandas DataFrame when pandas is installed, else a
 list of dicts, one per variant in design order; numbers are ints or floats, empty cells None.
@@ -42,11 +42,25 @@ def _cli_error(r):
     return ConfigError(message) if r.returncode == 2 else Error(message or f"exit code {r.returncode}")
 
 
+def _worker_threads():
+    """The threads of the dask worker running this task (its share of the machine: LocalCluster's
+    threads_per_worker), None outside a worker."""
+    try:
+        from distributed import get_worker
+        return get_worker().nthreads
+    except (ImportError, ValueError):
+        return None
+
+
 def _run_variant(cli, study, directory, variant, timeout):
-    """One task: builds `variant` by `coolinggen sweep --only` in a subprocess; (id, exit code, pid)."""
+    """One task: builds `variant` by `coolinggen sweep --only` in a subprocess, on the worker's threads;
+    (id, exit code, pid)."""
     args = [cli, "sweep", study, "-o", directory, "--only", variant, "--jobs", "1", "-q"]
     if timeout:
         args += ["--timeout", str(timeout)]
+    threads = _worker_threads()
+    if threads:
+        args += ["--threads", str(threads)]
     r = subprocess.run(args, capture_output=True, text=True)
     return variant, r.returncode, r.stderr.strip(), os.getpid()
 

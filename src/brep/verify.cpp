@@ -27,6 +27,7 @@
 #include <unordered_map>
 
 #include "src/brep/occt_progress.hpp"
+#include "src/core/parallel.hpp"
 #include "src/brep/solid_integrals.hpp"
 
 namespace cg::brep {
@@ -214,8 +215,10 @@ SolidCheck verify_solid(const TopoDS_Shape& shape, const VerifyOptions& options)
 
   // The mesh (on a copy) and the two integrals only read the shape: they run alongside each other
   // and alongside the topology checks below. Geometry is shared read-only (OCCT 7.6 keeps evaluation
-  // caches in the adaptors each algorithm builds, not in Geom objects).
-  auto mesh = std::async(std::launch::async, [&] {
+  // caches in the adaptors each algorithm builds, not in Geom objects). On one thread (--threads 1)
+  // they run one after the other when waited for.
+  const std::launch launch = parallel_workers() > 1 ? std::launch::async : std::launch::deferred;
+  auto mesh = std::async(launch, [&] {
     Stopwatch t;
     Check c = make_check("closed_mesh", false, "not run");
     try {
@@ -231,7 +234,7 @@ SolidCheck verify_solid(const TopoDS_Shape& shape, const VerifyOptions& options)
   // by 1.4 % with its default rule on a face trimmed by a surface of revolution, cost ~1.3 s for a wall
   // bounded by 600-pole intersection curves, and integrated a face bounded by a 2700-pole pcurve 0.4 %
   // short at every accuracy (blade_solid.cpp still keeps its pcurves light: every later boolean pays).
-  auto integrals = std::async(std::launch::async, [&] {
+  auto integrals = std::async(launch, [&] {
     Stopwatch t;
     SolidIntegrals i = integrate_solid(shape, options.gprop_relative_accuracy, true, Integrals::Volume);
     return std::make_pair(i, t.lap());
@@ -239,7 +242,7 @@ SolidCheck verify_solid(const TopoDS_Shape& shape, const VerifyOptions& options)
   // The area (the report's; no check uses it) alongside the volume. It ran in the background beyond
   // verify_solid's return for a while (saving ~0.25 s), but crashed under load reading pcurves
   // (Geom2dAdaptor_Curve::load in BRepGProp), even on a deep copy of the shape: it is waited for again.
-  auto area = std::async(std::launch::async, [&shape, eps = options.gprop_relative_accuracy] {
+  auto area = std::async(launch, [&shape, eps = options.gprop_relative_accuracy] {
     try {
       return integrate_solid(shape, eps, true, Integrals::Area).area;
     } catch (const Standard_Failure&) {

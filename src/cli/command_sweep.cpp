@@ -61,6 +61,7 @@ int run_sweep_command(const SweepArguments& a) {
   o.output = a.output;
   o.executable = study::current_executable();
   o.jobs = a.jobs > 0 ? a.jobs : parallel_workers();
+  o.threads = study::variant_threads(parallel_workers(), o.jobs);
   o.timeout_s = a.timeout_s;
   // The build stops itself at the time limit (exit 6), its watchdog within the grace; beyond that the
   // process is killed.
@@ -103,7 +104,7 @@ Command add_sweep_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("sweep", "Design study: build every variant of STUDY (docs/studies.md) into DIR, results in DIR/results.csv");
   cmd->add_option("study", a->study, "Study file (JSON, see data/schema/study.schema.json)");
   cmd->add_option("-o,--output", a->output, "Study directory (created if missing; a rerun resumes)");
-  cmd->add_option("-j,--jobs", a->jobs, "Variants built at a time (default: the core count); with --emit slurm the array's %K")
+  cmd->add_option("-j,--jobs", a->jobs, "Variants built at a time (default: the CPUs; each build computes on --threads / N of them); with --emit slurm the array's %K")
       ->check(CLI::Range(1, 4096));
   cmd->add_option("--timeout", a->timeout_s, "Time limit of each variant's build, SECONDS (its status is then timeout)")
       ->check(CLI::PositiveNumber)

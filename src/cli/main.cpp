@@ -6,6 +6,7 @@
 //   coolinggen example                                     print the built-in example config
 //   coolinggen grid [CONFIG] -o DIR [-q] [--timeout S]     structured grids around the sections (grid_job.hpp)
 //   coolinggen sweep STUDY -o DIR [--jobs N] [--timeout S]  a design study (src/study/sweep.hpp)
+// Every command but example takes --threads N (src/cli/threads.hpp).
 // Exit codes (exit_codes.hpp): 0 success, 1 command line, 2 invalid config, 3 model/solid failure or a
 // failed check, 4 output error, 5 unexpected error, 6 stopped (--timeout, Ctrl-C). Errors are one line
 // on stderr.
@@ -22,6 +23,7 @@
 #include "src/cli/console_progress.hpp"
 #include "src/cli/exit_codes.hpp"
 #include "src/cli/suggest.hpp"
+#include "src/cli/threads.hpp"
 #include "export/version.hpp"
 
 using namespace cg;
@@ -73,6 +75,9 @@ int main(int argc, char** argv) {
   const std::vector<Command> commands{add_build_command(app), add_mesh_command(app), add_validate_command(app),
                                       add_example_command(app), add_grid_command(app),
                                       add_sweep_command(app), add_network_command(app)};
+  int threads = 0;
+  for (const Command& c : commands)
+    if (c.app->get_name() != "example") add_threads_option(c.app, threads);
 
   if (const std::string unknown = unknown_command(argc, argv, commands); !unknown.empty())
     return error_exit(kUsage, unknown);
@@ -88,6 +93,11 @@ int main(int argc, char** argv) {
     return error_exit(kUsage, std::string(e.what()) + " (see coolinggen --help)");
   }
 
+  try {
+    apply_thread_budget(threads);
+  } catch (const ThreadBudgetError& e) {
+    return error_exit(kUsage, e.what());
+  }
   silence_occt();
   for (const Command& c : commands)
     if (*c.app) return run_command(c.run);

@@ -4,6 +4,8 @@
 #include <type_traits>
 #include <utility>
 
+#include "src/core/parallel.hpp"
+
 namespace cg {
 
 /// Lowers the calling thread's scheduling priority to the lowest (Linux: nice 19 for this thread
@@ -15,11 +17,13 @@ void lower_thread_priority();
 /// while it uses them, and f takes what it leaves idle (the single-threaded stretches of OCCT
 /// algorithms): measured on the cooled example, tools built beside the core at equal priority slowed
 /// the core's parallel split by half (1.2 -> 1.8 s); at nice 19 the split kept its time and the tools
-/// filled the fillet stage's idle core.
+/// filled the fillet stage's idle core. With one worker (parallel_workers(), `--threads 1`) f runs in
+/// the caller, at its priority, when the future is first waited for.
 template <class F>
 std::future<std::invoke_result_t<std::decay_t<F>&>> start_in_background(F&& f) {
-  return std::async(std::launch::async, [fn = std::forward<F>(f)]() mutable {
-    lower_thread_priority();
+  const bool beside = parallel_workers() > 1;
+  return std::async(beside ? std::launch::async : std::launch::deferred, [beside, fn = std::forward<F>(f)]() mutable {
+    if (beside) lower_thread_priority();
     return fn();
   });
 }

@@ -8,8 +8,22 @@
 
 namespace cg {
 
-/// Worker threads for parallel loops: one per core (at least 1).
-inline int parallel_workers() { return std::max(1, static_cast<int>(std::thread::hardware_concurrency())); }
+/// The CPUs this process may run on: its affinity mask (as `taskset` or Slurm's --cpus-per-task set it),
+/// else the machine's; at least 1.
+int available_cpus();
+
+/// The thread budget: the environment variable COOLINGGEN_THREADS, a whole number in [1,
+/// kMaxThreadBudget] (as OMP_NUM_THREADS is to OpenMP; `coolinggen --threads` sets it, a study passes
+/// its share to each variant); 0 when unset, -1 when set to anything else.
+constexpr int kMaxThreadBudget = 1024;
+int thread_budget();
+
+/// Worker threads for parallel loops: available_cpus(), at most the thread budget.
+int parallel_workers();
+
+/// Sets the thread budget (COOLINGGEN_THREADS) of this process and of the processes it starts; call it
+/// before any other thread runs. OCCT's and TBB's threads are the caller's (src/cli/threads.hpp).
+void set_thread_budget(int threads);
 
 /// Runs f(i, worker) for every i in [0, n) on up to `workers` threads (worker in [0, workers): give
 /// each worker its own non-thread-safe state). Items are taken in order as workers become free. When

@@ -7,6 +7,7 @@
 #include "export/grid_plot3d.hpp"
 #include "export/grid_vtk.hpp"
 #include "export/version.hpp"
+#include "src/core/parallel.hpp"
 #include "src/pipeline/grid_job.hpp"
 #include "src/pipeline/output_directory.hpp"
 #include "src/pipeline/stage_runner.hpp"
@@ -101,6 +102,7 @@ WrittenGrid write_grid_outputs(const config::Config& c, const GridResult& r, con
     for (const std::vector<StageTiming>* list : {&r.timings, static_cast<const std::vector<StageTiming>*>(&timings)})
       for (const StageTiming& x : *list) t[x.stage] = x.seconds;
     rep["timings_s"] = t;
+    rep["threads"] = parallel_workers();
     rep["outputs"] = files;
     io::write_atomically(target, [&](const fs::path& tmp) {
       std::ofstream out(tmp);

@@ -6,6 +6,7 @@
 
 #include "src/blade/section.hpp"
 #include "src/core/constants.hpp"
+#include "src/core/parallel.hpp"
 #include "src/pipeline/sha256.hpp"
 #include "export/version.hpp"
 
@@ -154,6 +155,7 @@ io::ReportContent report_content(const config::Config& c, const BuildResult& r, 
   if (r.cooling) rc.model["cooling"] = r.cooling->to_json();
   if (r.film) rc.model["cooling"]["film"] = r.film->to_json();
   for (const StageTiming& s : timings) rc.timings_s[s.stage] = s.seconds;
+  rc.threads = parallel_workers();
   rc.outputs = outputs;
   // "solid" describes the blade; "bodies" every body of the part (blade first, then inserts), so a
   // reader of the files (STEP solids, IGES shells, one .vtp per body) can check each one.

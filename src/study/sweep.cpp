@@ -136,6 +136,8 @@ StudyListing collect_study(const fs::path& dir) {
 
 fs::path stage_cache_directory(const fs::path& study_dir) { return study_dir / "cache"; }
 
+int variant_threads(int threads, int jobs) { return std::max(1, threads / std::max(1, jobs)); }
+
 SweepOutcome run_sweep(const SweepOptions& o) {
   const auto t0 = Clock::now();
   if (o.stage_cache == pipeline::StageCacheMode::kMemory)
@@ -198,6 +200,7 @@ SweepOutcome run_sweep(const SweepOptions& o) {
     ProcessSpec s;
     s.argv = {o.executable.string(), "build", p.config_file.string(), "-o", p.dir.string()};
     if (o.timeout_s > 0) s.argv.insert(s.argv.end(), {"--timeout", format_round_trip(o.timeout_s)});
+    if (o.threads > 0) s.argv.insert(s.argv.end(), {"--threads", std::to_string(o.threads)});
     if (o.stage_cache == pipeline::StageCacheMode::kDisk) {
       s.argv.insert(s.argv.end(), {"--stage-cache", stage_cache_directory(o.output).string()});
       // The first variant of a cooling stage builds and stores it; the others of this run wait until

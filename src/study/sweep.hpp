@@ -20,6 +20,9 @@ struct SweepOptions {
   std::filesystem::path study_file, output;
   std::filesystem::path executable;  ///< the coolinggen binary the variants run (current_executable())
   int jobs = 1;                      ///< processes at a time; with kSlurm the array's %K
+  /// `--threads` of each variant's build: its share of the study's threads (variant_threads); 0: the
+  /// build's own default.
+  int threads = 0;
   double timeout_s = 0;              ///< --timeout of each variant's build (0: none)
   double kill_after_s = 0;           ///< a variant's process is killed after this (0: never)
   std::string only;                  ///< one variant: its index or id (Slurm array task); empty: all
@@ -47,6 +50,9 @@ SweepOutcome run_sweep(const SweepOptions& options);
 
 /// `sweep --collect DIR`: results.csv and study_report.md from the variants' status.json and report.json.
 StudyListing collect_study(const std::filesystem::path& study_dir);
+
+/// Each variant's share of `threads` when `jobs` variants run at a time: threads / jobs, at least 1.
+int variant_threads(int threads, int jobs);
 
 /// DIR/cache: the stage cache of the study in DIR.
 std::filesystem::path stage_cache_directory(const std::filesystem::path& study_dir);

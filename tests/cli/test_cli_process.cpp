@@ -2,7 +2,8 @@
 // valid STEP (read back: one valid solid, volume equal to the report's to 1e-6 relative, the
 // integration accuracy) and report.json (the built-in example's passage table: every chamber at every
 // span, holes as holes); bad configs exit non-zero with one line on stderr naming
-// the field, and write nothing (not even the output directory).
+// the field, and write nothing (not even the output directory); --threads and the affinity mask bound
+// a job's threads.
 #define BOOST_TEST_MODULE cli_process
 #include <boost/test/unit_test.hpp>
 
@@ -228,4 +229,44 @@ BOOST_AUTO_TEST_CASE(output_module_loaded_only_to_write) {
   BOOST_TEST(err.find("libcoolinggen_outputs.so is missing") != std::string::npos, err);
   BOOST_TEST(seconds < 5.0, seconds << " s: the module is looked for before the build (a build takes > 10 s)");
   BOOST_TEST(!fs::exists(out));
+}
+
+// --threads and the affinity mask bound the threads a job computes on (src/cli/threads.hpp): a build of a
+// plain vane with --threads 1 runs on one thread throughout (its threads counted in /proc while it runs)
+// and says so in report.json; a validate of the built-in example under `taskset -c 0` (util-linux) runs
+// on one thread where it would start a worker per CPU; a COOLINGGEN_THREADS that is not a whole number
+// is a command-line error naming it, before anything is written.
+BOOST_AUTO_TEST_CASE(threads_follow_the_option_and_the_affinity) {
+  TempDir dir("cli_threads");
+  nlohmann::json cfg = nlohmann::json::parse(read_text(COOLINGGEN_SOURCE_DIR "/data/examples/c3x_vane.json"));
+  cfg["sections"][0]["points"]["file"] = COOLINGGEN_SOURCE_DIR "/data/c3x/profile_table3_cm.csv";
+  cfg.erase("cooling");
+  cfg["flow_path"]["span"] = 20.0;
+  cfg["output"]["formats"] = {"step"};  // (the previews' renderer keeps idle helper threads of its own)
+  std::ofstream(dir.path / "c3x.json") << cfg.dump(2);
+  // The most threads `coolinggen ARGS` had at once (polled from /proc while it runs).
+  const auto peak_threads = [&](const std::string& prefix, const std::string& args) {
+    const std::string script = prefix + " " + test::q(test::kCliBinary) + " " + args + " > /dev/null 2>&1 & p=$!; m=0; " +
+                               "while kill -0 $p 2> /dev/null; do n=$(ls /proc/$p/task 2> /dev/null | wc -l); " +
+                               "[ \"$n\" -gt \"$m\" ] && m=$n; done; wait $p; echo \"$? $m\" > " + test::q(dir.path / "peak.txt");
+    BOOST_TEST_REQUIRE(std::system(("bash -c " + test::q(script)).c_str()) == 0);
+    std::istringstream in(read_text(dir.path / "peak.txt"));
+    int code = -1, peak = 0;
+    in >> code >> peak;
+    BOOST_TEST(code == 0, args);
+    return peak;
+  };
+  const fs::path out = dir.path / "out";
+  BOOST_TEST(peak_threads("", "build " + test::q(dir.path / "c3x.json") + " -q -o " + test::q(out) + " --threads 1") == 1);
+  BOOST_TEST(nlohmann::json::parse(read_text(out / "report.json")).at("threads").get<int>() == 1);
+  const std::string example = "validate " + test::q(COOLINGGEN_SOURCE_DIR "/data/examples/hpt_rotor.json");
+  BOOST_TEST(peak_threads("taskset -c 0", example) == 1);
+
+  const int bad = std::system(("COOLINGGEN_THREADS=two " + test::q(test::kCliBinary) + " build " + test::q(dir.path / "c3x.json") +
+                               " -o " + test::q(dir.path / "bad") + " 2> " + test::q(dir.path / "err.txt")).c_str());
+  BOOST_TEST((WIFEXITED(bad) && WEXITSTATUS(bad) == 1));
+  const std::string err = read_text(dir.path / "err.txt");
+  BOOST_TEST(lines(err) == 1, err);
+  BOOST_TEST(err.find("COOLINGGEN_THREADS must be a whole number in [1, 1024], got 'two'") != std::string::npos, err);
+  BOOST_TEST(!fs::exists(dir.path / "bad"));
 }

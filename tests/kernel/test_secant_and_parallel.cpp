@@ -1,16 +1,20 @@
 // newton::solve_bracketed_secant (Illinois regula falsi) against closed-form roots, and against
 // bisection's evaluation count on functions where plain regula falsi stalls; parallel_for runs every
 // item once and reports the error of the lowest failing item whatever the scheduling; start_in_background
-// returns the work's value or exception and runs it at the lowest priority, the caller's unchanged.
+// returns the work's value or exception and runs it at the lowest priority, the caller's unchanged;
+// parallel_workers follows the affinity mask and the thread budget (COOLINGGEN_THREADS), and on one
+// worker background work runs in the caller.
 #define BOOST_TEST_MODULE secant_and_parallel
 #include <boost/test/unit_test.hpp>
 
+#include <sched.h>
 #include <sys/resource.h>
 #include <sys/syscall.h>
 #include <unistd.h>
 
 #include <atomic>
 #include <cmath>
+#include <cstdlib>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -82,6 +86,42 @@ BOOST_AUTO_TEST_CASE(parallel_for_runs_every_item_once_and_rethrows_the_lowest_e
   parallel_for(0, 2, [](int, int) { throw std::runtime_error("no items: never called"); });
 }
 
+// The CPUs are those the affinity mask allows (a mask of one CPU set on this thread: 1), the budget caps
+// them, a budget above them does not add threads, and a budget that is not a whole number in [1, 1024]
+// reads as -1 and is ignored.
+BOOST_AUTO_TEST_CASE(parallel_workers_follow_the_affinity_and_the_budget) {
+  unsetenv("COOLINGGEN_THREADS");
+  cpu_set_t mask;
+  BOOST_TEST_REQUIRE(sched_getaffinity(0, sizeof mask, &mask) == 0);
+  const int cpus = CPU_COUNT(&mask);
+  BOOST_TEST(available_cpus() == cpus);
+  BOOST_TEST(thread_budget() == 0);
+  BOOST_TEST(parallel_workers() == cpus);
+  cpu_set_t one;
+  CPU_ZERO(&one);
+  for (int c = 0; c < CPU_SETSIZE; ++c)
+    if (CPU_ISSET(c, &mask)) {
+      CPU_SET(c, &one);
+      break;
+    }
+  BOOST_TEST_REQUIRE(sched_setaffinity(0, sizeof one, &one) == 0);
+  BOOST_TEST(available_cpus() == 1);
+  BOOST_TEST(parallel_workers() == 1);
+  BOOST_TEST_REQUIRE(sched_setaffinity(0, sizeof mask, &mask) == 0);
+
+  set_thread_budget(1);
+  BOOST_TEST(std::string(std::getenv("COOLINGGEN_THREADS")) == "1");  // the processes it starts inherit it
+  BOOST_TEST(parallel_workers() == 1);
+  set_thread_budget(cpus + 3);
+  BOOST_TEST(parallel_workers() == cpus);
+  for (const char* bad : {"0", "-2", "two", "2.5", "1025", " 2"}) {
+    setenv("COOLINGGEN_THREADS", bad, 1);
+    BOOST_TEST(thread_budget() == -1, bad);
+    BOOST_TEST(parallel_workers() == cpus, bad);
+  }
+  unsetenv("COOLINGGEN_THREADS");
+}
+
 namespace {
 // The calling thread's nice value (Linux: per thread).
 int thread_nice() {
@@ -90,6 +130,8 @@ int thread_nice() {
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(background_work_returns_its_result_at_the_lowest_priority) {
+  unsetenv("COOLINGGEN_THREADS");
+  BOOST_TEST_REQUIRE(parallel_workers() > 1, "one CPU: the work would run in the caller (next test case)");
   const int caller = thread_nice();
   // The value, and the priority the work ran at (and the threads it starts inherit).
   auto f = start_in_background([] {
@@ -111,4 +153,28 @@ BOOST_AUTO_TEST_CASE(background_work_returns_its_result_at_the_lowest_priority) 
     what = e.what();
   }
   BOOST_TEST(what == "background failure");
+}
+
+// On one worker (--threads 1) the work runs in the caller when first waited for, at its priority.
+BOOST_AUTO_TEST_CASE(background_work_on_one_thread_runs_when_waited_for) {
+  set_thread_budget(1);
+  const std::thread::id caller = std::this_thread::get_id();
+  bool ran = false;
+  auto f = start_in_background([&] {
+    ran = true;
+    return std::make_pair(std::this_thread::get_id(), thread_nice());
+  });
+  BOOST_TEST(!ran);
+  const auto [id, nice] = f.get();
+  BOOST_TEST((id == caller));
+  BOOST_TEST(nice == thread_nice());
+  auto g = start_in_background([]() -> int { throw std::runtime_error("failure in the caller"); });
+  std::string what;
+  try {
+    g.get();
+  } catch (const std::runtime_error& e) {
+    what = e.what();
+  }
+  BOOST_TEST(what == "failure in the caller");
+  unsetenv("COOLINGGEN_THREADS");
 }

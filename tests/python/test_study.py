@@ -1,6 +1,7 @@
 """coolinggen.study (issue 23): a 12-variant study of a light config run on a dask.distributed LocalCluster
 of 2 workers, each variant a task running the CLI in a subprocess, gives the table of the serial
-`coolinggen sweep` (same status and metrics per variant; build_s and process_s, wall times, excepted).
+`coolinggen sweep` (same status and metrics per variant; build_s and process_s, wall times, excepted), each
+build on its worker's one thread (report.json "threads").
 
 Usage: python3 test_study.py CLI"""
 import json
@@ -52,6 +53,10 @@ def main():
         statuses = [row["status"] for row in rows]
         check(statuses.count("built") == 9 and statuses.count("refused") == 3, f"statuses {statuses}")
         check(all(row["solid_volume_mm3"] > 0 for row in rows if row["status"] == "built"), "volumes")
+        for row in rows:  # each build on its worker's one thread
+            if row["status"] == "built":
+                with open(os.path.join(tmp, "dask", "variants", str(row["id"]), "report.json")) as f:
+                    check(json.load(f)["threads"] == 1, f"variant {row['id']} not on its worker's one thread")
         pids = {pid for _, _, _, pid in coolinggen.study.run.last_tasks}
         check(len(pids) == 2, f"tasks ran in {len(pids)} worker processes")
         print(f"{len(rows)} variants on 2 Dask workers: {statuses.count('built')} built, "

@@ -3,8 +3,10 @@
 // process, results.csv against each variant's report.json, resume (nothing rebuilt; a changed row
 // rebuilds only itself), a timeout, Ctrl-C, study-file errors naming the field, --emit slurm and
 // --collect; study_report.html in a real browser; and the designs (grid, Latin hypercube) in process.
+// Each variant computes on its share of the CPUs (report.json "threads").
 #define BOOST_TEST_MODULE study_sweep
 #include <boost/test/unit_test.hpp>
+#include <sched.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -247,6 +249,10 @@ BOOST_AUTO_TEST_CASE(sweep_builds_resumes_and_collects) {
     BOOST_TEST(row.at("hole_count") == "0");
     BOOST_TEST(row.at("error").empty(), row.at("error"));  // a built variant has no error
     BOOST_TEST(std::stod(row.at("build_s")) > 0);
+    // Two variants at a time share the CPUs: each computes on half of them (at least one thread).
+    cpu_set_t mask;
+    BOOST_TEST_REQUIRE(sched_getaffinity(0, sizeof mask, &mask) == 0);
+    BOOST_TEST(report.at("threads").get<int>() == std::max(1, CPU_COUNT(&mask) / 2));
   }
   BOOST_TEST(rows[2].at("status") == "refused");
   BOOST_TEST(rows[2].at("error").rfind("cooling.core.wall_thickness: must be ", 0) == 0u, rows[2].at("error"));
