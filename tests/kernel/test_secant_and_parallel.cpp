@@ -123,6 +123,17 @@ BOOST_AUTO_TEST_CASE(parallel_workers_follow_the_affinity_and_the_budget) {
 }
 
 namespace {
+// What the future's get() throws ("" when it returns).
+template <class Future>
+std::string error_of(Future& f) {
+  try {
+    f.get();
+  } catch (const std::runtime_error& e) {
+    return e.what();
+  }
+  return "";
+}
+
 // The calling thread's nice value (Linux: per thread).
 int thread_nice() {
   return getpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)));
@@ -146,13 +157,7 @@ BOOST_AUTO_TEST_CASE(background_work_returns_its_result_at_the_lowest_priority) 
   BOOST_TEST(thread_nice() == caller);  // only the background thread was lowered
   // Its exception comes out of get().
   auto g = start_in_background([]() -> int { throw std::runtime_error("background failure"); });
-  std::string what;
-  try {
-    g.get();
-  } catch (const std::runtime_error& e) {
-    what = e.what();
-  }
-  BOOST_TEST(what == "background failure");
+  BOOST_TEST(error_of(g) == "background failure");
 }
 
 // On one worker (--threads 1) the work runs in the caller when first waited for, at its priority.
@@ -169,12 +174,6 @@ BOOST_AUTO_TEST_CASE(background_work_on_one_thread_runs_when_waited_for) {
   BOOST_TEST((id == caller));
   BOOST_TEST(nice == thread_nice());
   auto g = start_in_background([]() -> int { throw std::runtime_error("failure in the caller"); });
-  std::string what;
-  try {
-    g.get();
-  } catch (const std::runtime_error& e) {
-    what = e.what();
-  }
-  BOOST_TEST(what == "failure in the caller");
+  BOOST_TEST(error_of(g) == "failure in the caller");
   unsetenv("COOLINGGEN_THREADS");
 }
