@@ -8,6 +8,7 @@
 #include "src/pipeline/outputs.hpp"
 #include "src/pipeline/report.hpp"
 #include "src/pipeline/stage_runner.hpp"
+#include "src/core/parallel.hpp"
 
 namespace cg::pipeline {
 namespace fs = std::filesystem;
@@ -25,7 +26,7 @@ mesh::MeshOptions mesh_options(const config::MeshConfig& c) {
   m.write_vtu = c.vtu;
   m.write_cgns = c.cgns;
   m.groups = c.group_by_face_name ? mesh::GroupBy::FaceName : mesh::GroupBy::Kind;
-  m.threads = c.threads;
+  m.threads = std::min(c.threads, parallel_workers());  // at most the job's threads (--threads)
   m.optimize = c.optimize;
   return m;
 }
