@@ -27,8 +27,8 @@
 #include <unordered_map>
 
 #include "src/brep/occt_progress.hpp"
-#include "src/core/parallel.hpp"
 #include "src/brep/solid_integrals.hpp"
+#include "src/core/parallel.hpp"
 
 namespace cg::brep {
 namespace {
