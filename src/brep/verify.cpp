@@ -217,7 +217,7 @@ SolidCheck verify_solid(const TopoDS_Shape& shape, const VerifyOptions& options)
   // and alongside the topology checks below. Geometry is shared read-only (OCCT 7.6 keeps evaluation
   // caches in the adaptors each algorithm builds, not in Geom objects). On one thread (--threads 1)
   // they run one after the other when waited for.
-  const std::launch launch = parallel_workers() > 1 ? std::launch::async : std::launch::deferred;
+  const std::launch launch = beside_or_deferred();
   auto mesh = std::async(launch, [&] {
     Stopwatch t;
     Check c = make_check("closed_mesh", false, "not run");

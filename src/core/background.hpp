@@ -21,8 +21,9 @@ void lower_thread_priority();
 /// the caller, at its priority, when the future is first waited for.
 template <class F>
 std::future<std::invoke_result_t<std::decay_t<F>&>> start_in_background(F&& f) {
-  const bool beside = parallel_workers() > 1;
-  return std::async(beside ? std::launch::async : std::launch::deferred, [beside, fn = std::forward<F>(f)]() mutable {
+  const std::launch launch = beside_or_deferred();
+  const bool beside = launch == std::launch::async;
+  return std::async(launch, [beside, fn = std::forward<F>(f)]() mutable {
     if (beside) lower_thread_priority();
     return fn();
   });

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <exception>
+#include <future>
 #include <thread>
 #include <vector>
 
@@ -20,6 +21,10 @@ int thread_budget();
 
 /// Worker threads for parallel loops: available_cpus(), at most the thread budget.
 int parallel_workers();
+
+/// How work that could run beside the caller starts: on a thread of its own (std::launch::async) when
+/// there is more than one worker, else deferred to the caller's first wait (`--threads 1`).
+inline std::launch beside_or_deferred() { return parallel_workers() > 1 ? std::launch::async : std::launch::deferred; }
 
 /// Sets the thread budget (COOLINGGEN_THREADS) of this process and of the processes it starts; call it
 /// before any other thread runs. OCCT's and TBB's threads are the caller's (src/cli/threads.hpp).
