@@ -91,7 +91,7 @@ Workload cooled_blade_workload() {
   const blade::BladeModel& model = example_model();
   const brep::BladeSolid s = brep::build_blade_solid(model);
   static features::PassagesResult cooled;
-  cooled = pipeline::apply_cooling(c.cooling, model, pipeline::plan_cooling(c.cooling, model), brep::NamedShape{s.solid, s.faces});
+  cooled = pipeline::apply_cooling(model, pipeline::plan_cooling(c.cooling, model), brep::NamedShape{s.solid, s.faces});
   Workload w;
   std::ostringstream d;
   d << "cooled hpt_rotor example blade, " << cooled.blade.faces.size() << " faces";

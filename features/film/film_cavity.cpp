@@ -175,7 +175,11 @@ FilmCavity film_cavity_of_core(const blade::BladeModel& model, const CoreDefinit
     InsertChamber ic;
     ic.number = c.number;
     ic.name = "chamber_" + std::to_string(c.number);
-    ic.wall_thickness = def.wall_thickness.is_constant() ? def.wall_thickness.min_value() : 0.0;
+    // The chamber's wall where it is one thickness over the chamber (a constant wall, or a table flat
+    // there, as upstream of a cutback's TE land: cutback_wall.hpp); else 0, which inserts refuse.
+    const double ts = def.wall_thickness.constant_over(std::min(c.suction_from, c.suction_to), std::max(c.suction_from, c.suction_to));
+    const double tp = def.wall_thickness.constant_over(std::min(c.pressure_from, c.pressure_to), std::max(c.pressure_from, c.pressure_to));
+    ic.wall_thickness = ts == tp ? ts : 0.0;  // NaN never equal
     ic.suction_from = c.suction_from;
     ic.suction_to = c.suction_to;
     ic.pressure_from = c.pressure_to;

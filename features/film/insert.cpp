@@ -90,8 +90,8 @@ void check_insert_input(const InsertChamber& chamber, const InsertDefinition& de
   const std::string name = "insert_" + std::to_string(index);
   const double Z = def.gap, D = def.jet_diameter;
   if (!(chamber.wall_thickness > 0))
-    throw FilmInputError(field + ".chamber", name + ": inserts need a constant wall thickness of the core (" + chamber.name +
-                                                 "'s wall is tabulated)");
+    throw FilmInputError(field + ".chamber", name + ": inserts need a constant wall thickness of the core over their chamber (" +
+                                                 chamber.name + "'s wall varies)");
   if (!chamber.refusal.empty()) throw FilmInputError(field + ".chamber", name + ": " + chamber.refusal);
   if (!(Z > 0)) throw FilmInputError(field + ".gap", name + ": the gap must be > 0");
   if (Z < chamber.min_gap) {

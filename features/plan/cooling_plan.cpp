@@ -1,18 +1,23 @@
 #include "features/plan/cooling_plan.hpp"
 
 #include <chrono>
+#include <exception>
 
 #include "features/film/film_cavity.hpp"
 #include "features/film/film_prechecks.hpp"
 #include "features/film/film_rows.hpp"
 #include "features/internal_cooling.hpp"
+#include "features/wall/cutback_wall.hpp"
 #include "features/wall/trailing_edge.hpp"
 #include "features/wall/turbulators.hpp"
 
 namespace cg::features {
 
-CoolingPlan plan_cooling(const blade::BladeModel& model, const PassagesDefinition& passages, const FilmCoolingDefinition& film) {
+namespace {
+
+CoolingPlan plan_as_defined(const blade::BladeModel& model, const PassagesDefinition& passages, const FilmCoolingDefinition& film) {
   CoolingPlan plan;
+  plan.passages = passages;
   auto t0 = std::chrono::steady_clock::now();
   const auto lap = [&](const char* part) {
     const auto t = std::chrono::steady_clock::now();
@@ -44,6 +49,31 @@ CoolingPlan plan_cooling(const blade::BladeModel& model, const PassagesDefinitio
     lap("wall_features");
   }
   return plan;
+}
+
+}  // namespace
+
+CoolingPlan plan_cooling(const blade::BladeModel& model, const PassagesDefinition& passages, const FilmCoolingDefinition& film) {
+  try {
+    return plan_as_defined(model, passages, film);
+  } catch (const LipOverChamber& e) {
+    // The lip over the last chamber: planned again on the wall thickened toward the TE. Should a slot
+    // between its nodes still find the lip over the chamber, the first refusal is the one to act on.
+    const std::exception_ptr refusal = std::current_exception();
+    std::string why_not;
+    const std::optional<CutbackWall> wall = wall_for_cutback(model, *passages.core, why_not);
+    if (!wall && !why_not.empty()) throw LipOverChamber(e.field(), std::string(e.what()) + "; " + why_not);
+    if (!wall) throw;
+    PassagesDefinition thickened = passages;
+    thickened.core->wall_thickness = wall->wall_thickness;
+    try {
+      CoolingPlan plan = plan_as_defined(model, thickened, film);
+      plan.notes.push_back(wall->note);
+      return plan;
+    } catch (const LipOverChamber&) {
+      std::rethrow_exception(refusal);
+    }
+  }
 }
 
 }  // namespace cg::features

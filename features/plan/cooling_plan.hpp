@@ -40,6 +40,11 @@
 namespace cg::features {
 
 struct CoolingPlan {
+  /// The passages as planned: the definition given, or with the wall thickened toward the TE where a
+  /// cutback's lip would lie over the last chamber (wall/cutback_wall.hpp). What the build builds.
+  PassagesDefinition passages;
+  /// What the plan changed in the definition, one line each (the report's warnings, `validate`'s output).
+  std::vector<std::string> notes;
   /// The core's walls, chambers and turnaround ends (build_core_walls; no cells, no solid); none
   /// without a core.
   std::optional<CoreBuild> core;
@@ -59,8 +64,10 @@ struct CoolingPlan {
   std::vector<std::pair<std::string, double>> seconds;
 };
 
-/// Plans `passages` and `film` on `model` (which the result points to: it must outlive it). Throws
-/// PassageInputError or FilmInputError naming the field below "cooling".
+/// Plans `passages` and `film` on `model` (which the result points to: it must outlive it). A
+/// pressure-side cutback whose lip would lie over the last chamber (LipOverChamber) is planned again on
+/// the wall thickened toward the TE (wall_for_cutback), when that helps: the plan's `passages` and
+/// `notes` say so. Throws PassageInputError or FilmInputError naming the field below "cooling".
 CoolingPlan plan_cooling(const blade::BladeModel& model, const PassagesDefinition& passages, const FilmCoolingDefinition& film);
 
 }  // namespace cg::features

@@ -284,12 +284,12 @@ SlotLayout slot_layout(const blade::BladeModel& model, const blade::BladeCoordin
   return out;
 }
 
-// A cutback's lip must lie downstream of the last chamber's end (0.1 mm clear).
+// A cutback's lip must lie downstream of the last chamber's end (kLipClear).
 void check_lip(const TrailingEdgeDefinition& te, const TeFrame& f, double s) {
-  if (!(f.te_x - te.cutback_length > f.crease_x + 0.1)) {
-    const ValueLimitText t = format_value_limit(te.cutback_length, f.te_x - f.crease_x - 0.1, Allowed::below);
-    throw PassageInputError(field("cutback_length"), "must be < " + t.limit + " mm at span " + format_number(s) +
-                                                         " (the lip must lie downstream of the last chamber's end), got " + t.value);
+  if (!(f.te_x - te.cutback_length > f.crease_x + kLipClear)) {
+    const ValueLimitText t = format_value_limit(te.cutback_length, f.te_x - f.crease_x - kLipClear, Allowed::below);
+    throw LipOverChamber(field("cutback_length"), "must be < " + t.limit + " mm at span " + format_number(s) +
+                                                      " (the lip must lie downstream of the last chamber's end), got " + t.value);
   }
 }
 
@@ -675,6 +675,11 @@ void plan_pin_fins(const PinFinDefinition& pf, const blade::BladeCoordinates& co
 }
 
 }  // namespace
+
+double te_region_length(const blade::BladeCoordinates& coords, const CoreDefinition& def, double span) {
+  const TeFrame f = te_frame(coords, def, span);
+  return f.te_x - f.crease_x;
+}
 
 TrailingEdgePlan plan_trailing_edge(const blade::BladeModel& model, const CoreDefinition& def, const CoreBuild& core,
                                     WallLines& lines) {

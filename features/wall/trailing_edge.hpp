@@ -76,13 +76,29 @@ struct TrailingEdgeBuild {
   bool through_crease = false;
 };
 
+/// mm: how far downstream of the last chamber's end (the inner wall's crease) a cutback's lip must lie.
+constexpr double kLipClear = 0.1;
+
+/// A pressure-side cutback whose lip would lie over the last chamber (not kLipClear downstream of its
+/// end): "core.trailing_edge.cutback_length" with the limit at the span. The plan
+/// (features/plan/cooling_plan.hpp) then tries the wall thickened toward the TE (cutback_wall.hpp).
+class LipOverChamber : public PassageInputError {
+ public:
+  using PassageInputError::PassageInputError;
+};
+
+/// Along the slot frame at `span` (see the header comment): the TE point's x less the crease's x, i.e.
+/// the longest cutback (less kLipClear) the chamber's end leaves room for. Throws PassageInputError
+/// where the inner wall rounds the TE (no crease), blade::InnerWallError where the wall is too thick.
+double te_region_length(const blade::BladeCoordinates& coords, const CoreDefinition& def, double span);
+
 /// Checks without geometry: sizes, slot pitch > slot width, count, taper (PassageInputError with
 /// "core.trailing_edge.<field>").
 void check_trailing_edge_definition(const CoreDefinition& def);
 /// The placement of the slots and pins on the core's walls (the planning stage's part,
 /// features/plan/cooling_plan.hpp; no tools): the slots' layout between the end walls (pitch, count),
 /// each slot's frame, lip, floor and inlet station, each pin's station, axis and length. Throws
-/// PassageInputError when they do not fit (a cutback longer than the TE region, the slot does not fit
+/// PassageInputError when they do not fit (a cutback longer than the TE region: LipOverChamber, the slot does not fit
 /// the chamber, no suction-side wall left under the cutback or, centreline, less than 0.1 mm beside the
 /// slot over the first half of the TE region, a floor through the TE's tip, a taper that closes the slot
 /// or (centreline) widens the inlets into each other, pins reaching the last rib or finding no chamber).

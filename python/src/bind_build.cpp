@@ -151,12 +151,13 @@ std::vector<std::string> write(Built& b, const py::handle& directory, const py::
 py::dict validate(const py::handle& config, const py::object& progress_callback) {
   const config::Config c = load_config(config);
   PythonProgress progress(progress_callback);
-  blade::BladeModel m;
-  run_job(progress, 0, "", [&](ProgressSink* sink) { m = pipeline::validate(c, sink); });
+  pipeline::Validation v;
+  run_job(progress, 0, "", [&](ProgressSink* sink) { v = pipeline::validate(c, sink); });
   py::dict d;
   d["name"] = c.name;
-  d["flow_path"] = m.trim.straight ? "straight" : "meridional";
+  d["flow_path"] = v.model.trim.straight ? "straight" : "meridional";
   d["sections"] = config::section_count(c);
+  d["notes"] = v.notes;
   return d;
 }
 
@@ -193,7 +194,7 @@ void bind_build(py::module_& m) {
         "(Cancelled). Failed checks do not raise: see Result.valid.");
   m.def("validate", &validate, py::arg("config"), py::arg("progress") = py::none(),
         "What `coolinggen validate` checks (config, blade model, cooling input), without the solid. "
-        "Returns {'name', 'flow_path', 'sections'}; raises ConfigError.");
+        "Returns {'name', 'flow_path', 'sections', 'notes'} (notes: what the cooling plan changed, e.g. a wall thickened toward the TE for a cutback); raises ConfigError.");
   m.def("example", [] { return json_module().attr("loads")(config::builtin_example_json()); },
         "The built-in example config (data/examples/hpt_rotor.json) as a dict.");
 }

@@ -37,8 +37,9 @@ double monotone_cubic(const std::vector<double>& x, const std::vector<double>& y
   require(!x.empty() && x.size() == y.size(), "monotone_cubic: need as many values as abscissae (>= 1)");
   if (x.size() == 1 || t <= x.front()) return y.front();
   if (t >= x.back()) return y.back();
-  const std::vector<double> m = monotone_slopes(x, y);
   const std::size_t i = static_cast<std::size_t>(std::upper_bound(x.begin(), x.end(), t) - x.begin()) - 1;
+  if (y[i] == y[i + 1]) return y[i];  // flat: both slopes are 0 (exactly, not to the Hermite sum's rounding)
+  const std::vector<double> m = monotone_slopes(x, y);
   const double h = x[i + 1] - x[i], s = (t - x[i]) / h;
   const double h00 = (1 + 2 * s) * (1 - s) * (1 - s), h10 = s * (1 - s) * (1 - s), h01 = s * s * (3 - 2 * s),
                h11 = s * s * (s - 1);
@@ -80,11 +81,33 @@ ThicknessField ThicknessField::table(std::vector<double> spans, std::vector<doub
   return f;
 }
 
+double ThicknessField::constant_over(double lo, double hi) const {
+  if (spans_.empty()) return values_.empty() ? std::nan("") : values_[0][0];
+  // Nodes a..b: the last one at or below lo (else the first) to the first at or above hi (else the last).
+  const std::size_t n = chords_.size();
+  const std::size_t a = static_cast<std::size_t>(
+      std::max<std::ptrdiff_t>(0, std::upper_bound(chords_.begin(), chords_.end(), lo) - chords_.begin() - 1));
+  const std::size_t b = std::min(n - 1, static_cast<std::size_t>(std::lower_bound(chords_.begin(), chords_.end(), hi) - chords_.begin()));
+  const double v = values_[0][a];
+  for (const std::vector<double>& row : values_)
+    for (std::size_t j = a; j <= b; ++j)
+      if (row[j] != v) return std::nan("");
+  return v;
+}
+
 double ThicknessField::at(double span, double chord) const {
   if (spans_.empty()) return values_.empty() ? 0.0 : values_[0][0];
-  std::vector<double> along_span(spans_.size());
-  for (std::size_t i = 0; i < spans_.size(); ++i) along_span[i] = monotone_cubic(chords_, values_[i], chord);
-  return monotone_cubic(spans_, along_span, span);
+  // Along span only the rows i-1 .. i+2 around span's interval [spans_[i], spans_[i+1]]: the
+  // interpolant there uses the slopes at i and i + 1, which depend on the neighbouring intervals only
+  // (and, at the table's ends, on the end interval), so the window gives the same value as all rows.
+  const std::size_t n = spans_.size();
+  const std::size_t i = static_cast<std::size_t>(std::max<std::ptrdiff_t>(
+      0, std::upper_bound(spans_.begin(), spans_.end(), span) - spans_.begin() - 1));
+  const std::size_t lo = i == 0 ? 0 : i - 1, hi = std::min(n, i + 3);
+  std::vector<double> rows(spans_.begin() + static_cast<std::ptrdiff_t>(lo), spans_.begin() + static_cast<std::ptrdiff_t>(hi));
+  std::vector<double> along_span(hi - lo);
+  for (std::size_t k = lo; k < hi; ++k) along_span[k - lo] = monotone_cubic(chords_, values_[k], chord);
+  return monotone_cubic(rows, along_span, span);
 }
 
 }  // namespace cg::blade

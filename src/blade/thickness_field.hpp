@@ -23,6 +23,9 @@ class ThicknessField {
   bool is_constant() const { return spans_.empty(); }
   /// False when the thickness is the same at every chord of a span (a constant, or a table of one chord).
   bool varies_along_chord() const { return chords_.size() > 1; }
+  /// The thickness where it is the same at every span and every chord in [lo, hi] (every row's values at
+  /// the chord nodes bracketing [lo, hi] equal: the interpolant is flat there), else NaN.
+  double constant_over(double lo, double hi) const;
 
  private:
   std::vector<double> spans_, chords_;

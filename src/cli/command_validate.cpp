@@ -17,9 +17,10 @@ Command add_validate_command(CLI::App& app) {
   cmd->add_option("config", *path, "Config file (JSON)")->required();
   return {cmd, [path] {
             const config::Config c = load_config_argument(*path);
-            const blade::BladeModel m = pipeline::validate(c);
+            const pipeline::Validation v = pipeline::validate(c);
             std::printf("%s: valid (%s flow path, %zu sections)\n", path->c_str(),
-                        m.trim.straight ? "straight" : "meridional", config::section_count(c));
+                        v.model.trim.straight ? "straight" : "meridional", config::section_count(c));
+            for (const std::string& note : v.notes) std::printf("planned: %s\n", note.c_str());
             if (!c.cooling.empty())
               std::printf("planned and checked: the core's walls, chambers, turnaround ends and inlets (their rims within the walls), "
                           "turbulators, trailing-edge slots and pin fins, every film and showerhead hole (wall crossing, chamber, "

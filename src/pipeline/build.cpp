@@ -43,7 +43,7 @@ features::PassagesResult cooling_stage(const config::Config& c, const features::
                              "); built again");
       }
     }
-  features::PassagesResult built = apply_cooling(c.cooling, r.model, plan, r.part.front().geometry, verification);
+  features::PassagesResult built = apply_cooling(r.model, plan, r.part.front().geometry, verification);
   StageCacheEntry entry;
   features::PassagesResult canonical;
   try {
@@ -68,10 +68,10 @@ features::PassagesResult cooling_stage(const config::Config& c, const features::
 
 }  // namespace
 
-blade::BladeModel validate(const config::Config& config, ProgressSink* progress) {
-  blade::BladeModel model = config::build_model(config, progress);
-  if (!config.cooling.empty()) plan_cooling(config.cooling, model);  // the plan: no solid needed
-  return model;
+Validation validate(const config::Config& config, ProgressSink* progress) {
+  Validation v{config::build_model(config, progress), {}};
+  if (!config.cooling.empty()) v.notes = plan_cooling(config.cooling, v.model).notes;  // the plan: no solid needed
+  return v;
 }
 
 BuildResult run_build(const config::Config& config, const BuildOptions& options, ProgressSink* progress) {
@@ -84,6 +84,7 @@ BuildResult run_build(const config::Config& config, const BuildOptions& options,
     stages.run("plan", "cooling plan (placements and checks before any boolean)", [&] {
       plan = plan_cooling(config.cooling, r.model);
       r.slots = plan.trailing_edge.slots;
+      for (const std::string& note : plan.notes) r.warnings.push_back("plan: " + note);
     });
   stages.run("solid", "solid (blade surface trimmed to the flow path)", [&] {
     brep::BladeSolid solid = brep::build_blade_solid(r.model, progress);

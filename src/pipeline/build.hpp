@@ -51,9 +51,16 @@ struct BuildOptions {
 /// throw: see BuildResult::valid().
 BuildResult run_build(const config::Config& config, const BuildOptions& options = {}, ProgressSink* progress = nullptr);
 
+/// What `coolinggen validate` found: the blade model and what the cooling plan changed in the
+/// definition (features::CoolingPlan::notes; a build reports them as warnings "plan: ...").
+struct Validation {
+  blade::BladeModel model;
+  std::vector<std::string> notes;
+};
+
 /// What `coolinggen validate` checks without building the solid (the output formats are checked when
-/// the config is parsed): the blade model (returned) and the cooling input that needs only the model (pipeline/cooling.hpp).
+/// the config is parsed): the blade model and the cooling input that needs only the model (pipeline/cooling.hpp).
 /// Throws ConfigError.
-blade::BladeModel validate(const config::Config& config, ProgressSink* progress = nullptr);
+Validation validate(const config::Config& config, ProgressSink* progress = nullptr);
 
 }  // namespace cg::pipeline

@@ -25,11 +25,10 @@ features::CoolingPlan plan_cooling(const config::CoolingConfig& cooling, const b
   }
 }
 
-features::PassagesResult apply_cooling(const config::CoolingConfig& cooling, const blade::BladeModel& model,
-                                       const features::CoolingPlan& plan, const brep::NamedShape& blade,
+features::PassagesResult apply_cooling(const blade::BladeModel& model, const features::CoolingPlan& plan, const brep::NamedShape& blade,
                                        features::Verification verification) {
   try {
-    return features::build_passages(model, blade, cooling.passages, plan.core, plan.trailing_edge, verification);
+    return features::build_passages(model, blade, plan.passages, plan.core, plan.trailing_edge, verification);
   } catch (const features::PassageInputError& e) {
     throw config::cooling_error(e);
   }

@@ -19,10 +19,10 @@ namespace cg::pipeline {
 /// the result.
 features::CoolingPlan plan_cooling(const config::CoolingConfig& cooling, const blade::BladeModel& model);
 
-/// The passages of `cooling` built into `blade` on `plan` (plan_cooling of the same cooling and model).
-/// `verification`: see features::build_passages.
-features::PassagesResult apply_cooling(const config::CoolingConfig& cooling, const blade::BladeModel& model,
-                                       const features::CoolingPlan& plan, const brep::NamedShape& blade,
+/// The passages of `plan` (plan_cooling on `model`) built into `blade`, as the plan took them
+/// (`plan.passages`: the wall thickened toward the TE where the plan did). `verification`: see
+/// features::build_passages.
+features::PassagesResult apply_cooling(const blade::BladeModel& model, const features::CoolingPlan& plan, const brep::NamedShape& blade,
                                        features::Verification verification = features::Verification::EachStep);
 
 /// The film stage: the film rows, showerhead and inserts of `cooling` built into `cooled` (the result of

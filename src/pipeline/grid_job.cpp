@@ -9,7 +9,7 @@ namespace cg::pipeline {
 GridResult run_grid(const config::Config& c, ProgressSink* progress) {
   GridResult out;
   StageRunner stages(progress, out.timings);
-  stages.run("blade_model", "blade model", [&] { out.model = validate(c); });
+  stages.run("blade_model", "blade model", [&] { out.model = validate(c).model; });
   for (int k : config::grid_sections(c.grid, config::section_count(c))) {
     SectionGridRun run;
     run.section = k;

@@ -81,6 +81,34 @@ BOOST_AUTO_TEST_CASE(monotone_interpolation) {
   BOOST_TEST(std::abs(f.at(0.5, 0) - 2.25) < 0.3);
   BOOST_TEST(f.min_value() == 1.0);
   BOOST_TEST(f.max_value() == 2.5);
+  // Constant over a chord range only where every row is flat over the nodes bracketing it.
+  const ThicknessField land = ThicknessField::table({0, 0.5, 1}, {-1, -0.95, -0.9, 0.9, 0.95, 1},
+                                                    {{1.2, 1.2, 1, 1, 1.2, 1.2}, {1, 1, 1, 1, 1, 1}, {1.3, 1.3, 1, 1, 1.3, 1.3}});
+  BOOST_TEST(land.constant_over(-0.9, 0.9) == 1.0);
+  BOOST_TEST(land.constant_over(0.2, 0.5) == 1.0);
+  BOOST_TEST(std::isnan(land.constant_over(0.5, 0.91)));
+  BOOST_TEST(std::isnan(land.constant_over(-0.95, -0.5)));
+  BOOST_TEST(std::isnan(f.constant_over(0.2, 0.4)));
+  BOOST_TEST(ThicknessField::constant(0.8).constant_over(-1, 1) == 0.8);
+  // A table of many span rows (as the cutback's TE land makes: cutback_wall.hpp) takes four rows along
+  // span per value: the same value as interpolating every row's value along span, to the last bit.
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> value(0.6, 1.4);
+  std::vector<double> spans, chords{-1, -0.95, -0.9, 0.9, 0.95, 1};
+  std::vector<std::vector<double>> rows;
+  for (int i = 0; i <= 20; ++i) {
+    spans.push_back(i / 20.0);
+    rows.push_back({});
+    for (std::size_t j = 0; j < chords.size(); ++j) rows.back().push_back(value(rng));
+  }
+  const ThicknessField g = ThicknessField::table(spans, chords, rows);
+  std::uniform_real_distribution<double> at(-1.1, 1.1);
+  for (int k = 0; k < 2000; ++k) {
+    const double s = at(rng), c = at(rng);
+    std::vector<double> along_span;
+    for (const auto& row : rows) along_span.push_back(monotone_cubic(chords, row, c));
+    BOOST_TEST(g.at(s, c) == monotone_cubic(spans, along_span, s));
+  }
 }
 
 BOOST_AUTO_TEST_CASE(rotor_constant_thickness_global_projection) {

@@ -15,6 +15,8 @@
 //  - the C3X vane with a 3.5 mm wall and its rib at 0.56 of the chord: the 3 mm inlet of the aft chamber
 //    leaves the inner wall (build refused it after the core's cells, classifying the rim against them).
 // The build refuses each with exit 2, one line starting with the same field, and writes nothing.
+// And the built-in example with cutbacks longer than its TE region: 1 mm is planned on a wall thickened
+// toward the TE (validate prints the change), 3 mm is refused by both (no such wall fits the sections).
 #define BOOST_TEST_MODULE cli_plan
 #include <boost/test/unit_test.hpp>
 
@@ -131,4 +133,21 @@ BOOST_AUTO_TEST_CASE(inlet_rim_outside_the_inner_wall) {
     c["core"]["ribs"][0]["pressure_chord"] = -0.56;
   });
   expect_planned_refusal(d, "cooling.core.inlets[1].diameter", "inlet_2 (diameter 3 mm) does not fit into chamber 2");
+}
+
+// The built-in example's 1 mm wall ends the chamber 0.91 mm from the TE at the hub: a 1 mm cutback gets a
+// TE land (features/wall/cutback_wall.hpp), which validate reports; a 3 mm one is refused with the reason.
+BOOST_AUTO_TEST_CASE(cutback_longer_than_the_te_region) {
+  test::TempDir dir("cli_plan");
+  const fs::path cfg = dir.path / "design.json";
+  std::ofstream(cfg) << variant(kExamples / "hpt_rotor.json", [](json& d) {
+    d["cooling"]["core"]["trailing_edge"]["cutback_length"] = 1.0;
+  }).dump(1);
+  const test::Run v = test::run_cli("validate " + test::q(cfg), dir.path);
+  BOOST_TEST_MESSAGE("validate " << v.seconds << " s: " << v.out);
+  BOOST_TEST(v.exit_code == 0, v.out << v.err);
+  BOOST_TEST(v.out.find("\nplanned: cooling.core.wall_thickness: the cutback's lip (cutback_length 1 mm) would lie over the last "
+                        "chamber of a 1 mm wall: the wall is thickened toward the trailing edge") != std::string::npos, v.out);
+  const json refused = variant(kExamples / "hpt_rotor.json", [](json& d) { d["cooling"]["core"]["trailing_edge"]["cutback_length"] = 3.0; });
+  expect_planned_refusal(refused, "cooling.core.trailing_edge.cutback_length", "; no wall thickened toward the TE");
 }

@@ -51,7 +51,7 @@ inline std::unique_ptr<CooledBlade> build_cooled(config::Config c) {
   out->model = config::build_model(out->config);
   const brep::BladeSolid s = brep::build_blade_solid(out->model);
   out->blade = {s.solid, s.faces};
-  out->cooled = pipeline::apply_cooling(out->config.cooling, out->model, pipeline::plan_cooling(out->config.cooling, out->model), out->blade);
+  out->cooled = pipeline::apply_cooling(out->model, pipeline::plan_cooling(out->config.cooling, out->model), out->blade);
   return out;
 }
 

@@ -77,7 +77,7 @@ const Cooled& cooled() {
     c->config = parse(config_doc());
     c->model = config::build_model(c->config);
     const brep::BladeSolid s = brep::build_blade_solid(c->model);
-    c->passages = pipeline::apply_cooling(c->config.cooling, c->model, pipeline::plan_cooling(c->config.cooling, c->model), {s.solid, s.faces});
+    c->passages = pipeline::apply_cooling(c->model, pipeline::plan_cooling(c->config.cooling, c->model), {s.solid, s.faces});
   }
   return *c;
 }

@@ -54,7 +54,7 @@ void expect_error(json doc, const std::function<void(json&)>& edit, const std::s
   edit(doc);
   try {
     const config::Config c = config::parse_config(doc, COOLINGGEN_SOURCE_DIR "/data/examples", "t");
-    pipeline::apply_cooling(c.cooling, built(doc).model, pipeline::plan_cooling(c.cooling, built(doc).model), built(doc).blade);
+    pipeline::apply_cooling(built(doc).model, pipeline::plan_cooling(c.cooling, built(doc).model), built(doc).blade);
     BOOST_ERROR("no error for " << path);
   } catch (const config::ConfigError& e) {
     const std::string m = e.what();

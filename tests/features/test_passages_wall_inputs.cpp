@@ -14,6 +14,7 @@
 #include "src/config/builtin_example.hpp"
 #include "src/config/config.hpp"
 #include "src/config/cooling_config.hpp"
+#include "src/pipeline/build.hpp"
 #include "src/pipeline/cooling.hpp"
 
 using namespace cg;
@@ -148,11 +149,46 @@ BOOST_AUTO_TEST_CASE(turbulator_taller_than_its_chamber) {
                         RefusedBy::Validate);
 }
 
+// A cutback longer than the TE region (1 mm here, where the chamber ends 0.81 mm from the TE): the plan
+// thickens the wall toward the TE (cutback_wall.hpp) so that the chamber ends 0.25 mm upstream of the lip,
+// and builds on that wall. Checked against the plan's own frame (every slot's lip at least 0.1 mm
+// downstream of the chamber's end, the check the given wall failed) and the table: the given 1 mm from
+// the LE to beyond the last rib, more only toward the TE, at most twice the wall.
+BOOST_AUTO_TEST_CASE(cutback_over_the_chamber_gets_a_thicker_te_wall) {
+  json doc = example();
+  core_of(doc)["trailing_edge"]["cutback_length"] = 1.0;
+  const config::Config c = config::parse_config(doc, COOLINGGEN_SOURCE_DIR "/data/examples", "t");
+  const features::CoolingPlan plan = pipeline::plan_cooling(c.cooling, model());
+  BOOST_TEST_REQUIRE(plan.notes.size() == 1u);
+  BOOST_TEST(plan.notes[0].rfind("cooling.core.wall_thickness: the cutback's lip (cutback_length 1 mm) would lie over", 0) == 0u,
+             plan.notes[0]);
+  BOOST_TEST(!plan.trailing_edge.slots.empty());
+  for (const features::SlotInfo& slot : plan.trailing_edge.slots) {
+    BOOST_TEST(slot.te_x - slot.x_lip == 1.0, slot.name);
+    BOOST_TEST(slot.x_lip - slot.crease_x > features::kLipClear, slot.name << " at span " << slot.span);
+  }
+  const blade::ThicknessField& wall = plan.passages.core->wall_thickness;
+  const double rib_s = c.cooling.passages.core->ribs.back().suction_chord, rib_p = c.cooling.passages.core->ribs.back().pressure_chord;
+  for (double s = 0; s <= 1.0; s += 0.05) {
+    for (double chord : {-0.2, 0.0, 0.3, rib_s + 0.05, rib_p - 0.05}) BOOST_TEST(wall.at(s, chord) == 1.0);
+    BOOST_TEST(wall.at(s, 1.0) >= 1.0);
+    BOOST_TEST(wall.at(s, -1.0) >= 1.0);
+  }
+  BOOST_TEST(wall.max_value() > 1.0);
+  BOOST_TEST(wall.max_value() <= 2.0);
+  // The definition the user gave is unchanged; validate reports the same note.
+  BOOST_TEST(c.cooling.passages.core->wall_thickness.is_constant());
+  BOOST_TEST(pipeline::validate(c).notes == plan.notes);
+}
+
 // The plan places the slots and pins (plan_trailing_edge): all of these are refused by validate.
 BOOST_AUTO_TEST_CASE(trailing_edge_that_does_not_fit) {
-  // The lip must lie downstream of the last chamber's end (this blade's TE region is ~1 mm long).
+  // The lip must lie downstream of the last chamber's end (this blade's TE region is ~1 mm long), and
+  // a wall thickened toward the TE cannot end the chamber 3.25 mm from the TE (the sections are too thin
+  // for such a wall: cutback_wall.hpp).
   expect_geometry_error([](json& d) { core_of(d)["trailing_edge"]["cutback_length"] = 3.0; },
-                        "cooling.core.trailing_edge.cutback_length", {"must be <", "at span"}, RefusedBy::Validate);
+                        "cooling.core.trailing_edge.cutback_length",
+                        {"must be <", "at span", "no wall thickened toward the TE", "2 mm"}, RefusedBy::Validate);
   // Slot and lip thicker than the TE region: no suction-side wall left under the cutback.
   expect_geometry_error([](json& d) { core_of(d)["trailing_edge"]["slot_height"] = 3.0; },
                         "cooling.core.trailing_edge.slot_height", {"suction-side wall", "at span"}, RefusedBy::Validate);

@@ -50,7 +50,7 @@ const Built& built() {
   b->model = config::build_model(b->config);
   const brep::BladeSolid s = brep::build_blade_solid(b->model);
   const features::CoolingPlan plan = pipeline::plan_cooling(b->config.cooling, b->model);
-  b->passages = pipeline::apply_cooling(b->config.cooling, b->model, plan, {s.solid, s.faces}, features::Verification::None);
+  b->passages = pipeline::apply_cooling(b->model, plan, {s.solid, s.faces}, features::Verification::None);
   b->film = pipeline::apply_film(b->config.cooling, b->model, plan, b->passages, {features::Verification::None, nullptr});
   BOOST_TEST_MESSAGE("light example built in " << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()
                                                << " s");

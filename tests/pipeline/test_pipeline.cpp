@@ -263,7 +263,7 @@ BOOST_AUTO_TEST_CASE(report_chord_is_the_built_chord) {
                    {"le_radius", 2},
                    {"te_radius", 0.5}}}}}}};
   const config::Config c = config::parse_config(doc, ".", "cylinder");
-  const blade::BladeModel m = pipeline::validate(c);
+  const blade::BladeModel m = pipeline::validate(c).model;
   const auto model = pipeline::report_model(c, m);
   const auto& s = model.at("sections").at(0);
   BOOST_TEST(std::abs(s.at("chord_mm").get<double>() - 30.0) < 1e-6, s.at("chord_mm"));

@@ -64,7 +64,7 @@ def test_example_and_version():
         check(coolinggen.example() == json.load(f), "example() is data/examples/hpt_rotor.json")
     code, out, _ = cli("--version")
     check(code == 0 and out.strip() == "coolinggen " + coolinggen.__version__, f"version {out!r}")
-    check(coolinggen.validate(coolinggen.example()) == {"name": "hpt_rotor", "flow_path": "meridional", "sections": 3},
+    check(coolinggen.validate(coolinggen.example()) == {"name": "hpt_rotor", "flow_path": "meridional", "sections": 3, "notes": []},
           "validate(example)")
 
 
