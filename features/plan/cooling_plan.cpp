@@ -10,6 +10,7 @@
 #include "features/wall/cutback_wall.hpp"
 #include "features/wall/trailing_edge.hpp"
 #include "features/wall/turbulators.hpp"
+#include "src/core/format.hpp"
 
 namespace cg::features {
 
@@ -51,6 +52,13 @@ CoolingPlan plan_as_defined(const blade::BladeModel& model, const PassagesDefini
   return plan;
 }
 
+// What a refusal of the plan on the wall thickened for a cutback adds, so that the user knows the wall it
+// speaks of is not the one given.
+std::string thickened_note(const CutbackWall& wall) {
+  return " (planned on the wall thickened toward the TE to at most " + format_number(wall.max_thickness) +
+         " mm for the cutback, whose lip would lie over the last chamber of the given wall)";
+}
+
 }  // namespace
 
 CoolingPlan plan_cooling(const blade::BladeModel& model, const PassagesDefinition& passages, const FilmCoolingDefinition& film) {
@@ -72,6 +80,10 @@ CoolingPlan plan_cooling(const blade::BladeModel& model, const PassagesDefinitio
       return plan;
     } catch (const LipOverChamber&) {
       std::rethrow_exception(refusal);
+    } catch (const PassageInputError& other) {  // refused on the thickened wall: say it was
+      throw PassageInputError(other.field(), std::string(other.what()) + thickened_note(*wall));
+    } catch (const FilmInputError& other) {
+      throw FilmInputError(other.field(), std::string(other.what()) + thickened_note(*wall));
     }
   }
 }

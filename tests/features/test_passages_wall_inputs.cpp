@@ -179,6 +179,15 @@ BOOST_AUTO_TEST_CASE(cutback_over_the_chamber_gets_a_thicker_te_wall) {
   // The definition the user gave is unchanged; validate reports the same note.
   BOOST_TEST(c.cooling.passages.core->wall_thickness.is_constant());
   BOOST_TEST(pipeline::validate(c).notes == plan.notes);
+  // A refusal of the plan on the thickened wall says so: six pin rows upstream of the moved slot inlets
+  // reach the last rib.
+  expect_geometry_error(
+      [](json& d) {
+        core_of(d)["trailing_edge"]["cutback_length"] = 1.0;
+        core_of(d)["trailing_edge"]["pin_fins"]["rows"] = 6;
+      },
+      "cooling.core.trailing_edge.pin_fins.rows", {"reaches rib 3", "planned on the wall thickened toward the TE to at most 1.172 mm"},
+      RefusedBy::Validate);
 }
 
 // The plan places the slots and pins (plan_trailing_edge): all of these are refused by validate.
