@@ -104,10 +104,10 @@ double ThicknessField::at(double span, double chord) const {
   const std::size_t i = static_cast<std::size_t>(std::max<std::ptrdiff_t>(
       0, std::upper_bound(spans_.begin(), spans_.end(), span) - spans_.begin() - 1));
   const std::size_t lo = i == 0 ? 0 : i - 1, hi = std::min(n, i + 3);
-  std::vector<double> rows(spans_.begin() + static_cast<std::ptrdiff_t>(lo), spans_.begin() + static_cast<std::ptrdiff_t>(hi));
+  const std::vector<double> window(spans_.begin() + static_cast<std::ptrdiff_t>(lo), spans_.begin() + static_cast<std::ptrdiff_t>(hi));
   std::vector<double> along_span(hi - lo);
   for (std::size_t k = lo; k < hi; ++k) along_span[k - lo] = monotone_cubic(chords_, values_[k], chord);
-  return monotone_cubic(rows, along_span, span);
+  return monotone_cubic(window, along_span, span);
 }
 
 }  // namespace cg::blade
