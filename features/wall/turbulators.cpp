@@ -233,19 +233,29 @@ double turbulator_end(const WallDevelopment& wd, const RibDefinition& r, double 
   const double ds = 1e-4;
   const Vec3 foot_tangent = blade::inner_wall_point(coords, def.wall_thickness, std::min(1.0, s + ds), foot_chord) -
                             blade::inner_wall_point(coords, def.wall_thickness, std::max(0.0, s - ds), foot_chord);
-  const Vec3 plane_n = across.cross(foot_tangent).normalized();
+  // The plane's normal points to the chamber's centre: a point past the rib has a negative distance.
+  Vec3 plane_n = across.cross(foot_tangent).normalized();
+  if ((wd.centre - foot).dot(plane_n) < 0) plane_n = -plane_n;
   auto gap = [&](double x) {
     double g = HUGE_VAL;
     for (double side : {-0.5, 0.5}) {
       const Eigen::Vector2d uv = wd.params(x, (x - xm0) * cot_a + side * td.width / sin_a);
-      g = std::min({g, std::abs((wall.point(uv.x(), uv.y(), wd.t) - foot).dot(plane_n)) - clear,
-                    std::abs((wall.point(uv.x(), uv.y(), wd.t + h) - foot).dot(plane_n)) - clear_top});
+      g = std::min({g, (wall.point(uv.x(), uv.y(), wd.t) - foot).dot(plane_n) - clear,
+                    (wall.point(uv.x(), uv.y(), wd.t + h) - foot).dot(plane_n) - clear_top});
     }
     return g;
   };
+  // The development is linear in (u, v) at the centre, so its x is not the distance along the wall: far
+  // from the centre the developed line can reach the rib before or after the foot's x. Bracket the end
+  // by steps of a sixteenth of the way to the foot, out to twice as far.
   const double x_foot = (foot - wd.centre).dot(wd.e1);
   if (gap(0.0) <= 0) return std::nan("");
-  return bisect(gap, x_foot, 0.0, 40);
+  const int steps = 32;
+  for (int j = 1; j <= steps; ++j) {
+    const double x = x_foot * j / 16.0;
+    if (gap(x) <= 0) return bisect(gap, x - x_foot / 16.0, x, 40);
+  }
+  return std::nan("");
 }
 
 // 13 x 3 grid between the ends xa, xb (centre xm): top at depth t + e, bottom at depth t / 2.
