@@ -206,49 +206,78 @@ WallDevelopment develop_wall(const blade::BladeCoordinates& coords, const CoreDe
   return d;
 }
 
-// Each end keeps its clearance from the rib's mid-surface M(a, s) = A(s) + a (B(s) - A(s)) (rib_geometry.hpp),
-// measured along the mid-surface's normal at the rib's foot on this wall (across x the foot line's span
-// tangent: the foot line is not along the passage axis of the development, e2, where the blade twists or
-// tapers), at both corners of the end (the turbulator is `width` wide, so a rib inclined to its end comes
-// closest at a corner) and at the bottom and the top of the end:
-//  - on the wall, (thickness / 2) / sin(b) + r cot(b / 2) + end_gap, b the acute rib/wall angle: an
-//    inclined rib's foot and its fillet reach further on the acute side;
-//  - at the top, `height` above the wall, where the rib leans over the turbulator on the acute side,
-//    thickness / 2 + the fillet's reach at that height + end_gap.
+// The rib next to a turbulator end in the cross-section through its foot on this wall: x along the wall
+// away from the rib (perpendicular to the foot line), z along the wall's inward normal, both from the
+// foot of the rib's mid-surface M(a, s) = A(s) + a (B(s) - A(s)) (rib_geometry.hpp). The rib is the slab
+// within thickness / 2 of the mid-surface (its normal m, toward the chamber, taken perpendicular to the
+// foot line's span tangent: the foot line is not along the development's passage axis where the blade
+// twists or tapers); its fillet is the circle of radius r tangent to the wall and the rib's face in the
+// corner on the chamber's side, of angle b: acute where the rib leans over the chamber (its fillet then
+// reaches r cot(b / 2) along the wall from the face), obtuse on the other side.
+class RibFootSection {
+ public:
+  RibFootSection(const RibDefinition& r, double s, double foot_chord, const Vec3& centre, const blade::BladeCoordinates& coords,
+                 const CoreDefinition& def)
+      : half_t_(0.5 * r.thickness), r_(r.fillet_radius) {
+    auto inner = [&](double span, double chord) { return blade::inner_wall_point(coords, def.wall_thickness, span, chord); };
+    foot_ = inner(s, foot_chord);
+    const double ds = 1e-4;
+    const Vec3 tangent = (inner(std::min(1.0, s + ds), foot_chord) - inner(std::max(0.0, s - ds), foot_chord)).normalized();
+    ez_ = -coords.frame(s, foot_chord).normal;
+    ex_ = ez_.cross(tangent).normalized();
+    if ((centre - foot_).dot(ex_) < 0) ex_ = -ex_;
+    const Vec3 across = inner(s, r.suction_chord) - inner(s, r.pressure_chord);
+    Vec3 m3 = across.cross(tangent).normalized();
+    if (m3.dot(ex_) < 0) m3 = -m3;
+    m_ = Eigen::Vector2d(m3.dot(ex_), m3.dot(ez_)).normalized();
+    const Eigen::Vector2d k(half_t_ / m_.x(), 0.0), along(1.0, 0.0), up(-m_.y(), m_.x());  // corner, wall, face
+    const double theta = std::acos(std::clamp(up.x(), -1.0, 1.0));
+    centre_ = k + r_ / std::sin(0.5 * theta) * (along + up).normalized();
+    on_wall_ = k + r_ / std::tan(0.5 * theta) * along;
+    on_face_ = k + r_ / std::tan(0.5 * theta) * up;
+  }
+  // Clear distance from the point to the rib and its fillet (negative inside them).
+  double distance(const Vec3& p3) const {
+    const Eigen::Vector2d p((p3 - foot_).dot(ex_), (p3 - foot_).dot(ez_));
+    const double slab = p.dot(m_) - half_t_;
+    if (r_ <= 0) return slab;
+    const Eigen::Vector2d a1 = on_wall_ - centre_, a2 = on_face_ - centre_, q = p - centre_;
+    auto cross = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); };
+    const double turn = cross(a1, a2);
+    const bool in_sector = cross(a1, q) * turn >= 0 && cross(q, a2) * turn >= 0;
+    const double fillet = in_sector ? r_ - q.norm() : std::min((p - on_wall_).norm(), (p - on_face_).norm());
+    return std::min(slab, fillet);
+  }
+
+ private:
+  double half_t_, r_;
+  Vec3 foot_, ex_, ez_;
+  Eigen::Vector2d m_, centre_, on_wall_, on_face_;
+};
+
+// The end's x next to rib r (foot_chord: the rib's chord on this wall), NaN without room: the end face
+// (normal to the wall from the inner wall to `height` above it, at both corners of the `width`) keeps
+// end_gap clear of the rib and its fillet (RibFootSection), measured at 9 heights on each corner's line.
 // Measured on the centre line only, an end came up to ~0.03 mm into the rib (data/repro/
 // turbulator_volume_mismatch.json: the fuse then added less than the independent volume, which counts
 // the whole block above the wall, and the volume check failed on every retry).
-// The end's x next to rib r (foot_chord: the rib's chord on this wall), NaN without room.
 double turbulator_end(const WallDevelopment& wd, const RibDefinition& r, double foot_chord, double s, double cot_a, double sin_a,
                       const TurbulatorDefinition& td, const blade::BladeCoordinates& coords, const CoreDefinition& def,
                       const OffsetWall& wall) {
-  const double xm0 = 0.0;
-  const Vec3 across = (blade::inner_wall_point(coords, def.wall_thickness, s, r.suction_chord) -
-                       blade::inner_wall_point(coords, def.wall_thickness, s, r.pressure_chord)).normalized();
-  const double beta = 0.5 * kPi - std::acos(std::min(1.0, std::abs(across.dot(wd.nrm))));
-  const double clear = 0.5 * r.thickness / std::sin(beta) + r.fillet_radius / std::tan(0.5 * beta) + td.end_gap;
-  const double rf = r.fillet_radius, h = td.height;
-  const double clear_top = 0.5 * r.thickness + (h < rf ? rf - std::sqrt(rf * rf - (rf - h) * (rf - h)) : 0.0) + td.end_gap;
-  const Vec3 foot = blade::inner_wall_point(coords, def.wall_thickness, s, foot_chord);
-  const double ds = 1e-4;
-  const Vec3 foot_tangent = blade::inner_wall_point(coords, def.wall_thickness, std::min(1.0, s + ds), foot_chord) -
-                            blade::inner_wall_point(coords, def.wall_thickness, std::max(0.0, s - ds), foot_chord);
-  // The plane's normal points to the chamber's centre: a point past the rib has a negative distance.
-  Vec3 plane_n = across.cross(foot_tangent).normalized();
-  if ((wd.centre - foot).dot(plane_n) < 0) plane_n = -plane_n;
+  const RibFootSection rib(r, s, foot_chord, wd.centre, coords, def);
   auto gap = [&](double x) {
     double g = HUGE_VAL;
     for (double side : {-0.5, 0.5}) {
-      const Eigen::Vector2d uv = wd.params(x, (x - xm0) * cot_a + side * td.width / sin_a);
-      g = std::min({g, (wall.point(uv.x(), uv.y(), wd.t) - foot).dot(plane_n) - clear,
-                    (wall.point(uv.x(), uv.y(), wd.t + h) - foot).dot(plane_n) - clear_top});
+      const Eigen::Vector2d uv = wd.params(x, x * cot_a + side * td.width / sin_a);
+      const Vec3 bottom = wall.point(uv.x(), uv.y(), wd.t), top = wall.point(uv.x(), uv.y(), wd.t + td.height);
+      for (int k = 0; k <= 8; ++k) g = std::min(g, rib.distance(bottom + (top - bottom) * (k / 8.0)) - td.end_gap);
     }
     return g;
   };
   // The development is linear in (u, v) at the centre, so its x is not the distance along the wall: far
   // from the centre the developed line can reach the rib before or after the foot's x. Bracket the end
   // by steps of a sixteenth of the way to the foot, out to twice as far.
-  const double x_foot = (foot - wd.centre).dot(wd.e1);
+  const double x_foot = (blade::inner_wall_point(coords, def.wall_thickness, s, foot_chord) - wd.centre).dot(wd.e1);
   if (gap(0.0) <= 0) return std::nan("");
   const int steps = 32;
   for (int j = 1; j <= steps; ++j) {
