@@ -107,8 +107,56 @@ constexpr int kScanSamples = 400;
 
 }  // namespace
 
-InnerWallSection inner_wall_crease(const BladeCoordinates& coords, const ThicknessField& thickness, double span) {
+namespace {
+
+// Where the suction-side offset I(span, c_s) meets the pressure-side one I(s_p, c_p), by Newton on
+// F(c_s, c_p, s_p) = I(span, c_s) - I(s_p, c_p) = 0 with central-difference Jacobian from (cs, cp, span).
+// Each new span costs a section (an arc-length table), so the span column is differenced at the first
+// iterate only (s_p moves by little; the chord columns stay exact): one new span per iteration.
+struct OffsetCrossing {
+  double cs = 0, cp = 0, sp = 0, residual = 0;
+  bool converged = false;
+};
+
+OffsetCrossing offset_crossing(const BladeCoordinates& coords, const ThicknessField& thickness, double span, double cs, double cp) {
   const SpanRange dom = span_domain(coords.model());
+  auto I = [&](double s, double c) { return inner_wall_point(coords, thickness, s, c); };
+  OffsetCrossing x{cs, cp, span};
+  const double h = 1e-6;
+  Vec3 F = Vec3::Zero();
+  Eigen::Matrix3d J;
+  for (int it = 0; it < 40; ++it) {
+    F = I(span, x.cs) - I(x.sp, x.cp);
+    if (F.norm() < 1e-11) {
+      x.converged = true;
+      break;
+    }
+    auto dc = [&](double s, double c) {
+      const double a = std::max(c - h, -1.0), b = std::min(c + h, 1.0);
+      return Vec3((I(s, b) - I(s, a)) / (b - a));
+    };
+    J.col(0) = dc(span, x.cs);
+    J.col(1) = -dc(x.sp, x.cp);
+    if (it == 0) {
+      const double sa = std::max(x.sp - h, dom.lo), sb = std::min(x.sp + h, dom.hi);
+      J.col(2) = -(I(sb, x.cp) - I(sa, x.cp)) / (sb - sa);
+    }
+    Vec3 step = J.fullPivLu().solve(-F);
+    if (!step.allFinite()) break;
+    const double limit = 0.02;  // chord units per step
+    const double scale = std::max({std::abs(step[0]), std::abs(step[1]), std::abs(step[2])}) / limit;
+    if (scale > 1) step /= scale;
+    x.cs = std::clamp(x.cs + step[0], 1e-9, 1.0);
+    x.cp = std::clamp(x.cp + step[1], -1.0, -1e-9);
+    x.sp = std::clamp(x.sp + step[2], dom.lo, dom.hi);
+  }
+  x.residual = F.norm();
+  return x;
+}
+
+}  // namespace
+
+InnerWallSection inner_wall_crease(const BladeCoordinates& coords, const ThicknessField& thickness, double span) {
   const int n = kScanSamples;
   // The scans (polylines, the walk to the first close point, the check for a second crossing) look for
   // a neighbourhood: their points lie on the wall and its offset exactly, at chords within 1e-4 of the
@@ -127,71 +175,52 @@ InnerWallSection inner_wall_crease(const BladeCoordinates& coords, const Thickne
   const ChordPolyline pressure_line(std::move(pressure), pc), suction_line(std::move(suction), sc);
   InnerWallSection out;
   out.span = out.pressure_span = span;
-  // Walk the suction-side offset from the LE: the first point closer than t to the pressure side.
-  int hit = -1;
-  double hit_pressure_chord = -1;
+  // Walk the suction-side offset from the LE: the first point closer than t to the pressure side. Short
+  // of the TE (whose point lies on both sides), the closest approach is kept: offsets that come within
+  // the margin of t there may still cross (a wall thicker than the TE's radius: its offset folds there).
+  int hit = -1, closest = -1;
+  double hit_pressure_chord = -1, closest_ratio = 1, closest_pressure_chord = -1;
   for (int i = 1; i <= n; ++i) {
     const Vec3 q = near_inner(sc[i]);
     double c_at = 0;
     const double d = pressure_line.distance(q, c_at);
-    if (d < thickness.at(span, sc[i]) * (1 - kCloseMargin)) {
+    const double ratio = d / thickness.at(span, sc[i]);
+    if (ratio < 1 - kCloseMargin) {
       hit = i;
       hit_pressure_chord = c_at;
       break;
     }
+    if (i < n && ratio < closest_ratio) {
+      closest = i;
+      closest_ratio = ratio;
+      closest_pressure_chord = c_at;
+    }
   }
-  if (hit < 0) {
+  auto untrimmed = [&] {
     // No crossing: the inner wall goes round the TE (TE radius >= t). Seam at the TE.
     out.trimmed = false;
     out.suction_chord = 1;
     out.pressure_chord = -1;
     out.crease = inner_wall_point(coords, thickness, span, 1.0);
     return out;
-  }
+  };
+  if (hit < 0 && closest < 0) return untrimmed();
   if (hit == 1)
     throw InnerWallError("inner wall: the wall thickness " + format_number(thickness.at(span, sc[1])) +
                              " mm leaves no core at span " + format_number(span) + " (the blade is thinner than twice the wall "
                              "thickness right behind the leading edge)",
                          span, sc[1]);
-  // Newton on F(c_s, c_p, s_p) = I(span, c_s) - I(s_p, c_p) = 0 with central-difference Jacobian. Each
-  // new span costs a section (an arc-length table), so the span column is differenced at the first
-  // iterate only (s_p moves by little; the chord columns stay exact): one new span per iteration.
-  auto I = [&](double s, double c) { return inner_wall_point(coords, thickness, s, c); };
-  double cs = sc[hit] - 0.5 / n, cp = hit_pressure_chord, sp = span;
-  const double h = 1e-6;
-  bool converged = false;
-  Vec3 F = Vec3::Zero();
-  Eigen::Matrix3d J;
-  for (int it = 0; it < 40; ++it) {
-    F = I(span, cs) - I(sp, cp);
-    if (F.norm() < 1e-11) {
-      converged = true;
-      break;
-    }
-    auto dc = [&](double s, double c) {
-      const double a = std::max(c - h, -1.0), b = std::min(c + h, 1.0);
-      return Vec3((I(s, b) - I(s, a)) / (b - a));
-    };
-    J.col(0) = dc(span, cs);
-    J.col(1) = -dc(sp, cp);
-    if (it == 0) {
-      const double sa = std::max(sp - h, dom.lo), sb = std::min(sp + h, dom.hi);
-      J.col(2) = -(I(sb, cp) - I(sa, cp)) / (sb - sa);
-    }
-    Vec3 step = J.fullPivLu().solve(-F);
-    if (!step.allFinite()) break;
-    const double limit = 0.02;  // chord units per step
-    const double scale = std::max({std::abs(step[0]), std::abs(step[1]), std::abs(step[2])}) / limit;
-    if (scale > 1) step /= scale;
-    cs = std::clamp(cs + step[0], 1e-9, 1.0);
-    cp = std::clamp(cp + step[1], -1.0, -1e-9);
-    sp = std::clamp(sp + step[2], dom.lo, dom.hi);
-  }
-  if (!converged || cs >= 1.0 || cp <= -1.0 || std::abs(cs - (sc[hit] - 0.5 / n)) > 4.0 / n)
+  const int at = hit > 0 ? hit : closest;
+  const OffsetCrossing x = offset_crossing(coords, thickness, span, sc[at] - 0.5 / n, hit > 0 ? hit_pressure_chord : closest_pressure_chord);
+  const bool found = x.converged && x.cs < 1.0 && x.cp > -1.0 && std::abs(x.cs - (sc[at] - 0.5 / n)) <= 4.0 / n;
+  if (!found && hit < 0) return untrimmed();  // a close approach that does not cross
+  if (!found)
     throw InnerWallError("inner wall: cannot locate where the suction- and pressure-side offsets cross at span " +
-                             format_number(span) + " near chord " + format_number(sc[hit]) + " (residual " + format_number(F.norm()) +
+                             format_number(span) + " near chord " + format_number(sc[hit]) + " (residual " + format_number(x.residual) +
                              " mm); the wall may be too thick for the trailing-edge region",
                          span, sc[hit]);
+  const double cs = x.cs, cp = x.cp, sp = x.sp;
+  auto I = [&](double s, double c) { return inner_wall_point(coords, thickness, s, c); };
   // The pressure side up to the crease must keep its distance from the suction side: otherwise the
   // offsets cross a second time (blade thinner than 2t away from the TE).
   for (int k = 1; k <= n && pc[k] > cp + 2.0 / n; ++k) {
