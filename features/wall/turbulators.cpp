@@ -248,6 +248,7 @@ class RibFootSection {
     const double fillet = in_sector ? r_ - q.norm() : std::min((p - on_wall_).norm(), (p - on_face_).norm());
     return std::min(slab, fillet);
   }
+  const Vec3& foot() const { return foot_; }
 
  private:
   double half_t_, r_;
@@ -277,13 +278,10 @@ double turbulator_end(const WallDevelopment& wd, const RibDefinition& r, double 
   // The development is linear in (u, v) at the centre, so its x is not the distance along the wall: far
   // from the centre the developed line can reach the rib before or after the foot's x. Bracket the end
   // by steps of a sixteenth of the way to the foot, out to twice as far.
-  const double x_foot = (blade::inner_wall_point(coords, def.wall_thickness, s, foot_chord) - wd.centre).dot(wd.e1);
+  const double step = (rib.foot() - wd.centre).dot(wd.e1) / 16;
   if (gap(0.0) <= 0) return std::nan("");
-  const int steps = 32;
-  for (int j = 1; j <= steps; ++j) {
-    const double x = x_foot * j / 16.0;
-    if (gap(x) <= 0) return bisect(gap, x - x_foot / 16.0, x, 40);
-  }
+  for (int j = 1; j <= 32; ++j)
+    if (gap(j * step) <= 0) return bisect(gap, (j - 1) * step, j * step, 40);
   return std::nan("");
 }
 
